@@ -1,0 +1,56 @@
+#include "app/decide_command.h"
+
+#include <iostream>
+
+#include "app/decision_output.h"
+#include "models/checks.h"
+#include "models/error.h"
+#include "models/model_paths.h"
+#include "validation/atomic_file.h"
+
+namespace foresight {
+
+void AddDecideCommand(CLI::App& app, DecideOptions& options) {
+  CLI::App* cmd = app.add_subcommand("decide", "Choose a kick for a situation with the coarse model");
+  cmd->add_option("--situation", options.situation_file, "Situation file (JSON)")->required();
+  cmd->add_option("--kicks", options.kicks_file, "Kick model file replacing the situation's");
+  std::string names;
+  for (Strategy s : AllStrategies()) names += (names.empty() ? "" : ", ") + std::string(StrategyName(s));
+  cmd->add_option("--strategy", options.strategy, "One of: " + names)->capture_default_str();
+  cmd->add_option("--samples", options.samples,
+                  "Samples per hypothesis (default: the evaluation file's, 30)");
+  cmd->add_option("--seed", options.seed, "Random seed")->capture_default_str();
+  cmd->add_flag("--json", options.json, "Print the decision as JSON instead of text");
+  cmd->add_option("--svg", options.svg_file, "Draw the field and every sample's rest position");
+}
+
+int RunDecide(const DecideOptions& options, const std::string& models_dir) {
+  const std::optional<Strategy> strategy = ParseStrategy(options.strategy);
+  if (!strategy) {
+    std::string names;
+    for (Strategy s : AllStrategies()) names += (names.empty() ? "" : ", ") + std::string(StrategyName(s));
+    throw InputError("--strategy: unknown strategy '" + options.strategy + "' (one of: " + names + ")");
+  }
+  if (options.samples < 0 || options.samples > 1000000) {
+    throw InputError("--samples: must be in [1, 1000000], got " + std::to_string(options.samples));
+  }
+  SituationOverrides overrides;
+  overrides.kicks_file = options.kicks_file;
+  const Situation situation = LoadSituation(
+      options.situation_file,
+      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir), overrides);
+  const int samples = options.samples > 0 ? options.samples : situation.evaluation.samples;
+
+  const CoarsePlanner planner(situation);
+  DecisionRun run{options.situation_file, &planner, planner.Decide(*strategy, samples, options.seed),
+                  samples, options.seed};
+  if (!options.svg_file.empty()) WriteFileAtomically(options.svg_file, DecisionSvg(run));
+  if (options.json) {
+    std::cout << DecisionJson(run).dump(2) << "\n";
+  } else {
+    std::cout << DecisionText(run);
+  }
+  return 0;
+}
+
+}  // namespace foresight

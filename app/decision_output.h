@@ -1,0 +1,30 @@
+// What `foresight decide` shows of a decision: a text table, JSON (the contract), and an SVG
+// drawing of the hypotheses in the manner of Mellmann & Schlotter's Fig. 2.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "planner/coarse_planner.h"
+
+namespace foresight {
+
+struct DecisionRun {
+  std::filesystem::path situation_file;
+  const CoarsePlanner* planner = nullptr;
+  Decision decision;
+  int samples = 0;
+  std::uint64_t seed = 0;
+};
+
+// The name of kick `index` of the run's model, or "none" for -1.
+std::string KickName(const DecisionRun& run, int kick_index);
+
+std::string DecisionText(const DecisionRun& run);
+nlohmann::ordered_json DecisionJson(const DecisionRun& run);
+std::string DecisionSvg(const DecisionRun& run);
+
+}  // namespace foresight

@@ -1,0 +1,52 @@
+// The `foresight` command line: one binary, one subcommand per job. Bad input of any kind ends
+// in one line "foresight: error: ..." on stderr and exit code 2 (DESIGN.md, "Errors").
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "app/decide_command.h"
+#include "models/error.h"
+
+namespace {
+
+constexpr int kExitBadInput = 2;
+constexpr int kExitInternal = 3;
+
+int Fail(const std::string& message) {
+  std::cerr << "foresight: error: " << message << "\n";
+  return kExitBadInput;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"foresight: robot-soccer kick selection by forward simulation"};
+  app.set_version_flag("--version", FORESIGHT_VERSION);
+  app.require_subcommand(1);
+  std::string models_dir;
+  app.add_option("--models", models_dir, "Folder of the shipped data (default: the source tree's)");
+  foresight::DecideOptions decide;
+  foresight::AddDecideCommand(app, decide);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return Fail(e.what());
+  }
+
+  try {
+    if (app.got_subcommand("decide")) return foresight::RunDecide(decide, models_dir);
+  } catch (const foresight::InputError& e) {
+    return Fail(e.what());
+  } catch (const std::exception& e) {
+    std::cerr << "foresight: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  }
+  return kExitBadInput;
+}

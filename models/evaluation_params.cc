@@ -1,0 +1,71 @@
+#include "models/evaluation_params.h"
+
+#include "models/checks.h"
+#include "models/error.h"
+#include "models/geometry.h"
+#include "models/json_reader.h"
+
+namespace foresight {
+
+void EvaluationParams::Validate() const {
+  RequirePositive("potential.linear_x_scale_m", potential.linear_x_scale_m);
+  for (std::size_t i = 0; i < potential.gaussians.size(); ++i) {
+    const GaussianTerm& g = potential.gaussians[i];
+    const std::string at = "potential.gaussians[" + std::to_string(i) + "].";
+    RequireFinite(at + "weight", g.weight);
+    RequireFinite(at + "centre_x_m", g.centre_x_m);
+    RequireFinite(at + "centre_y_m", g.centre_y_m);
+    RequirePositive(at + "sigma_x_m", g.sigma_x_m);
+    RequirePositive(at + "sigma_y_m", g.sigma_y_m);
+  }
+  RequireInRange("goal_value", goal_value, 0.0, 1e6);
+  RequireInRange("max_out_share", max_out_share, 0.0, 1.0);
+  RequireInRange("samples", samples, 1, 1e7);
+  RequireInRange("naoth_rule.min_acceptable_share", naoth_rule.min_acceptable_share, 0.0, 1.0);
+  RequireInRange("naoth_rule.goal_preference_share", naoth_rule.goal_preference_share, 0.0, 1.0);
+  RequireInRange("rotation_search.grid_step_deg", rotation_search.grid_step_rad * kRadToDeg, 0.1,
+                 90.0);
+  RequireInRange("rotation_search.refine_levels", rotation_search.refine_levels, 0, 20);
+  RequireInRange("rotation_search.refine_candidates", rotation_search.refine_candidates, 1, 100);
+}
+
+EvaluationParams LoadEvaluationParams(const std::filesystem::path& file) {
+  JsonDocument doc = JsonDocument::Load(file);
+  JsonObject root = doc.Root();
+  root.RejectUnknownKeys({"name", "potential", "goal_value", "max_out_share", "samples",
+                          "naoth_rule", "rotation_search"});
+  EvaluationParams params;
+  params.name = root.String("name");
+  JsonObject potential = root.Object("potential");
+  potential.RejectUnknownKeys({"linear_x_scale_m", "gaussians"});
+  params.potential.linear_x_scale_m = potential.Number("linear_x_scale_m");
+  for (const JsonObject& item : potential.ObjectArray("gaussians")) {
+    item.RejectUnknownKeys({"weight", "centre_x_m", "centre_y_m", "sigma_x_m", "sigma_y_m"});
+    params.potential.gaussians.push_back({item.Number("weight"), item.Number("centre_x_m"),
+                                          item.Number("centre_y_m"), item.Number("sigma_x_m"),
+                                          item.Number("sigma_y_m")});
+  }
+  params.goal_value = root.Number("goal_value");
+  params.max_out_share = root.Number("max_out_share");
+  params.samples = root.Integer("samples");
+
+  JsonObject naoth = root.Object("naoth_rule");
+  naoth.RejectUnknownKeys({"min_acceptable_share", "goal_preference_share"});
+  params.naoth_rule.min_acceptable_share = naoth.Number("min_acceptable_share");
+  params.naoth_rule.goal_preference_share = naoth.Number("goal_preference_share");
+
+  JsonObject search = root.Object("rotation_search");
+  search.RejectUnknownKeys({"grid_step_deg", "refine_levels", "refine_candidates"});
+  params.rotation_search.grid_step_rad = search.Number("grid_step_deg") * kDegToRad;
+  params.rotation_search.refine_levels = search.Integer("refine_levels");
+  params.rotation_search.refine_candidates = search.Integer("refine_candidates");
+
+  try {
+    params.Validate();
+  } catch (const InputError& e) {
+    throw InputError(file.string() + ": " + e.what());
+  }
+  return params;
+}
+
+}  // namespace foresight

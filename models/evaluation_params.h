@@ -1,0 +1,57 @@
+// The team strategy and decision thresholds (models/evaluation/*.json).
+//
+// Potential (Mellmann & Schlotter, sec. III-D; lower is better):
+//   f(x, y) = -x / linear_x_scale_m + sum_k weight_k * G(x, y; centre_k; sigma_k),
+//   G(x, y; cx, cy; sx, sy) = exp(-((x - cx)^2 / (2 sx^2) + (y - cy)^2 / (2 sy^2))).
+// Utility (eq. 5): u = v_avg * p_infield + goal_value * p_goal; trimmed (eq. 6): u = 0 when
+// p_out > max_out_share or any sample ends in the own goal.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace foresight {
+
+struct GaussianTerm {
+  double weight = 0.0;
+  double centre_x_m = 0.0;
+  double centre_y_m = 0.0;
+  double sigma_x_m = 1.0;
+  double sigma_y_m = 1.0;
+};
+
+struct PotentialParams {
+  double linear_x_scale_m = 1.0;
+  std::vector<GaussianTerm> gaussians;
+};
+
+// NaoTH's published kick rule (used for comparison).
+struct NaothRuleParams {
+  double min_acceptable_share = 0.85;   // kicks at or below this share of infield+goal are dropped
+  double goal_preference_share = 0.30;  // kicks with at least this goal share are preferred
+};
+
+// Search for the best rotation around the ball: a grid over the whole circle, then pattern
+// refinement around the best grid points (see planner/rotation_search.h).
+struct RotationSearchParams {
+  double grid_step_rad = 0.0;
+  int refine_levels = 0;
+  int refine_candidates = 0;
+};
+
+struct EvaluationParams {
+  std::string name;
+  PotentialParams potential;
+  double goal_value = 1.0;      // v_max: value of a ball in the opponent goal
+  double max_out_share = 0.15;  // T_out
+  int samples = 30;             // N, samples per hypothesis
+  NaothRuleParams naoth_rule;
+  RotationSearchParams rotation_search;
+
+  void Validate() const;
+};
+
+EvaluationParams LoadEvaluationParams(const std::filesystem::path& file);
+
+}  // namespace foresight

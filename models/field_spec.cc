@@ -1,0 +1,64 @@
+#include "models/field_spec.h"
+
+#include "models/checks.h"
+#include "models/error.h"
+#include "models/json_reader.h"
+
+namespace foresight {
+
+void FieldSpec::Validate() const {
+  RequirePositive("field_length_m", field_length_m);
+  RequirePositive("field_width_m", field_width_m);
+  RequireNonNegative("line_width_m", line_width_m);
+  RequireInRange("carpet_length_m", carpet_length_m, field_length_m, 1e3);
+  RequireInRange("carpet_width_m", carpet_width_m, field_width_m, 1e3);
+  RequirePositive("goal.post_radius_m", goal.post_radius_m);
+  RequireInRange("goal.post_centre_x_m", goal.post_centre_x_m, 0.5 * field_length_m - line_width_m,
+                 0.5 * carpet_length_m);
+  RequireInRange("goal.post_centre_y_m", goal.post_centre_y_m, goal.post_radius_m,
+                 0.5 * field_width_m);
+  RequirePositive("goal.net_depth_m", goal.net_depth_m);
+  RequirePositive("goal.net_height_m", goal.net_height_m);
+  RequireInRange("ball.radius_m", ball.radius_m, 1e-3, goal.InnerHalfWidth());
+  RequirePositive("ball.mass_kg", ball.mass_kg);
+  RequirePositive("default_obstacle_radius_m", default_obstacle_radius_m);
+}
+
+FieldSpec LoadFieldSpec(const std::filesystem::path& file) {
+  JsonDocument doc = JsonDocument::Load(file);
+  JsonObject root = doc.Root();
+  root.RejectUnknownKeys({"name", "field_length_m", "field_width_m", "line_width_m",
+                          "carpet_length_m", "carpet_width_m", "goal", "ball",
+                          "default_obstacle_radius_m"});
+  FieldSpec spec;
+  spec.name = root.String("name");
+  spec.field_length_m = root.Number("field_length_m");
+  spec.field_width_m = root.Number("field_width_m");
+  spec.line_width_m = root.Number("line_width_m");
+  spec.carpet_length_m = root.Number("carpet_length_m");
+  spec.carpet_width_m = root.Number("carpet_width_m");
+  spec.default_obstacle_radius_m = root.Number("default_obstacle_radius_m");
+
+  JsonObject goal = root.Object("goal");
+  goal.RejectUnknownKeys(
+      {"post_radius_m", "post_centre_x_m", "post_centre_y_m", "net_depth_m", "net_height_m"});
+  spec.goal.post_radius_m = goal.Number("post_radius_m");
+  spec.goal.post_centre_x_m = goal.Number("post_centre_x_m");
+  spec.goal.post_centre_y_m = goal.Number("post_centre_y_m");
+  spec.goal.net_depth_m = goal.Number("net_depth_m");
+  spec.goal.net_height_m = goal.Number("net_height_m");
+
+  JsonObject ball = root.Object("ball");
+  ball.RejectUnknownKeys({"radius_m", "mass_kg"});
+  spec.ball.radius_m = ball.Number("radius_m");
+  spec.ball.mass_kg = ball.Number("mass_kg");
+
+  try {
+    spec.Validate();
+  } catch (const InputError& e) {
+    throw InputError(file.string() + ": " + e.what());
+  }
+  return spec;
+}
+
+}  // namespace foresight

@@ -1,0 +1,39 @@
+// Planar geometry in the field frame F (origin at the centre spot, x towards the opponent goal,
+// y to the left, REP-103) and the robot frame R (x forward, y left). Metres and radians.
+#pragma once
+
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Core>
+
+namespace foresight {
+
+using Vec2 = Eigen::Vector2d;
+
+// A robot's pose in F: position (m) and heading theta (rad, counter-clockwise from +x).
+struct Pose2 {
+  Vec2 p_F{0.0, 0.0};
+  double theta_rad = 0.0;
+
+  // Maps a point given in this pose's frame into F.
+  Vec2 ToField(const Vec2& p_R) const {
+    const double c = std::cos(theta_rad), s = std::sin(theta_rad);
+    return p_F + Vec2(c * p_R.x() - s * p_R.y(), s * p_R.x() + c * p_R.y());
+  }
+};
+
+inline constexpr double kPi = std::numbers::pi;
+inline constexpr double kDegToRad = kPi / 180.0;
+inline constexpr double kRadToDeg = 180.0 / kPi;
+
+// Wraps an angle into [-pi, pi).
+inline double WrapAngle(double angle_rad) {
+  double wrapped = std::fmod(angle_rad + kPi, 2.0 * kPi);
+  if (wrapped < 0.0) wrapped += 2.0 * kPi;
+  return wrapped - kPi;
+}
+
+inline Vec2 UnitVector(double angle_rad) { return Vec2(std::cos(angle_rad), std::sin(angle_rad)); }
+
+}  // namespace foresight

@@ -1,0 +1,66 @@
+// Reading the project's JSON files with messages that name the file, the field and the value.
+//
+// JsonObject wraps one JSON object together with the file it came from and its path inside that
+// file ("kicks[1]"), so every accessor can fail with "FILE: kicks[1].speed_mps: ...". Numbers
+// are checked for finiteness where they enter; unknown keys are rejected (a typo must not
+// silently fall back to a default). A top-level "notes" string is allowed everywhere for
+// provenance.
+#pragma once
+
+#include <filesystem>
+#include <initializer_list>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace foresight {
+
+class JsonObject {
+ public:
+  JsonObject(const nlohmann::json* value, std::string file, std::string path);
+
+  bool Has(std::string_view key) const;
+  double Number(std::string_view key) const;
+  double NumberOr(std::string_view key, double fallback) const;
+  int Integer(std::string_view key) const;
+  std::string String(std::string_view key) const;
+  std::string StringOr(std::string_view key, std::string fallback) const;
+  JsonObject Object(std::string_view key) const;
+  std::vector<JsonObject> ObjectArray(std::string_view key) const;  // empty if the key is absent
+
+  // Throws if the object has a key outside `known` (and "notes").
+  void RejectUnknownKeys(std::initializer_list<std::string_view> known) const;
+
+  // "FILE: PATH.key: problem" as an InputError.
+  [[noreturn]] void Fail(std::string_view key, std::string_view problem) const;
+
+  const std::string& file() const { return file_; }
+  // Path of a key below this object, e.g. "kicks[1].speed_mps".
+  std::string PathOf(std::string_view key) const;
+
+ private:
+  const nlohmann::json& Get(std::string_view key) const;
+
+  const nlohmann::json* value_;
+  std::string file_;
+  std::string path_;
+};
+
+// A parsed JSON document that owns its tree; Root() is the top-level object.
+class JsonDocument {
+ public:
+  // Reads and parses `file`; a missing file or bad syntax (with line and column) is an InputError.
+  static JsonDocument Load(const std::filesystem::path& file);
+  // Parses text that did not come from a file; `origin` names it in messages.
+  static JsonDocument Parse(std::string_view text, std::string origin);
+
+  JsonObject Root() const;
+
+ private:
+  nlohmann::json tree_;
+  std::string origin_;
+};
+
+}  // namespace foresight

@@ -1,0 +1,34 @@
+// The kick action model (models/kicks/*.json), after Mellmann & Schlotter, sec. III-B:
+// a kick launches the ball with speed v0 ~ N(speed_mps, sigma_speed_mps^2) in direction
+// alpha ~ N(direction_rad, sigma_direction_rad^2), alpha in the robot frame R (0 = straight
+// ahead, +pi/2 = to the left). The ball then decelerates at rolling_deceleration_mps2.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace foresight {
+
+struct KickSpec {
+  std::string name;
+  double speed_mps = 0.0;
+  double sigma_speed_mps = 0.0;
+  double direction_rad = 0.0;
+  double sigma_direction_rad = 0.0;
+};
+
+struct KickModel {
+  std::string robot;
+  double rolling_deceleration_mps2 = 0.0;
+  std::vector<KickSpec> kicks;
+
+  // Index of the kick called `name`, if there is one.
+  std::optional<int> Find(const std::string& name) const;
+  void Validate() const;
+};
+
+KickModel LoadKickModel(const std::filesystem::path& file);
+
+}  // namespace foresight

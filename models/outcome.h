@@ -1,0 +1,68 @@
+// The seam between the coarse model (planner/) and physics (physics/): an OutcomeSimulator is
+// built for one static scene (field, obstacles, carpet) and takes one concrete state (a drawn
+// robot pose and ball position) and one
+// concrete action (a kick, a rotation around the ball, a drawn launch) and says where the ball
+// comes to rest, how that counts, when, and what it touched first. Evaluation, decision and
+// fidelity are written once against this interface.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "models/field_spec.h"
+#include "models/geometry.h"
+#include "models/situation.h"
+
+namespace foresight {
+
+// How a simulated kick ends (the first field boundary the ball's path crosses decides).
+enum class Category : std::uint8_t { kInfield, kOppGoal, kOwnGoal, kOut };
+inline constexpr int kCategoryCount = 4;
+
+// The first thing the ball touched; kNone when it stopped by rolling resistance.
+enum class Contact : std::uint8_t { kNone, kPost, kNet, kObstacle, kRobot };
+
+std::string_view CategoryName(Category category);
+std::string_view ContactName(Contact contact);
+
+// The static scene a simulator is built for. Non-owning: the field and obstacles must outlive it.
+struct Scene {
+  const FieldSpec* field = nullptr;
+  std::span<const Obstacle> obstacles;
+  double rolling_deceleration_mps2 = 0.0;
+};
+
+// One drawn state: where the kicking robot stands and where the ball lies, both in F.
+struct DrawnState {
+  Pose2 robot;
+  Vec2 p_F_ball{0.0, 0.0};
+};
+
+// One concrete action. kick_index < 0 is the `none` action (the ball stays). The robot first
+// turns around the ball by rotation_rad (the ball stays put, the robot's heading changes by it),
+// then kicks. launch_* are the coarse model's drawn launch in the turned robot frame; a physics
+// simulator ignores them and draws its physical perturbations from `stream` instead.
+struct ConcreteAction {
+  int kick_index = -1;
+  double rotation_rad = 0.0;
+  double launch_speed_mps = 0.0;
+  double launch_direction_rad = 0.0;
+  std::uint64_t stream = 0;
+};
+
+struct Outcome {
+  Vec2 p_F_rest{0.0, 0.0};
+  Category category = Category::kInfield;
+  Contact first_contact = Contact::kNone;
+  double time_s = 0.0;  // from the launch until the ball rests
+};
+
+class OutcomeSimulator {
+ public:
+  virtual ~OutcomeSimulator() = default;
+  // Must be safe to call concurrently from several threads.
+  virtual Outcome Simulate(const DrawnState& state, const ConcreteAction& action) const = 0;
+};
+
+}  // namespace foresight

@@ -1,0 +1,126 @@
+#include "models/situation.h"
+
+#include <cmath>
+
+#include "models/checks.h"
+#include "models/error.h"
+#include "models/json_reader.h"
+#include "models/model_paths.h"
+
+namespace foresight {
+
+namespace {
+
+bool OnCarpet(const FieldSpec& field, const Vec2& p_F) {
+  return std::abs(p_F.x()) <= field.CarpetHalfLength() &&
+         std::abs(p_F.y()) <= field.CarpetHalfWidth();
+}
+
+std::string PointText(const Vec2& p) {
+  return "(" + FormatNumber(p.x()) + ", " + FormatNumber(p.y()) + ")";
+}
+
+std::string CarpetText(const FieldSpec& field) {
+  return "|x| <= " + FormatNumber(field.CarpetHalfLength()) +
+         " m, |y| <= " + FormatNumber(field.CarpetHalfWidth()) + " m";
+}
+
+StateEstimate ReadState(const JsonObject& root) {
+  StateEstimate state;
+  JsonObject robot = root.Object("robot");
+  robot.RejectUnknownKeys(
+      {"x_m", "y_m", "theta_deg", "sigma_x_m", "sigma_y_m", "sigma_theta_deg"});
+  state.robot.p_F = Vec2(robot.Number("x_m"), robot.Number("y_m"));
+  state.robot.theta_rad = robot.Number("theta_deg") * kDegToRad;
+  state.sigma_robot_x_m = robot.NumberOr("sigma_x_m", 0.0);
+  state.sigma_robot_y_m = robot.NumberOr("sigma_y_m", 0.0);
+  state.sigma_robot_theta_rad = robot.NumberOr("sigma_theta_deg", 0.0) * kDegToRad;
+
+  JsonObject ball = root.Object("ball");
+  ball.RejectUnknownKeys({"x_m", "y_m", "sigma_x_m", "sigma_y_m"});
+  state.p_R_ball = Vec2(ball.Number("x_m"), ball.Number("y_m"));
+  state.sigma_ball_x_m = ball.NumberOr("sigma_x_m", 0.0);
+  state.sigma_ball_y_m = ball.NumberOr("sigma_y_m", 0.0);
+  return state;
+}
+
+// Loads a file the situation names; a missing one is reported against the naming field.
+template <typename Loader>
+auto LoadReferenced(const JsonObject& root, std::string_view key,
+                    const std::filesystem::path& file, Loader load) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) {
+    root.Fail(key, "refers to " + file.string() + ", which does not exist");
+  }
+  return load(file);
+}
+
+}  // namespace
+
+void Situation::Validate() const {
+  RequireNonNegative("robot.sigma_x_m", state.sigma_robot_x_m);
+  RequireNonNegative("robot.sigma_y_m", state.sigma_robot_y_m);
+  RequireInRange("robot.sigma_theta_deg", state.sigma_robot_theta_rad * kRadToDeg, 0.0, 180.0);
+  RequireNonNegative("ball.sigma_x_m", state.sigma_ball_x_m);
+  RequireNonNegative("ball.sigma_y_m", state.sigma_ball_y_m);
+  if (!OnCarpet(field, state.robot.p_F)) {
+    throw InputError("robot: position " + PointText(state.robot.p_F) +
+                     " is outside the carpet (" + CarpetText(field) + ")");
+  }
+  const Vec2 ball = state.MeanBallInField();
+  if (!OnCarpet(field, ball)) {
+    throw InputError("ball: position " + PointText(ball) + " in the field frame is outside the carpet (" +
+                     CarpetText(field) + ")");
+  }
+  for (std::size_t i = 0; i < obstacles.size(); ++i) {
+    const std::string at = "obstacles[" + std::to_string(i) + "]";
+    RequireInRange(at + ".radius_m", obstacles[i].radius_m, 0.01, 2.0);
+    if (!OnCarpet(field, obstacles[i].p_F)) {
+      throw InputError(at + ": position " + PointText(obstacles[i].p_F) +
+                       " is outside the carpet (" + CarpetText(field) + ")");
+    }
+    const double gap_m = (obstacles[i].p_F - ball).norm() - obstacles[i].radius_m;
+    if (gap_m < field.ball.radius_m) {
+      throw InputError(at + ": overlaps the ball at " + PointText(ball));
+    }
+  }
+}
+
+Situation LoadSituation(const std::filesystem::path& file,
+                        const std::filesystem::path& models_dir,
+                        const SituationOverrides& overrides) {
+  JsonDocument doc = JsonDocument::Load(file);
+  JsonObject root = doc.Root();
+  root.RejectUnknownKeys({"name", "field", "kicks", "evaluation", "robot", "ball", "obstacles"});
+  const std::filesystem::path dir = file.parent_path();
+
+  Situation situation;
+  situation.name = root.StringOr("name", file.stem().string());
+  const std::string field_ref = root.String("field");
+  situation.field_file = ResolveModelFile(field_ref, "fields", dir, models_dir);
+  situation.kicks_file = overrides.kicks_file.empty()
+                             ? ResolveModelFile(root.String("kicks"), "kicks", dir, models_dir)
+                             : overrides.kicks_file;
+  situation.evaluation_file =
+      ResolveModelFile(root.StringOr("evaluation", field_ref), "evaluation", dir, models_dir);
+  situation.field = LoadReferenced(root, "field", situation.field_file, LoadFieldSpec);
+  situation.kicks = LoadReferenced(root, "kicks", situation.kicks_file, LoadKickModel);
+  situation.evaluation =
+      LoadReferenced(root, "evaluation", situation.evaluation_file, LoadEvaluationParams);
+  situation.state = ReadState(root);
+
+  for (const JsonObject& item : root.ObjectArray("obstacles")) {
+    item.RejectUnknownKeys({"x_m", "y_m", "radius_m"});
+    situation.obstacles.push_back(
+        {Vec2(item.Number("x_m"), item.Number("y_m")),
+         item.NumberOr("radius_m", situation.field.default_obstacle_radius_m)});
+  }
+  try {
+    situation.Validate();
+  } catch (const InputError& e) {
+    throw InputError(file.string() + ": " + e.what());
+  }
+  return situation;
+}
+
+}  // namespace foresight

@@ -1,0 +1,58 @@
+// A decision situation (models/situations/*.json): the estimated state of the robot that has the
+// ball and of the ball, with their uncertainties (Mellmann & Schlotter, sec. III-A), obstacle
+// robots, and the field, kick model and evaluation that apply.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "models/evaluation_params.h"
+#include "models/field_spec.h"
+#include "models/geometry.h"
+#include "models/kick_model.h"
+
+namespace foresight {
+
+// A robot that is not kicking: a static circle in the field frame.
+struct Obstacle {
+  Vec2 p_F{0.0, 0.0};
+  double radius_m = 0.0;
+};
+
+// Mean and standard deviation of the state; each sample draws from independent normals.
+struct StateEstimate {
+  Pose2 robot;  // in F
+  double sigma_robot_x_m = 0.0;
+  double sigma_robot_y_m = 0.0;
+  double sigma_robot_theta_rad = 0.0;
+  Vec2 p_R_ball{0.0, 0.0};  // ball relative to the robot, in R
+  double sigma_ball_x_m = 0.0;
+  double sigma_ball_y_m = 0.0;
+
+  Vec2 MeanBallInField() const { return robot.ToField(p_R_ball); }
+};
+
+struct Situation {
+  std::string name;
+  FieldSpec field;
+  KickModel kicks;
+  EvaluationParams evaluation;
+  StateEstimate state;
+  std::vector<Obstacle> obstacles;
+  // The files that were read, for reports.
+  std::filesystem::path field_file, kicks_file, evaluation_file;
+
+  // Checks the situation against its field: sigmas, robot and ball on the carpet, obstacles.
+  void Validate() const;
+};
+
+struct SituationOverrides {
+  std::filesystem::path kicks_file;  // replaces the situation's kick model when not empty
+};
+
+Situation LoadSituation(const std::filesystem::path& file,
+                        const std::filesystem::path& models_dir,
+                        const SituationOverrides& overrides = {});
+
+}  // namespace foresight

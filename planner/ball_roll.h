@@ -1,0 +1,26 @@
+// The coarse ball model (Mellmann & Schlotter, sec. III-C; NaoTH's rolling-friction model):
+// after the launch the ball moves along a straight line with constant deceleration a = mu * g,
+//   s(t) = v0 t - a t^2 / 2,  at rest after d = v0^2 / (2 a) at t = v0 / a.
+// Static objects stop it fully inelastically: the path ends where the ball first touches a goal
+// post, a net or an obstacle (its centre one radius short of the surface). The first field line
+// the path crosses outward decides the category: a goal line between the posts is a goal,
+// any other line is out.
+#pragma once
+
+#include "planner/coarse_world.h"
+
+namespace foresight {
+
+// Rolls a ball from p_F_start in unit direction dir_F at speed_mps (<= 0: it stays).
+Outcome RollBall(const CoarseWorld& world, const Vec2& p_F_start, const Vec2& dir_F,
+                 double speed_mps);
+
+// Category of a ball resting at p_F that crossed no line on its way (e.g. it started outside).
+Category ClassifyPosition(const CoarseWorld& world, const Vec2& p_F);
+
+// Distance the ball travels before resting on open carpet: v^2 / (2 a).
+inline double StopDistance(double speed_mps, double deceleration_mps2) {
+  return speed_mps * speed_mps / (2.0 * deceleration_mps2);
+}
+
+}  // namespace foresight

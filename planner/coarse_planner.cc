@@ -1,0 +1,19 @@
+#include "planner/coarse_planner.h"
+
+namespace foresight {
+
+Scene MakeScene(const Situation& situation) {
+  return Scene{&situation.field, situation.obstacles, situation.kicks.rolling_deceleration_mps2};
+}
+
+CoarsePlanner::CoarsePlanner(const Situation& situation)
+    : situation_(situation),
+      simulator_(MakeScene(situation)),
+      value_(situation.evaluation.potential, situation.field) {}
+
+Decision CoarsePlanner::Decide(Strategy strategy, int samples, std::uint64_t seed) const {
+  ActionEvaluator evaluator = MakeEvaluator(samples, seed);
+  return foresight::Decide(evaluator, strategy);
+}
+
+}  // namespace foresight

@@ -1,0 +1,47 @@
+#include "planner/coarse_world.h"
+
+#include <cassert>
+
+namespace foresight {
+
+namespace {
+
+GoalShapes MakeGoal(const FieldSpec& field, double side) {
+  const GoalSpec& g = field.goal;
+  const double r = field.ball.radius_m;
+  const double x_front = side * g.post_centre_x_m;
+  const double x_back = side * (g.post_centre_x_m + g.net_depth_m);
+  GoalShapes goal;
+  goal.posts[0] = {Vec2(x_front, g.post_centre_y_m), g.post_radius_m + r, Contact::kPost};
+  goal.posts[1] = {Vec2(x_front, -g.post_centre_y_m), g.post_radius_m + r, Contact::kPost};
+  goal.net[0] = {Vec2(x_front, g.post_centre_y_m), Vec2(x_back, g.post_centre_y_m)};
+  goal.net[1] = {Vec2(x_back, g.post_centre_y_m), Vec2(x_back, -g.post_centre_y_m)};
+  goal.net[2] = {Vec2(x_back, -g.post_centre_y_m), Vec2(x_front, -g.post_centre_y_m)};
+  goal.bound_centre = Vec2(0.5 * (x_front + x_back), 0.0);
+  const double half_depth = 0.5 * g.net_depth_m + g.post_radius_m;
+  goal.bound_radius_m = std::hypot(half_depth, g.post_centre_y_m + g.post_radius_m) + r;
+  return goal;
+}
+
+}  // namespace
+
+CoarseWorld CoarseWorld::Build(const Scene& scene) {
+  assert(scene.field != nullptr);
+  const FieldSpec& field = *scene.field;
+  CoarseWorld world;
+  world.ball_radius_m = field.ball.radius_m;
+  world.deceleration_mps2 = scene.rolling_deceleration_mps2;
+  const double beyond_line = 0.5 * field.line_width_m + field.ball.radius_m;
+  world.out_x_m = field.HalfLength() + beyond_line;
+  world.out_y_m = field.HalfWidth() + beyond_line;
+  world.goal_half_width_m = field.goal.post_centre_y_m;
+  world.goal_depth_x_m = field.goal.post_centre_x_m + field.goal.net_depth_m;
+  world.goals[0] = MakeGoal(field, +1.0);
+  world.goals[1] = MakeGoal(field, -1.0);
+  for (const Obstacle& o : scene.obstacles) {
+    world.obstacles.push_back({o.p_F, o.radius_m + field.ball.radius_m, Contact::kObstacle});
+  }
+  return world;
+}
+
+}  // namespace foresight

@@ -1,0 +1,48 @@
+// The static world of the coarse model, precomputed once per scene: goal posts and obstacles as
+// circles, nets as segments, and the lines whose crossing puts the ball out or into a goal.
+//
+// A ball counts as out (or in a goal) once it has completely crossed the line: its centre is
+// beyond the line's outer edge by one ball radius (RoboCup SPL rules). Goals: posts at
+// (+-post_centre_x, +-post_centre_y); each net is three segments from the posts back
+// net_depth_m (two sides and the back), of zero thickness.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "models/outcome.h"
+
+namespace foresight {
+
+struct CircleShape {
+  Vec2 centre{0.0, 0.0};
+  double contact_radius_m = 0.0;  // shape radius plus ball radius: where the ball centre stops
+  Contact kind = Contact::kNone;
+};
+
+struct SegmentShape {
+  Vec2 a{0.0, 0.0};
+  Vec2 b{0.0, 0.0};
+};
+
+struct GoalShapes {
+  std::array<CircleShape, 2> posts;
+  std::array<SegmentShape, 3> net;  // left side, back, right side
+  Vec2 bound_centre{0.0, 0.0};      // a circle containing posts and net, grown by the ball
+  double bound_radius_m = 0.0;
+};
+
+struct CoarseWorld {
+  double ball_radius_m = 0.0;
+  double deceleration_mps2 = 0.0;
+  double out_x_m = 0.0;           // |x| beyond this: over a goal line
+  double out_y_m = 0.0;           // |y| beyond this: over a side line
+  double goal_half_width_m = 0.0;  // |y| below this when crossing a goal line: a goal
+  double goal_depth_x_m = 0.0;     // x of the back nets
+  std::array<GoalShapes, 2> goals;  // [0] opponent (+x), [1] own (-x)
+  std::vector<CircleShape> obstacles;
+
+  static CoarseWorld Build(const Scene& scene);
+};
+
+}  // namespace foresight

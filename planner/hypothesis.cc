@@ -1,0 +1,26 @@
+#include "planner/hypothesis.h"
+
+namespace foresight {
+
+ActionEvaluation HypothesisAccumulator::Finish(const EvaluationParams& params) const {
+  ActionEvaluation e;
+  e.counts = counts_;
+  for (int c : counts_) e.samples += c;
+  if (e.samples == 0) return e;
+  const double n = e.samples;
+  e.p_infield = e.Count(Category::kInfield) / n;
+  e.p_opp_goal = e.Count(Category::kOppGoal) / n;
+  e.p_own_goal = e.Count(Category::kOwnGoal) / n;
+  e.p_out = e.Count(Category::kOut) / n;
+  const int infield = e.Count(Category::kInfield);
+  if (infield > 0) {
+    e.value_avg = value_sum_ / infield;
+    e.potential_avg = potential_sum_ / infield;
+  }
+  e.utility = e.value_avg * e.p_infield + params.goal_value * e.p_opp_goal;
+  e.too_risky = e.p_out > params.max_out_share || e.Count(Category::kOwnGoal) > 0;
+  e.trimmed_utility = e.too_risky ? 0.0 : e.utility;
+  return e;
+}
+
+}  // namespace foresight

@@ -1,0 +1,50 @@
+// Evaluating a hypothesis, the N simulated outcomes of one action (Mellmann & Schlotter,
+// sec. III-D): category shares (eq. 2)
+//   p_c = |H_a intersect S_c| / |H_a|,
+// utility (eq. 5)
+//   u = v_avg * p_infield + v_max * p_goal,  v_avg = mean value of the infield samples,
+// and the trimmed utility (eq. 6): 0 when p_out > T_out or any sample is an own goal.
+#pragma once
+
+#include <array>
+
+#include "models/evaluation_params.h"
+#include "models/outcome.h"
+
+namespace foresight {
+
+struct ActionEvaluation {
+  int samples = 0;
+  std::array<int, kCategoryCount> counts{};  // indexed by Category
+  double p_infield = 0.0;
+  double p_opp_goal = 0.0;
+  double p_own_goal = 0.0;
+  double p_out = 0.0;
+  double value_avg = 0.0;      // v_avg over the infield samples (0 when there are none)
+  double potential_avg = 0.0;  // mean potential of the infield samples (NaoTH rule)
+  double utility = 0.0;        // eq. 5
+  double trimmed_utility = 0.0;  // eq. 6
+  bool too_risky = false;        // trimmed: p_out > T_out or an own goal
+
+  int Count(Category c) const { return counts[static_cast<int>(c)]; }
+};
+
+// Sums the samples of one hypothesis; Finish() turns the sums into an ActionEvaluation.
+class HypothesisAccumulator {
+ public:
+  void Add(Category category, double value, double potential) {
+    ++counts_[static_cast<int>(category)];
+    if (category == Category::kInfield) {
+      value_sum_ += value;
+      potential_sum_ += potential;
+    }
+  }
+  ActionEvaluation Finish(const EvaluationParams& params) const;
+
+ private:
+  std::array<int, kCategoryCount> counts_{};
+  double value_sum_ = 0.0;
+  double potential_sum_ = 0.0;
+};
+
+}  // namespace foresight

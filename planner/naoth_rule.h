@@ -1,0 +1,28 @@
+// NaoTH's published kick rule (Mellmann, Schlotter & Blum, RoboCup 2016), kept for comparison
+// with the strategies of the 2017 paper. Applied to kicks evaluated without rotation:
+//   1. drop kicks with any own-goal sample or an acceptable share (infield + opponent goal)
+//      <= min_acceptable_share;
+//   2. if some remaining kick has a goal share >= goal_preference_share, take the one with the
+//      most goal samples (ties: the higher utility);
+//   3. otherwise take the lowest mean potential among the remaining kicks and `none`.
+#pragma once
+
+#include <vector>
+
+#include "models/evaluation_params.h"
+#include "models/situation.h"
+#include "planner/decision.h"
+
+namespace foresight {
+
+struct NaothChoice {
+  int kick_index = -1;  // -1: none
+};
+
+NaothChoice ApplyNaothRule(const NaothRuleParams& params, const std::vector<KickOption>& kicks,
+                           const ActionEvaluation& none);
+
+// The turn that makes the robot face the opponent goal's centre from the ball, in (-pi, pi].
+double FaceGoalRotation(const Situation& situation);
+
+}  // namespace foresight

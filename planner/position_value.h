@@ -1,0 +1,41 @@
+// The value of a ball position: the team strategy of Mellmann & Schlotter, sec. III-D.
+//
+// The potential f (models/evaluation_params.h; lower is better) is mapped linearly to a value
+//   v(x, y) = (f_max - f(x, y)) / (f_max - f_min)  in [0, 1],
+// where f_min and f_max are f's extremes over the field (found once, at construction, by a
+// grid over the field and a local refinement). Inside the opponent goal v = goal_value
+// (v_max), outside the field v = 0; Hypothesis evaluation applies those through the category.
+#pragma once
+
+#include <algorithm>
+
+#include "models/evaluation_params.h"
+#include "models/field_spec.h"
+#include "models/geometry.h"
+
+namespace foresight {
+
+class PositionValue {
+ public:
+  PositionValue(const PotentialParams& potential, const FieldSpec& field);
+
+  double Potential(const Vec2& p_F) const;
+  double Value(const Vec2& p_F) const { return ValueOfPotential(Potential(p_F)); }
+  double ValueOfPotential(double potential) const {
+    // Clamped: a ball may rest just past a line (it is out only once fully over it).
+    return std::clamp((potential_max_ - potential) * value_scale_, 0.0, 1.0);
+  }
+
+  double potential_min() const { return potential_min_; }
+  double potential_max() const { return potential_max_; }
+
+ private:
+  double Extreme(const FieldSpec& field, double sign) const;  // sign +1: max, -1: min
+
+  PotentialParams potential_;
+  double potential_min_ = 0.0;
+  double potential_max_ = 0.0;
+  double value_scale_ = 1.0;
+};
+
+}  // namespace foresight

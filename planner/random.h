@@ -1,0 +1,47 @@
+// Counter-based random streams and the project's own normal sampler.
+//
+// Determinism (DESIGN.md): trial or sample i of a run draws only from its own stream, keyed by
+// (seed, i), so results do not depend on the number of threads or the order of work. A stream
+// is SplitMix64 (Steele, Lea & Flood, "Fast splittable pseudorandom number generators", 2014):
+// draw k is Mix64(key + k * golden_gamma). Normals come from the ziggurat method with 128 layers
+// (Marsaglia & Tsang 2000, in Doornik's ZIGNOR form, 2005), written here so every platform
+// draws the same numbers (the standard library's distributions differ between implementations).
+#pragma once
+
+#include <cstdint>
+
+namespace foresight {
+
+inline constexpr std::uint64_t kGoldenGamma = 0x9E3779B97F4A7C15ULL;
+
+inline std::uint64_t Mix64(std::uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
+}
+
+// Key of stream `index` of a run seeded with `seed`; `domain` separates the uses of one seed
+// (e.g. coarse samples and physics trials of the same run).
+inline std::uint64_t StreamKey(std::uint64_t seed, std::uint64_t index, std::uint64_t domain = 0) {
+  return Mix64(Mix64(seed + kGoldenGamma) ^ Mix64(index * kGoldenGamma + domain * 0xD1B54A32D192ED03ULL));
+}
+
+class RandomStream {
+ public:
+  explicit RandomStream(std::uint64_t key) : state_(key) {}
+
+  std::uint64_t NextBits() {
+    state_ += kGoldenGamma;
+    return Mix64(state_);
+  }
+  // Uniform in [0, 1) with 53 random bits.
+  double NextUniform() { return static_cast<double>(NextBits() >> 11) * 0x1.0p-53; }
+  // Standard normal N(0, 1).
+  double NextNormal();
+
+ private:
+  double NormalTail(bool negative);
+  std::uint64_t state_;
+};
+
+}  // namespace foresight

@@ -1,0 +1,38 @@
+// Drawing the samples of a hypothesis (Mellmann & Schlotter, eq. 1): sample i draws the state
+// (robot pose and ball position relative to the robot, each coordinate normal with its sigma)
+// and the kick noise (standard normals z_speed, z_direction) from its own stream (seed, i).
+//
+// Common random numbers: every candidate action of one decision (each kick, each rotation)
+// uses the same draws, scaled by its own sigmas: v0 = speed + sigma_v z_speed,
+// alpha = direction + sigma_alpha z_direction. Differences between candidates then come from
+// the candidates, not from the luck of their samples, and the rotation search sees a
+// deterministic objective.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "models/kick_model.h"
+#include "models/outcome.h"
+#include "models/situation.h"
+
+namespace foresight {
+
+struct DrawnSample {
+  DrawnState state;
+  double z_speed = 0.0;
+  double z_direction = 0.0;
+  std::uint64_t stream = 0;  // the sample's stream key, for simulators that draw more
+};
+
+DrawnSample DrawSample(const StateEstimate& estimate, std::uint64_t seed, std::uint64_t index);
+
+// Draws samples 0 .. count-1 into `out` (resized; its storage is reused between decisions).
+void DrawSamples(const StateEstimate& estimate, std::uint64_t seed, int count,
+                 std::vector<DrawnSample>& out);
+
+// The concrete action of `kick` (or none, kick_index < 0) turned by rotation_rad, for one sample.
+ConcreteAction MakeAction(const KickModel& kicks, int kick_index, double rotation_rad,
+                          const DrawnSample& sample);
+
+}  // namespace foresight
