@@ -107,11 +107,15 @@ void DecideFast(Context& ctx, Decision& decision) {
   const double towards_goal = TurnTowardsGoal(ctx.evaluator.situation());
   auto improves = [&ctx](const ActionEvaluation& e) { return ctx.Improves(e); };
   for (KickOption& option : decision.kicks) {
+    // The least turn either way; at equal turns the one towards the goal.
     std::optional<RotationChoice> found = LeastAcceptableRotation(
         ctx.ObjectiveFor(option.kick_index), improves, towards_goal, ctx.search);
-    if (!found) {
-      found = LeastAcceptableRotation(ctx.ObjectiveFor(option.kick_index), improves,
-                                      -towards_goal, ctx.search);
+    if (!found || found->rotation_rad != 0.0) {
+      std::optional<RotationChoice> away = LeastAcceptableRotation(
+          ctx.ObjectiveFor(option.kick_index), improves, -towards_goal, ctx.search);
+      if (away && (!found || std::abs(away->rotation_rad) < std::abs(found->rotation_rad))) {
+        found = away;
+      }
     }
     option.considered = found.has_value();
     if (found) option.choice = *found;

@@ -1,8 +1,10 @@
 // The decision in two steps (Mellmann & Schlotter, sec. IV): per kick choose the rotation around
 // the ball, then choose among the optimised kicks. Strategies (sec. IV-A):
 //   fast          least rotation in both steps: kick at once when some kick is acceptable and
-//                 improves on leaving the ball; otherwise turn towards the opponent goal until
-//                 one is (then the other way round).
+//                 improves on leaving the ball; otherwise take the least turn that makes one
+//                 so (towards the opponent goal when both ways need the same turn). The paper
+//                 turns towards the goal; a shorter turn the other way is taken here because
+//                 the strategy's point is to turn least.
 //   optimal_value best trimmed utility in both steps.
 //   optimal_all   best trimmed utility per kick, then the kick needing the least rotation.
 //   optimal_one   the forward kick only (the kick whose mean direction is closest to 0),

@@ -9,15 +9,17 @@ double RayCapsuleEntry(const Vec2& start, const Vec2& dir, const Vec2& a, const 
                        double radius) {
   // The capsule is the union of the two end discs and the rectangle of the segment swept
   // sideways by `radius`; the entry is the earliest entry into any of them.
-  double best = std::min(RayCircleEntry(start, dir, a, radius), RayCircleEntry(start, dir, b, radius));
   const Vec2 axis = b - a;
   const double length = axis.norm();
-  if (length <= 0.0) return best;
+  if (length <= 0.0) return RayCircleEntry(start, dir, a, radius);
   const Vec2 u = axis / length;
+  const double start_along = std::clamp((start - a).dot(u), 0.0, length);
+  if ((a + start_along * u - start).squaredNorm() <= radius * radius) return kNoHit;  // inside
+  double best = std::min(RayCircleEntry(start, dir, a, radius), RayCircleEntry(start, dir, b, radius));
   const Vec2 normal(-u.y(), u.x());
   const double offset = (start - a).dot(normal);  // signed distance of the start from the line
   const double approach = dir.dot(normal);
-  if (std::abs(offset) <= radius) return best;  // starts within the slab: only end caps count
+  if (std::abs(offset) <= radius) return best;  // beside the body in its slab: only caps count
   if (approach == 0.0 || (offset > 0.0) == (approach > 0.0)) return best;  // moving away
   const double s = (std::abs(offset) - radius) / std::abs(approach);
   const double along = (start + s * dir - a).dot(u);

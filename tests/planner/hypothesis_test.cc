@@ -1,0 +1,55 @@
+// Category shares, utility (eq. 5) and trimming (eq. 6) on hand-made hypotheses.
+#include "planner/hypothesis.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/support/test_situations.h"
+
+namespace foresight {
+namespace {
+
+EvaluationParams Params() { return testing::MakeSituation({}).evaluation; }
+
+ActionEvaluation Make(int infield, double value_each, int goal, int own, int out) {
+  HypothesisAccumulator h;
+  for (int i = 0; i < infield; ++i) h.Add(Category::kInfield, value_each, -value_each);
+  for (int i = 0; i < goal; ++i) h.Add(Category::kOppGoal, 0.0, 0.0);
+  for (int i = 0; i < own; ++i) h.Add(Category::kOwnGoal, 0.0, 0.0);
+  for (int i = 0; i < out; ++i) h.Add(Category::kOut, 0.0, 0.0);
+  return h.Finish(Params());
+}
+
+TEST(HypothesisTest, UtilityIsValueTimesInfieldPlusGoalShare) {
+  const ActionEvaluation e = Make(20, 0.6, 8, 0, 2);  // 30 samples
+  EXPECT_DOUBLE_EQ(e.p_infield, 20.0 / 30);
+  EXPECT_DOUBLE_EQ(e.p_opp_goal, 8.0 / 30);
+  EXPECT_DOUBLE_EQ(e.p_out, 2.0 / 30);
+  EXPECT_DOUBLE_EQ(e.value_avg, 0.6);
+  EXPECT_DOUBLE_EQ(e.utility, 0.6 * 20.0 / 30 + 1.0 * 8.0 / 30);
+  EXPECT_FALSE(e.too_risky);
+  EXPECT_DOUBLE_EQ(e.trimmed_utility, e.utility);
+}
+
+TEST(HypothesisTest, TrimmedWhenOutShareExceedsThreshold) {
+  // T_out = 0.15: 4 of 30 (0.133) is acceptable, 5 of 30 (0.167) is not.
+  EXPECT_FALSE(Make(26, 0.5, 0, 0, 4).too_risky);
+  const ActionEvaluation risky = Make(25, 0.5, 0, 0, 5);
+  EXPECT_TRUE(risky.too_risky);
+  EXPECT_EQ(risky.trimmed_utility, 0.0);
+  EXPECT_GT(risky.utility, 0.0);
+}
+
+TEST(HypothesisTest, OneOwnGoalSampleTrimsEvenAGreatKick) {
+  const ActionEvaluation e = Make(0, 0.0, 29, 1, 0);
+  EXPECT_TRUE(e.too_risky);
+  EXPECT_EQ(e.trimmed_utility, 0.0);
+}
+
+TEST(HypothesisTest, AllInGoalIsWorthTheGoalValue) {
+  const ActionEvaluation e = Make(0, 0.0, 30, 0, 0);
+  EXPECT_DOUBLE_EQ(e.utility, Params().goal_value);
+  EXPECT_EQ(e.value_avg, 0.0);
+}
+
+}  // namespace
+}  // namespace foresight

@@ -1,0 +1,70 @@
+// Drawing samples (eq. 1): the drawn speeds, directions and poses have the model's moments.
+#include "planner/sampling.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "tests/support/test_situations.h"
+
+namespace foresight {
+namespace {
+
+struct Moments {
+  double mean = 0, sd = 0;
+};
+Moments Of(const std::vector<double>& xs) {
+  Moments m;
+  for (double x : xs) m.mean += x;
+  m.mean /= xs.size();
+  for (double x : xs) m.sd += (x - m.mean) * (x - m.mean);
+  m.sd = std::sqrt(m.sd / (xs.size() - 1));
+  return m;
+}
+
+TEST(SamplingTest, LaunchSpeedAndDirectionFollowTheKickModel) {
+  const Situation s = testing::MakeSituation(testing::Uncertain({.x_m = 1.0, .theta_deg = 20}));
+  std::vector<DrawnSample> samples;
+  DrawSamples(s.state, 11, 20000, samples);
+  std::vector<double> speed, direction, x, theta;
+  for (const DrawnSample& d : samples) {
+    const ConcreteAction a = MakeAction(s.kicks, 0, 0.0, d);
+    speed.push_back(a.launch_speed_mps);
+    direction.push_back(a.launch_direction_rad);
+    x.push_back(d.state.robot.p_F.x());
+    theta.push_back(d.state.robot.theta_rad);
+  }
+  const KickSpec& forward = s.kicks.kicks[0];
+  // Standard errors: sd / sqrt(n) for the mean, sd / sqrt(2n) for the sd; allow 4 of them.
+  const double n = 20000;
+  EXPECT_NEAR(Of(speed).mean, forward.speed_mps, 4 * 0.15 / std::sqrt(n));
+  EXPECT_NEAR(Of(speed).sd, 0.15, 4 * 0.15 / std::sqrt(2 * n));
+  EXPECT_NEAR(Of(direction).mean, 0.0, 4 * forward.sigma_direction_rad / std::sqrt(n));
+  EXPECT_NEAR(Of(direction).sd, forward.sigma_direction_rad, 4 * forward.sigma_direction_rad / std::sqrt(2 * n));
+  EXPECT_NEAR(Of(x).mean, 1.0, 4 * 0.1 / std::sqrt(n));
+  EXPECT_NEAR(Of(x).sd, 0.1, 4 * 0.1 / std::sqrt(2 * n));
+  EXPECT_NEAR(Of(theta).sd, 5.0 * kDegToRad, 4 * 5.0 * kDegToRad / std::sqrt(2 * n));
+}
+
+TEST(SamplingTest, BallIsPlacedRelativeToTheDrawnRobot) {
+  const Situation s = testing::MakeSituation({.x_m = 1.0, .y_m = 2.0, .theta_deg = 90, .ball_x_m = 0.2});
+  const DrawnSample d = DrawSample(s.state, 3, 0);  // no state noise: exact
+  EXPECT_NEAR(d.state.p_F_ball.x(), 1.0, 1e-12);
+  EXPECT_NEAR(d.state.p_F_ball.y(), 2.2, 1e-12);
+}
+
+TEST(SamplingTest, SampleIDependsOnlyOnSeedAndI) {
+  const Situation s = testing::MakeSituation(testing::Uncertain({}));
+  std::vector<DrawnSample> ten, hundred;
+  DrawSamples(s.state, 99, 10, ten);
+  DrawSamples(s.state, 99, 100, hundred);
+  for (int i = 0; i < 10; ++i) {
+    EXPECT_EQ(ten[i].state.p_F_ball, hundred[i].state.p_F_ball);
+    EXPECT_EQ(ten[i].z_speed, hundred[i].z_speed);
+  }
+  EXPECT_NE(DrawSample(s.state, 100, 0).z_speed, ten[0].z_speed);
+}
+
+}  // namespace
+}  // namespace foresight
