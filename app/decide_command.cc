@@ -31,7 +31,8 @@ int RunDecide(const DecideOptions& options, const std::string& models_dir) {
     for (Strategy s : AllStrategies()) names += (names.empty() ? "" : ", ") + std::string(StrategyName(s));
     throw InputError("--strategy: unknown strategy '" + options.strategy + "' (one of: " + names + ")");
   }
-  if (options.samples < 0 || options.samples > 1000000) {
+  const bool samples_given = options.samples != -1;
+  if (samples_given && (options.samples < 1 || options.samples > 1000000)) {
     throw InputError("--samples: must be in [1, 1000000], got " + std::to_string(options.samples));
   }
   SituationOverrides overrides;
@@ -39,7 +40,7 @@ int RunDecide(const DecideOptions& options, const std::string& models_dir) {
   const Situation situation = LoadSituation(
       options.situation_file,
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir), overrides);
-  const int samples = options.samples > 0 ? options.samples : situation.evaluation.samples;
+  const int samples = samples_given ? options.samples : situation.evaluation.samples;
 
   const CoarsePlanner planner(situation);
   DecisionRun run{options.situation_file, &planner, planner.Decide(*strategy, samples, options.seed),

@@ -26,7 +26,7 @@ std::string Format(const char* format, auto... args) {
 // Every sample's rest position of one kick at its chosen rotation; out samples hollow.
 void DrawKickSamples(FieldCanvas& canvas, const DecisionRun& run, const KickOption& option) {
   const bool chosen = option.kick_index == run.decision.kick_index;
-  ActionEvaluator evaluator = run.planner->MakeEvaluator(run.samples, run.seed);
+  CoarseActionEvaluator evaluator = run.planner->MakeEvaluator(run.samples, run.seed);
   const std::string colour = KickColour(option.kick_index);
   const std::string filled = "fill:" + colour + ";stroke:#000;stroke-width:" +
                              (chosen ? "1.2" : "0.6") + ";fill-opacity:" + (chosen ? "1" : "0.75");

@@ -1,0 +1,80 @@
+// Speed of the coarse model (issue targets on one core: >= 15 M samples/s, a plain decision
+// <= 10 us, a full optimal_all decision <= 300 us). Run:
+//   build/bench/planner_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// Scenes are the shared test scenes (tests/support), so tests and benchmarks agree on them.
+#include <benchmark/benchmark.h>
+
+#include "planner/coarse_planner.h"
+#include "planner/random.h"
+#include "tests/support/test_situations.h"
+
+namespace foresight {
+namespace {
+
+// Positions all over the field so that rolls meet posts, nets, lines and open carpet.
+std::vector<Situation> Field(int count) {
+  std::vector<Situation> situations;
+  RandomStream rng(StreamKey(123, 0));
+  for (int i = 0; i < count; ++i) {
+    situations.push_back(testing::MakeSituation(testing::Uncertain(
+        {.x_m = -4.2 + 8.4 * rng.NextUniform(), .y_m = -2.8 + 5.6 * rng.NextUniform(),
+         .theta_deg = 360 * rng.NextUniform() - 180}),
+        {{Vec2(3.8, 0.4), 0.15}}));
+  }
+  return situations;
+}
+
+// One sample: draw the state and the kick noise (7 normals), roll, classify, value.
+void BM_SampleThroughput(benchmark::State& state) {
+  const std::vector<Situation> situations = Field(16);
+  std::vector<CoarsePlanner> planners(situations.begin(), situations.end());
+  std::uint64_t index = 0;
+  double sink = 0.0;
+  for (auto _ : state) {
+    const CoarsePlanner& planner = planners[index & 15];
+    const DrawnSample sample = DrawSample(planner.situation().state, 1, index);
+    const int kick = static_cast<int>(index % 3);
+    const Outcome o = planner.simulator().Simulate(
+        sample.state, MakeAction(planner.situation().kicks, kick, 0.0, sample));
+    sink += o.category == Category::kInfield ? planner.value().Value(o.p_F_rest) : 1.0;
+    ++index;
+  }
+  benchmark::DoNotOptimize(sink);
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_SampleThroughput);
+
+void BM_Decision(benchmark::State& state, Strategy strategy) {
+  const std::vector<Situation> situations = Field(16);
+  std::vector<CoarsePlanner> planners(situations.begin(), situations.end());
+  std::uint64_t seed = 0;
+  long long hypotheses = 0;
+  for (auto _ : state) {
+    const Decision d = planners[seed & 15].Decide(strategy, 30, seed);
+    hypotheses += d.evaluations;
+    benchmark::DoNotOptimize(d.kick_index);
+    ++seed;
+  }
+  state.counters["hypotheses"] =
+      benchmark::Counter(static_cast<double>(hypotheses), benchmark::Counter::kAvgIterations);
+}
+// naoth: the plain decision, 3 kicks + none at their current rotation, 30 samples each.
+BENCHMARK_CAPTURE(BM_Decision, plain_naoth, Strategy::kNaoth)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Decision, fast, Strategy::kFast)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Decision, optimal_all, Strategy::kOptimalAll)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Decision, optimal_value, Strategy::kOptimalValue)->Unit(benchmark::kMicrosecond);
+
+// Building the per-situation planner (scene and the value's normalisation over the field).
+void BM_PlannerSetup(benchmark::State& state) {
+  const std::vector<Situation> situations = Field(1);
+  for (auto _ : state) {
+    CoarsePlanner planner(situations[0]);
+    benchmark::DoNotOptimize(planner.value().potential_max());
+  }
+}
+BENCHMARK(BM_PlannerSetup)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace foresight
+
+BENCHMARK_MAIN();

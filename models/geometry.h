@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include "models/fast_math.h"
+
 namespace foresight {
 
 using Vec2 = Eigen::Vector2d;
@@ -18,7 +20,8 @@ struct Pose2 {
 
   // Maps a point given in this pose's frame into F.
   Vec2 ToField(const Vec2& p_R) const {
-    const double c = std::cos(theta_rad), s = std::sin(theta_rad);
+    double s, c;
+    SinCos(theta_rad, &s, &c);
     return p_F + Vec2(c * p_R.x() - s * p_R.y(), s * p_R.x() + c * p_R.y());
   }
 };
@@ -34,6 +37,10 @@ inline double WrapAngle(double angle_rad) {
   return wrapped - kPi;
 }
 
-inline Vec2 UnitVector(double angle_rad) { return Vec2(std::cos(angle_rad), std::sin(angle_rad)); }
+inline Vec2 UnitVector(double angle_rad) {
+  double s, c;
+  SinCos(angle_rad, &s, &c);
+  return Vec2(c, s);
+}
 
 }  // namespace foresight

@@ -109,6 +109,17 @@ std::string LineAndColumn(std::string_view text, std::size_t byte) {
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
+// ", field \"x_m\"" when the text just before `at` is `"x_m":`, else "".
+std::string KeyBefore(std::string_view text, std::size_t at) {
+  const auto colon = text.rfind(':', at);
+  if (colon == std::string_view::npos) return "";
+  const auto close = text.rfind('"', colon);
+  if (close == std::string_view::npos || close == 0) return "";
+  const auto open = text.rfind('"', close - 1);
+  if (open == std::string_view::npos) return "";
+  return ", field \"" + std::string(text.substr(open + 1, close - open - 1)) + "\"";
+}
+
 // "syntax error while parsing value - invalid literal; last read: 'x'" without the prefix.
 std::string ParseProblem(const nlohmann::json::parse_error& e) {
   std::string what = e.what();
@@ -126,6 +137,18 @@ JsonDocument JsonDocument::Parse(std::string_view text, std::string origin) {
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(doc.origin_ + ": invalid JSON at " + LineAndColumn(text, e.byte) + ": " +
                      ParseProblem(e));
+  } catch (const nlohmann::json::exception& e) {
+    // e.g. out_of_range.406 "number overflow parsing '1e999'": locate the quoted token.
+    std::string what = e.what();
+    const auto bracket = what.find("] ");
+    if (bracket != std::string::npos) what = what.substr(bracket + 2);
+    std::string where;
+    const auto open = what.find('\''), close = what.rfind('\'');
+    if (open != std::string::npos && close > open) {
+      const auto at = text.find(what.substr(open + 1, close - open - 1));
+      if (at != std::string_view::npos) where = " at " + LineAndColumn(text, at + 2) + KeyBefore(text, at);
+    }
+    throw InputError(doc.origin_ + ": invalid JSON" + where + ": " + what);
   }
   return doc;
 }

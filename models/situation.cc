@@ -96,15 +96,22 @@ Situation LoadSituation(const std::filesystem::path& file,
 
   Situation situation;
   situation.name = root.StringOr("name", file.stem().string());
-  const std::string field_ref = root.String("field");
-  situation.field_file = ResolveModelFile(field_ref, "fields", dir, models_dir);
-  situation.kicks_file = overrides.kicks_file.empty()
-                             ? ResolveModelFile(root.String("kicks"), "kicks", dir, models_dir)
-                             : overrides.kicks_file;
-  situation.evaluation_file =
-      ResolveModelFile(root.StringOr("evaluation", field_ref), "evaluation", dir, models_dir);
+  situation.field_file = ResolveModelFile(root.String("field"), "fields", dir, models_dir);
   situation.field = LoadReferenced(root, "field", situation.field_file, LoadFieldSpec);
-  situation.kicks = LoadReferenced(root, "kicks", situation.kicks_file, LoadKickModel);
+  if (overrides.kicks_file.empty()) {
+    situation.kicks_file = ResolveModelFile(root.String("kicks"), "kicks", dir, models_dir);
+    situation.kicks = LoadReferenced(root, "kicks", situation.kicks_file, LoadKickModel);
+  } else {
+    situation.kicks_file = overrides.kicks_file;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(situation.kicks_file, ec)) {
+      throw InputError("--kicks: " + situation.kicks_file.string() + " does not exist");
+    }
+    situation.kicks = LoadKickModel(situation.kicks_file);
+  }
+  // Without an "evaluation" key, the evaluation shipped for the field's name applies.
+  situation.evaluation_file = ResolveModelFile(root.StringOr("evaluation", situation.field.name),
+                                               "evaluation", dir, models_dir);
   situation.evaluation =
       LoadReferenced(root, "evaluation", situation.evaluation_file, LoadEvaluationParams);
   situation.state = ReadState(root);

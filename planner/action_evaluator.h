@@ -1,9 +1,11 @@
-// Scores candidate actions of one situation: simulate the N drawn samples through an
-// OutcomeSimulator, value the rest positions, and evaluate the hypothesis.
+// Scores candidate actions of one situation: simulate the N drawn samples of the situation,
+// value the rest positions, and evaluate the hypothesis (planner/hypothesis.h).
 //
-// The evaluator owns the drawn samples, so all candidates share them (common random numbers,
-// see planner/sampling.h). It works against the seam, so the same code scores candidates with
-// the coarse model or with physics.
+// An evaluator owns its drawn samples, so all candidates of a decision share them (common
+// random numbers, planner/sampling.h). Two implementations give the same answers:
+//   SeamActionEvaluator    any OutcomeSimulator (coarse or physics) through the seam;
+//   CoarseActionEvaluator  the coarse model with per-sample work hoisted out of the rotation
+//                          search (planner/coarse_action_evaluator.h): the decision's hot path.
 #pragma once
 
 #include <cstdint>
@@ -19,24 +21,51 @@ namespace foresight {
 
 class ActionEvaluator {
  public:
-  ActionEvaluator(const Situation& situation, const OutcomeSimulator& simulator,
-                  const PositionValue& value, int samples, std::uint64_t seed);
+  explicit ActionEvaluator(const Situation& situation) : situation_(situation) {}
+  virtual ~ActionEvaluator() = default;
 
   // kick_index < 0: the `none` action (the ball stays where it is).
-  ActionEvaluation Evaluate(int kick_index, double rotation_rad);
+  virtual ActionEvaluation Evaluate(int kick_index, double rotation_rad) = 0;
+  // For searches over rotations: may stop simulating as soon as the action is certain to be
+  // trimmed, and then only too_risky and trimmed_utility (0) are meaningful.
+  virtual ActionEvaluation EvaluateForSearch(int kick_index, double rotation_rad) {
+    return Evaluate(kick_index, rotation_rad);
+  }
   // The hypothesis itself: one outcome per sample, for drawing and reports.
-  std::vector<Outcome> Outcomes(int kick_index, double rotation_rad) const;
+  virtual std::vector<Outcome> Outcomes(int kick_index, double rotation_rad) const = 0;
 
   int kick_count() const { return static_cast<int>(situation_.kicks.kicks.size()); }
   const Situation& situation() const { return situation_; }
   long long evaluations() const { return evaluations_; }
 
- private:
+ protected:
   const Situation& situation_;
+  long long evaluations_ = 0;
+};
+
+// Adds one simulated outcome to a hypothesis, valuing infield rest positions.
+inline void AddOutcome(HypothesisAccumulator& hypothesis, const Outcome& outcome,
+                       const PositionValue& value) {
+  if (outcome.category == Category::kInfield) {
+    const double potential = value.Potential(outcome.p_F_rest);
+    hypothesis.Add(outcome.category, value.ValueOfPotential(potential), potential);
+  } else {
+    hypothesis.Add(outcome.category, 0.0, 0.0);
+  }
+}
+
+class SeamActionEvaluator final : public ActionEvaluator {
+ public:
+  SeamActionEvaluator(const Situation& situation, const OutcomeSimulator& simulator,
+                      const PositionValue& value, int samples, std::uint64_t seed);
+
+  ActionEvaluation Evaluate(int kick_index, double rotation_rad) override;
+  std::vector<Outcome> Outcomes(int kick_index, double rotation_rad) const override;
+
+ private:
   const OutcomeSimulator& simulator_;
   const PositionValue& value_;
   std::vector<DrawnSample> samples_;
-  long long evaluations_ = 0;
 };
 
 }  // namespace foresight

@@ -12,7 +12,7 @@ CoarsePlanner::CoarsePlanner(const Situation& situation)
       value_(situation.evaluation.potential, situation.field) {}
 
 Decision CoarsePlanner::Decide(Strategy strategy, int samples, std::uint64_t seed) const {
-  ActionEvaluator evaluator = MakeEvaluator(samples, seed);
+  CoarseActionEvaluator evaluator = MakeEvaluator(samples, seed);
   return foresight::Decide(evaluator, strategy);
 }
 

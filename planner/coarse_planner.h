@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "models/situation.h"
+#include "planner/coarse_action_evaluator.h"
 #include "planner/coarse_simulator.h"
 #include "planner/decision.h"
 #include "planner/position_value.h"
@@ -16,8 +17,13 @@ class CoarsePlanner {
   // `situation` must outlive the planner.
   explicit CoarsePlanner(const Situation& situation);
 
-  ActionEvaluator MakeEvaluator(int samples, std::uint64_t seed) const {
-    return ActionEvaluator(situation_, simulator_, value_, samples, seed);
+  // The fast evaluator of the decision's hot path.
+  CoarseActionEvaluator MakeEvaluator(int samples, std::uint64_t seed) const {
+    return CoarseActionEvaluator(situation_, simulator_.world(), value_, samples, seed);
+  }
+  // The same through the outcome-simulator seam (for cross-checks and reports).
+  SeamActionEvaluator MakeSeamEvaluator(int samples, std::uint64_t seed) const {
+    return SeamActionEvaluator(situation_, simulator_, value_, samples, seed);
   }
   Decision Decide(Strategy strategy, int samples, std::uint64_t seed) const;
 

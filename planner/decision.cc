@@ -14,7 +14,9 @@ struct Context {
   ActionEvaluation none;
 
   RotationObjective ObjectiveFor(int kick) const {
-    return [this, kick](double rotation_rad) { return evaluator.Evaluate(kick, rotation_rad); };
+    return [this, kick](double rotation_rad) {
+      return evaluator.EvaluateForSearch(kick, rotation_rad);
+    };
   }
   bool Acceptable(const ActionEvaluation& e) const { return !e.too_risky; }
   bool Improves(const ActionEvaluation& e) const {
@@ -178,6 +180,12 @@ Decision Decide(ActionEvaluator& evaluator, Strategy strategy) {
       decision.kick_index = choice.kick_index;
       decision.rotation_rad = choice.kick_index < 0 ? FaceGoalRotation(situation) : 0.0;
       break;
+    }
+  }
+  // Searches may stop simulating a candidate once it is certainly trimmed; report full ones.
+  for (KickOption& option : decision.kicks) {
+    if (option.considered && strategy != Strategy::kNaoth) {
+      option.choice.evaluation = evaluator.Evaluate(option.kick_index, option.choice.rotation_rad);
     }
   }
   decision.evaluations = evaluator.evaluations() - evaluations_before;

@@ -41,6 +41,13 @@ class HypothesisAccumulator {
   }
   ActionEvaluation Finish(const EvaluationParams& params) const;
 
+  // True once the hypothesis is trimmed whatever its remaining samples do: more than
+  // `max_outs` samples out (max_outs = floor(T_out * N)) or an own goal.
+  bool CertainlyTrimmed(int max_outs) const {
+    return counts_[static_cast<int>(Category::kOut)] > max_outs ||
+           counts_[static_cast<int>(Category::kOwnGoal)] > 0;
+  }
+
  private:
   std::array<int, kCategoryCount> counts_{};
   double value_sum_ = 0.0;

@@ -41,7 +41,7 @@ double PositionValue::Extreme(const FieldSpec& field, double sign) const {
     bool moved = true;
     while (moved) {
       moved = false;
-      for (const Vec2 d : {Vec2(step, 0), Vec2(-step, 0), Vec2(0, step), Vec2(0, -step)}) {
+      for (const Vec2& d : {Vec2(step, 0), Vec2(-step, 0), Vec2(0, step), Vec2(0, -step)}) {
         const Vec2 p(std::clamp(best.x() + d.x(), -hx, hx), std::clamp(best.y() + d.y(), -hy, hy));
         const double f = sign * Potential(p);
         if (f > best_f) best_f = f, best = p, moved = true;

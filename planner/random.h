@@ -26,6 +26,15 @@ inline std::uint64_t StreamKey(std::uint64_t seed, std::uint64_t index, std::uin
   return Mix64(Mix64(seed + kGoldenGamma) ^ Mix64(index * kGoldenGamma + domain * 0xD1B54A32D192ED03ULL));
 }
 
+namespace random_detail {
+inline constexpr int kZigguratLayers = 128;
+struct ZigguratTables {
+  double x[kZigguratLayers + 1];  // layer edges, x[0] the base layer's virtual width
+  double ratio[kZigguratLayers];  // x[i+1] / x[i]: the part of layer i surely under the curve
+};
+extern const ZigguratTables kZiggurat;
+}  // namespace random_detail
+
 class RandomStream {
  public:
   explicit RandomStream(std::uint64_t key) : state_(key) {}
@@ -36,10 +45,19 @@ class RandomStream {
   }
   // Uniform in [0, 1) with 53 random bits.
   double NextUniform() { return static_cast<double>(NextBits() >> 11) * 0x1.0p-53; }
-  // Standard normal N(0, 1).
-  double NextNormal();
+  // Standard normal N(0, 1). The fast path (about 99 % of draws) is inline.
+  double NextNormal() {
+    const std::uint64_t bits = NextBits();
+    const int layer = static_cast<int>(bits & (random_detail::kZigguratLayers - 1));
+    const double u = 2.0 * (static_cast<double>(bits >> 11) * 0x1.0p-53) - 1.0;  // [-1, 1)
+    if (u < random_detail::kZiggurat.ratio[layer] && u > -random_detail::kZiggurat.ratio[layer]) {
+      return u * random_detail::kZiggurat.x[layer];
+    }
+    return NormalEdge(layer, u);
+  }
 
  private:
+  double NormalEdge(int layer, double u);  // the wedge and tail cases, then a fresh draw
   double NormalTail(bool negative);
   std::uint64_t state_;
 };

@@ -37,7 +37,7 @@ TEST(DecisionTest, NextToTheSideLineTheKickTowardsTheLineIsRejected) {
   // Facing the opponent goal on the left side line: the left side kick goes out.
   const Situation s = testing::MakeSituation(testing::Uncertain({.x_m = 0.5, .y_m = 2.75}));
   const CoarsePlanner planner(s);
-  ActionEvaluator evaluator = planner.MakeEvaluator(30, 1);
+  CoarseActionEvaluator evaluator = planner.MakeEvaluator(30, 1);
   EXPECT_TRUE(evaluator.Evaluate(kLeft, 0.0).too_risky);
   for (Strategy strategy : AllStrategies()) {
     const Decision d = DecideOn(s, strategy);
@@ -52,11 +52,13 @@ TEST(DecisionTest, NextToTheSideLineTheKickTowardsTheLineIsRejected) {
 TEST(DecisionTest, FacingTheOwnGoalTheRobotTurnsOrKicksSideways) {
   const Situation s = testing::MakeSituation(testing::Uncertain({.x_m = -3.3, .y_m = 0.2, .theta_deg = 180}));
   const CoarsePlanner planner(s);
-  ActionEvaluator evaluator = planner.MakeEvaluator(30, 1);
+  CoarseActionEvaluator evaluator = planner.MakeEvaluator(30, 1);
   EXPECT_GT(evaluator.Evaluate(kForward, 0.0).p_own_goal, 0.3);  // the trap is real
   for (Strategy strategy : AllStrategies()) {
     const Decision d = DecideOn(s, strategy);
-    if (d.kick_index >= 0) EXPECT_EQ(Chosen(d).p_own_goal, 0.0) << StrategyName(strategy);
+    if (d.kick_index >= 0) {
+      EXPECT_EQ(Chosen(d).p_own_goal, 0.0) << StrategyName(strategy);
+    }
   }
 }
 
@@ -68,7 +70,7 @@ TEST(DecisionTest, ObstacleInTheWayIsAvoided) {
   const Decision d_blocked = DecideOn(blocked, Strategy::kOptimalValue);
   EXPECT_LT(Chosen(d_blocked).p_opp_goal, Chosen(d_open).p_opp_goal);
   // Without turning, most forward kicks stop at the obstacle; the decision does better.
-  ActionEvaluator straight = CoarsePlanner(blocked).MakeEvaluator(30, 1);
+  CoarseActionEvaluator straight = CoarsePlanner(blocked).MakeEvaluator(30, 1);
   EXPECT_GT(Chosen(d_blocked).trimmed_utility, straight.Evaluate(kForward, 0.0).trimmed_utility);
 }
 
@@ -136,7 +138,9 @@ TEST(DecisionTest, NaothRuleKicksAtOnceOrTurnsToTheGoal) {
   // Facing its own goal in the own half, only `none` passes the rule: turn to face the goal.
   const Situation back = testing::MakeSituation(testing::Uncertain({.x_m = -3.3, .y_m = 0.0, .theta_deg = 180}));
   const Decision turn = DecideOn(back, Strategy::kNaoth);
-  if (turn.kick_index < 0) EXPECT_NEAR(std::abs(turn.rotation_rad), kPi, 0.2);
+  if (turn.kick_index < 0) {
+    EXPECT_NEAR(std::abs(turn.rotation_rad), kPi, 0.2);
+  }
   EXPECT_NE(turn.kick_index, kForward);
 }
 

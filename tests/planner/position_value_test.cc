@@ -17,7 +17,7 @@ double Gauss(double x, double y, double cx, double cy, double sx, double sy) {
 TEST(PositionValueTest, PotentialIsThePapersFormula) {
   const Situation s = testing::MakeSituation({});
   const PositionValue value(s.evaluation.potential, s.field);
-  for (const Vec2 p : {Vec2(0, 0), Vec2(3.1, -1.2), Vec2(-4.4, 2.9), Vec2(4.5, 0)}) {
+  for (const Vec2& p : {Vec2(0, 0), Vec2(3.1, -1.2), Vec2(-4.4, 2.9), Vec2(4.5, 0)}) {
     const double f = -p.x() / 4.5 - Gauss(p.x(), p.y(), 4.5, 0, 2.25, 1.2) +
                      Gauss(p.x(), p.y(), -4.5, 0, 3.375, 1.2);
     EXPECT_NEAR(value.Potential(p), f, 1e-12);

@@ -75,7 +75,7 @@ TEST(RotationSearchTest, RealObjectiveMatchesBruteForce) {
     const Situation s = testing::MakeSituation(spec);
     const CoarsePlanner planner(s);
     for (int kick = 0; kick < 3; ++kick) {
-      ActionEvaluator evaluator = planner.MakeEvaluator(30, 7);
+      CoarseActionEvaluator evaluator = planner.MakeEvaluator(30, 7);
       RotationObjective objective = [&](double rho) { return evaluator.Evaluate(kick, rho); };
       const RotationChoice found = BestRotation(objective, s.evaluation.rotation_search);
       double brute = 0.0;

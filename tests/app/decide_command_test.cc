@@ -1,0 +1,164 @@
+// Runs the real `foresight decide` binary on good input and checks what a user gets: the
+// decision as text and JSON, determinism under --seed, and the SVG drawing.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "tests/app/run_foresight.h"
+
+namespace {
+
+using foresight::testing::CountOf;
+using foresight::testing::ReadFile;
+using foresight::testing::RunResult;
+using foresight::testing::ShippedSituation;
+using ::testing::EndsWith;
+using ::testing::HasSubstr;
+using ::testing::Not;
+using ::testing::StartsWith;
+using DecideCommandTest = foresight::testing::ForesightRun;
+
+// ----- determinism -----
+
+TEST_F(DecideCommandTest, SameSeedGivesByteIdenticalJson) {
+  const std::vector<std::string> args = {"--situation", ShippedSituation("open_goal").string(),
+                                         "--seed", "7", "--json"};
+  const RunResult first = Decide(args);
+  const RunResult second = Decide(args);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_FALSE(first.out.empty());
+  EXPECT_EQ(first.out, second.out);
+}
+
+TEST_F(DecideCommandTest, DifferentSeedDrawsDifferentSamples) {
+  const std::string situation = ShippedSituation("open_goal").string();
+  const nlohmann::json a = DecideJson({"--situation", situation, "--seed", "1"});
+  const nlohmann::json b = DecideJson({"--situation", situation, "--seed", "2"});
+  EXPECT_EQ(a["seed"], 1);
+  EXPECT_EQ(b["seed"], 2);
+  // The situation has state and kick noise, so the hypotheses themselves differ.
+  EXPECT_NE(a["kicks"].dump(), b["kicks"].dump());
+}
+
+// ----- JSON contract -----
+
+TEST_F(DecideCommandTest, JsonCarriesDecisionStrategyAndPerKickProbabilities) {
+  const nlohmann::json j = DecideJson({"--situation", ShippedSituation("open_goal").string()});
+  EXPECT_EQ(j["command"], "decide");
+  EXPECT_EQ(j["strategy"], "optimal_all");  // the default
+  EXPECT_EQ(j["samples"], 30);              // the evaluation file's N
+  EXPECT_EQ(j["seed"], 1);
+  EXPECT_EQ(j["situation"]["name"], "open_goal");
+  EXPECT_THAT(j["situation"]["field"].get<std::string>(), HasSubstr("fields/spl.json"));
+  EXPECT_EQ(j["decision"]["kick"], "forward");  // open goal: the forward kick scores
+  ASSERT_EQ(j["kicks"].size(), 3u);
+  EXPECT_EQ(j["kicks"][0]["name"], "forward");
+  EXPECT_EQ(j["kicks"][1]["name"], "side_kick_left");
+  EXPECT_EQ(j["kicks"][2]["name"], "side_kick_right");
+  EXPECT_GT(j["kicks"][0]["p_opp_goal"].get<double>(), 0.5);
+  int chosen = 0;
+  for (const nlohmann::json& k : j["kicks"]) {
+    SCOPED_TRACE(k["name"].get<std::string>());
+    const double total = k["p_opp_goal"].get<double>() + k["p_own_goal"].get<double>() +
+                         k["p_out"].get<double>() + k["p_infield"].get<double>();
+    EXPECT_NEAR(total, 1.0, 1e-12);
+    EXPECT_TRUE(k["considered"].get<bool>());
+    EXPECT_LE(k["trimmed_utility"].get<double>(), k["utility"].get<double>());
+    if (k["chosen"].get<bool>()) {
+      ++chosen;
+      EXPECT_EQ(k["name"], j["decision"]["kick"]);
+    }
+  }
+  EXPECT_EQ(chosen, 1);
+  EXPECT_TRUE(j["none"].contains("trimmed_utility"));
+}
+
+TEST_F(DecideCommandTest, SamplesFlagSetsNAndProbabilitiesAreCountsOverN) {
+  const nlohmann::json j =
+      DecideJson({"--situation", ShippedSituation("open_goal").string(), "--samples", "8"});
+  EXPECT_EQ(j["samples"], 8);
+  for (const nlohmann::json& k : j["kicks"]) {
+    for (const char* key : {"p_opp_goal", "p_own_goal", "p_out", "p_infield"}) {
+      const double count = k[key].get<double>() * 8.0;
+      EXPECT_NEAR(count, std::round(count), 1e-9) << k["name"] << " " << key;
+    }
+  }
+}
+
+TEST_F(DecideCommandTest, OptimalOneConsidersOnlyTheForwardKick) {
+  const nlohmann::json j = DecideJson(
+      {"--situation", ShippedSituation("open_goal").string(), "--strategy", "optimal_one"});
+  EXPECT_EQ(j["strategy"], "optimal_one");
+  EXPECT_EQ(j["decision"]["kick"], "forward");
+  ASSERT_EQ(j["kicks"].size(), 3u);
+  for (const nlohmann::json& k : j["kicks"]) {
+    EXPECT_EQ(k["considered"].get<bool>(), k["name"] == "forward") << k["name"];
+  }
+}
+
+TEST_F(DecideCommandTest, KicksFlagReplacesTheKickModel) {
+  Write("one_kick.json", R"({"robot": "test", "rolling_deceleration_mps2": 0.27,
+      "kicks": [{"name": "poke", "speed_mps": 0.5, "sigma_speed_mps": 0.05,
+                 "direction_deg": 0.0, "sigma_direction_deg": 3.0}]})");
+  const nlohmann::json j = DecideJson(
+      {"--situation", ShippedSituation("open_goal").string(), "--kicks", "one_kick.json"});
+  ASSERT_EQ(j["kicks"].size(), 1u);
+  EXPECT_EQ(j["kicks"][0]["name"], "poke");
+  EXPECT_THAT(j["situation"]["kicks"].get<std::string>(), HasSubstr("one_kick.json"));
+}
+
+TEST_F(DecideCommandTest, TextOutputNamesTheDecision) {
+  const RunResult r = Decide({"--situation", ShippedSituation("open_goal").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_THAT(r.out, HasSubstr("decision: forward"));
+  EXPECT_THAT(r.out, HasSubstr("strategy: optimal_all, 30 samples per hypothesis, seed 1"));
+}
+
+// ----- SVG -----
+
+TEST_F(DecideCommandTest, SvgIsWellFormedWithOneCirclePerSamplePerKick) {
+  const RunResult r = Decide({"--situation", ShippedSituation("open_goal").string(), "--samples",
+                              "9", "--svg", "decision.svg"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(Listing(), std::set<std::string>{"decision.svg"});  // no temporary file left
+  const std::string svg = ReadFile(work() / "decision.svg");
+  EXPECT_THAT(svg, StartsWith("<?xml"));
+  EXPECT_THAT(svg, EndsWith("</svg>\n"));
+  EXPECT_EQ(CountOf(svg, "<svg "), 1);
+  EXPECT_EQ(CountOf(svg, "<g "), CountOf(svg, "</g>"));
+  EXPECT_GE(CountOf(svg, "<circle "), 3 * 9);
+  // One group per considered kick, holding exactly one circle per sample.
+  ASSERT_EQ(CountOf(svg, "<g class=\"kick\">"), 3);
+  for (std::size_t at = svg.find("<g class=\"kick\">"); at != std::string::npos;
+       at = svg.find("<g class=\"kick\">", at + 1)) {
+    const std::string group = svg.substr(at, svg.find("</g>", at) - at);
+    EXPECT_EQ(CountOf(group, "<circle "), 9) << group.substr(0, 80);
+  }
+  // The text decision still goes to stdout.
+  EXPECT_THAT(r.out, HasSubstr("decision: forward"));
+}
+
+TEST_F(DecideCommandTest, SvgOfOptimalOneDrawsOnlyTheForwardKick) {
+  const RunResult r = Decide({"--situation", ShippedSituation("open_goal").string(), "--strategy",
+                              "optimal_one", "--samples", "5", "--svg", "one.svg"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string svg = ReadFile(work() / "one.svg");
+  EXPECT_EQ(CountOf(svg, "<g class=\"kick\">"), 1);
+  EXPECT_THAT(svg, HasSubstr("<title>forward</title>"));
+  EXPECT_THAT(svg, Not(HasSubstr("<title>side_kick_left</title>")));
+}
+
+TEST_F(DecideCommandTest, SvgIsTheSameForTheSameSeed) {
+  const std::string situation = ShippedSituation("blocked_by_defender").string();
+  ASSERT_EQ(Decide({"--situation", situation, "--seed", "3", "--svg", "a.svg"}).exit_code, 0);
+  ASSERT_EQ(Decide({"--situation", situation, "--seed", "3", "--svg", "b.svg"}).exit_code, 0);
+  EXPECT_EQ(ReadFile(work() / "a.svg"), ReadFile(work() / "b.svg"));
+}
+
+}  // namespace
