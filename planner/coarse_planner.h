@@ -16,13 +16,17 @@ class CoarsePlanner {
  public:
   // `situation` must outlive the planner.
   explicit CoarsePlanner(const Situation& situation);
+  explicit CoarsePlanner(const Situation&& situation) = delete;  // it would dangle
 
-  // The fast evaluator of the decision's hot path.
-  CoarseActionEvaluator MakeEvaluator(int samples, std::uint64_t seed) const {
+  // The fast evaluator of the decision's hot path. Evaluators refer to the planner, so they
+  // cannot be made from a temporary one.
+  CoarseActionEvaluator MakeEvaluator(int samples, std::uint64_t seed) const&& = delete;
+  SeamActionEvaluator MakeSeamEvaluator(int samples, std::uint64_t seed) const&& = delete;
+  CoarseActionEvaluator MakeEvaluator(int samples, std::uint64_t seed) const& {
     return CoarseActionEvaluator(situation_, simulator_.world(), value_, samples, seed);
   }
   // The same through the outcome-simulator seam (for cross-checks and reports).
-  SeamActionEvaluator MakeSeamEvaluator(int samples, std::uint64_t seed) const {
+  SeamActionEvaluator MakeSeamEvaluator(int samples, std::uint64_t seed) const& {
     return SeamActionEvaluator(situation_, simulator_, value_, samples, seed);
   }
   Decision Decide(Strategy strategy, int samples, std::uint64_t seed) const;

@@ -50,7 +50,7 @@ TEST(KickModelTest, ShippedNaoModelHasThreeKicksInOrder) {
 }
 
 TEST(KickModelTest, ForwardKickIs108MetresPerSecondStraightAhead) {
-  const KickSpec& k = ShippedNao().kicks[0];
+  const KickSpec k = ShippedNao().kicks[0];
   EXPECT_DOUBLE_EQ(k.speed_mps, 1.08);
   EXPECT_DOUBLE_EQ(k.sigma_speed_mps, 0.15);
   EXPECT_DOUBLE_EQ(k.direction_rad, 0.0);

@@ -70,7 +70,8 @@ TEST(DecisionTest, ObstacleInTheWayIsAvoided) {
   const Decision d_blocked = DecideOn(blocked, Strategy::kOptimalValue);
   EXPECT_LT(Chosen(d_blocked).p_opp_goal, Chosen(d_open).p_opp_goal);
   // Without turning, most forward kicks stop at the obstacle; the decision does better.
-  CoarseActionEvaluator straight = CoarsePlanner(blocked).MakeEvaluator(30, 1);
+  const CoarsePlanner blocked_planner(blocked);
+  CoarseActionEvaluator straight = blocked_planner.MakeEvaluator(30, 1);
   EXPECT_GT(Chosen(d_blocked).trimmed_utility, straight.Evaluate(kForward, 0.0).trimmed_utility);
 }
 

@@ -1,0 +1,56 @@
+// The project's own sin, cos and exp against the standard library.
+#include "models/fast_math.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace foresight {
+namespace {
+
+// |a - b| in units of the last place of b.
+double Ulps(double a, double b) {
+  const double ulp = std::nextafter(std::abs(b), INFINITY) - std::abs(b);
+  return std::abs(a - b) / ulp;
+}
+
+TEST(FastMathTest, SinCosWithinTwoUlpsOnTheAnglesWeUse) {
+  double worst = 0.0;
+  for (int i = -200000; i <= 200000; ++i) {
+    const double x = i * 1.3e-4;  // [-26, 26] rad
+    double s, c;
+    SinCos(x, &s, &c);
+    // Near zeros of sin or cos, compare absolutely (relative error is meaningless there).
+    if (std::abs(std::sin(x)) > 1e-3) worst = std::max(worst, Ulps(s, std::sin(x)));
+    if (std::abs(std::cos(x)) > 1e-3) worst = std::max(worst, Ulps(c, std::cos(x)));
+    ASSERT_NEAR(s, std::sin(x), 1e-15);
+    ASSERT_NEAR(c, std::cos(x), 1e-15);
+  }
+  EXPECT_LE(worst, 2.0);
+}
+
+TEST(FastMathTest, SinCosExactAtSpecialAngles) {
+  double s, c;
+  SinCos(0.0, &s, &c);
+  EXPECT_EQ(s, 0.0);
+  EXPECT_EQ(c, 1.0);
+  SinCos(-M_PI, &s, &c);
+  EXPECT_NEAR(s, 0.0, 1e-15);
+  EXPECT_EQ(c, -1.0);
+}
+
+TEST(FastMathTest, ExpWithinTwoUlps) {
+  double worst = 0.0;
+  for (int i = -70000; i <= 70000; ++i) {
+    const double x = i * 1e-2;
+    worst = std::max(worst, Ulps(Exp(x), std::exp(x)));
+  }
+  EXPECT_LE(worst, 2.0);
+  EXPECT_EQ(Exp(0.0), 1.0);
+  EXPECT_EQ(Exp(-1000.0), 0.0);
+  EXPECT_EQ(Exp(1000.0), std::numeric_limits<double>::infinity());
+}
+
+}  // namespace
+}  // namespace foresight
