@@ -1,5 +1,6 @@
 # The two commands of the README, and a few more. Each does all set-up it needs on a fresh
 # Debian machine (scripts/setup.sh installs missing packages with apt-get).
+MAKEFLAGS += --no-print-directory
 BUILD ?= build
 JOBS ?= $(shell nproc)
 SITUATION ?= models/situations/near_goal_corner.json
