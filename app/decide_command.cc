@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "app/cli_values.h"
 #include "app/decision_output.h"
 #include "models/checks.h"
 #include "models/error.h"
@@ -18,7 +19,7 @@ void AddDecideCommand(CLI::App& app, DecideOptions& options) {
   for (Strategy s : AllStrategies()) names += (names.empty() ? "" : ", ") + std::string(StrategyName(s));
   cmd->add_option("--strategy", options.strategy, "One of: " + names)->capture_default_str();
   cmd->add_option("--samples", options.samples,
-                  "Samples per hypothesis (default: the evaluation file's, 30)");
+                  "Samples per hypothesis (default: the evaluation file's N)");
   cmd->add_option("--seed", options.seed, "Random seed")->capture_default_str();
   cmd->add_flag("--json", options.json, "Print the decision as JSON instead of text");
   cmd->add_option("--svg", options.svg_file, "Draw the field and every sample's rest position");
@@ -31,26 +32,27 @@ int RunDecide(const DecideOptions& options, const std::string& models_dir) {
     for (Strategy s : AllStrategies()) names += (names.empty() ? "" : ", ") + std::string(StrategyName(s));
     throw InputError("--strategy: unknown strategy '" + options.strategy + "' (one of: " + names + ")");
   }
-  const bool samples_given = options.samples != -1;
-  if (samples_given && (options.samples < 1 || options.samples > 1000000)) {
-    throw InputError("--samples: must be in [1, 1000000], got " + std::to_string(options.samples));
-  }
+  const bool samples_given = !options.samples.empty();
+  const int samples_flag = samples_given ? ParseCount("--samples", options.samples, 1, kMaxSamples) : 0;
+  const std::uint64_t seed = ParseSeed(options.seed);
   SituationOverrides overrides;
   overrides.kicks_file = options.kicks_file;
-  const Situation situation = LoadSituation(
-      options.situation_file,
-      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir), overrides);
-  const int samples = samples_given ? options.samples : situation.evaluation.samples;
+  const std::filesystem::path models =
+      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+  const Situation situation = LoadSituation(options.situation_file, models, overrides);
+  const int samples = samples_given ? samples_flag : situation.evaluation.samples;
 
   const CoarsePlanner planner(situation);
-  DecisionRun run{options.situation_file, &planner, planner.Decide(*strategy, samples, options.seed),
-                  samples, options.seed};
-  if (!options.svg_file.empty()) WriteFileAtomically(options.svg_file, DecisionSvg(run));
-  if (options.json) {
-    std::cout << DecisionJson(run).dump(2) << "\n";
-  } else {
-    std::cout << DecisionText(run);
-  }
+  DecisionRun run{options.situation_file, &planner, planner.Decide(*strategy, samples, seed),
+                  samples, seed, models};
+  // Everything is made before anything is written, so a failure leaves no file behind.
+  const std::string printed = options.json ? DecisionJson(run).dump(2, ' ', false,
+                                                 nlohmann::ordered_json::error_handler_t::replace) + "\n"
+                                           : DecisionText(run);
+  const std::string drawing = options.svg_file.empty() ? "" : DecisionSvg(run);
+  if (!options.svg_file.empty()) WriteFileAtomically(options.svg_file, drawing);
+  std::cout << printed << std::flush;
+  if (!std::cout) throw InputError("cannot write to standard output");
   return 0;
 }
 

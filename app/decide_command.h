@@ -12,8 +12,8 @@ struct DecideOptions {
   std::string situation_file;
   std::string kicks_file;  // replaces the situation's kick model when given
   std::string strategy = "optimal_all";
-  int samples = -1;  // -1: not given, the evaluation file's default
-  std::uint64_t seed = 1;
+  std::string samples;  // empty: the evaluation file's N
+  std::string seed = "1";
   bool json = false;
   std::string svg_file;
 };

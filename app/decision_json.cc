@@ -20,6 +20,17 @@ nlohmann::ordered_json EvaluationJson(const ActionEvaluation& e) {
   return j;
 }
 
+// A data file as reports show it: relative to the models folder when inside it, so the same
+// run gives the same bytes in every checkout.
+std::string DisplayPath(const std::filesystem::path& file,
+                        const std::filesystem::path& models_dir) {
+  const std::filesystem::path relative =
+      std::filesystem::absolute(file).lexically_normal().lexically_relative(
+          std::filesystem::absolute(models_dir).lexically_normal());
+  if (!relative.empty() && *relative.begin() != "..") return relative.generic_string();
+  return file.generic_string();
+}
+
 }  // namespace
 
 nlohmann::ordered_json DecisionJson(const DecisionRun& run) {
@@ -30,9 +41,9 @@ nlohmann::ordered_json DecisionJson(const DecisionRun& run) {
   j["command"] = "decide";
   j["situation"] = {{"name", s.name},
                     {"file", run.situation_file.string()},
-                    {"field", s.field_file.string()},
-                    {"kicks", s.kicks_file.string()},
-                    {"evaluation", s.evaluation_file.string()}};
+                    {"field", DisplayPath(s.field_file, run.models_dir)},
+                    {"kicks", DisplayPath(s.kicks_file, run.models_dir)},
+                    {"evaluation", DisplayPath(s.evaluation_file, run.models_dir)}};
   j["strategy"] = StrategyName(d.strategy);
   j["samples"] = run.samples;
   j["seed"] = run.seed;
@@ -44,6 +55,7 @@ nlohmann::ordered_json DecisionJson(const DecisionRun& run) {
     nlohmann::ordered_json item;
     item["name"] = KickName(run, k.kick_index);
     item["considered"] = k.considered;
+    item["no_acceptable_rotation"] = k.no_acceptable_rotation;
     item["chosen"] = k.kick_index == d.kick_index;
     item["rotation_deg"] = k.choice.rotation_rad * kRadToDeg;
     item.update(EvaluationJson(k.choice.evaluation));

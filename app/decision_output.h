@@ -18,6 +18,7 @@ struct DecisionRun {
   Decision decision;
   int samples = 0;
   std::uint64_t seed = 0;
+  std::filesystem::path models_dir;  // data files below it are reported relative to it
 };
 
 // The name of kick `index` of the run's model, or "none" for -1.

@@ -14,9 +14,11 @@ std::string KickName(const DecisionRun& run, int kick_index) {
 namespace {
 
 std::string Format(const char* format, auto... args) {
-  char buffer[256];
-  std::snprintf(buffer, sizeof buffer, format, args...);
-  return buffer;
+  const int length = std::snprintf(nullptr, 0, format, args...);
+  std::string text(static_cast<std::size_t>(length > 0 ? length : 0) + 1, '\0');
+  std::snprintf(text.data(), text.size(), format, args...);
+  text.pop_back();
+  return text;
 }
 
 std::string TurnText(double rotation_rad) {
@@ -51,7 +53,9 @@ std::string DecisionText(const DecisionRun& run) {
   for (const KickOption& k : d.kicks) {
     const std::string name = KickName(run, k.kick_index);
     if (!k.considered) {
-      out += Format("%-18s %9s  (not considered by this strategy)\n", name.c_str(), "-");
+      out += Format("%-18s %9s  (%s)\n", name.c_str(), "-",
+                    k.no_acceptable_rotation ? "no turn makes it acceptable"
+                                             : "not used by this strategy");
       continue;
     }
     const std::string mark = (k.kick_index == d.kick_index ? "<- chosen" : "") +

@@ -18,9 +18,10 @@ void EvaluationParams::Validate() const {
     RequirePositive(at + "sigma_x_m", g.sigma_x_m);
     RequirePositive(at + "sigma_y_m", g.sigma_y_m);
   }
+  RequirePositive("goal_value", goal_value);
   RequireInRange("goal_value", goal_value, 0.0, 1e6);
   RequireInRange("max_out_share", max_out_share, 0.0, 1.0);
-  RequireInRange("samples", samples, 1, 1e7);
+  RequireInRange("samples", samples, 1, kMaxSamples);
   RequireInRange("naoth_rule.min_acceptable_share", naoth_rule.min_acceptable_share, 0.0, 1.0);
   RequireInRange("naoth_rule.goal_preference_share", naoth_rule.goal_preference_share, 0.0, 1.0);
   RequireInRange("rotation_search.grid_step_deg", rotation_search.grid_step_rad * kRadToDeg, 0.1,

@@ -13,6 +13,9 @@
 
 namespace foresight {
 
+// Samples per hypothesis, wherever they come from (file or --samples).
+inline constexpr int kMaxSamples = 100000;
+
 struct GaussianTerm {
   double weight = 0.0;
   double centre_x_m = 0.0;
@@ -27,9 +30,10 @@ struct PotentialParams {
 };
 
 // NaoTH's published kick rule (used for comparison).
+// The numbers live in models/evaluation/*.json only; zero-initialised structs fail Validate().
 struct NaothRuleParams {
-  double min_acceptable_share = 0.85;   // kicks at or below this share of infield+goal are dropped
-  double goal_preference_share = 0.30;  // kicks with at least this goal share are preferred
+  double min_acceptable_share = 0.0;   // kicks at or below this share of infield+goal are dropped
+  double goal_preference_share = 0.0;  // kicks with at least this goal share are preferred
 };
 
 // Search for the best rotation around the ball: a grid over the whole circle, then pattern
@@ -43,9 +47,9 @@ struct RotationSearchParams {
 struct EvaluationParams {
   std::string name;
   PotentialParams potential;
-  double goal_value = 1.0;      // v_max: value of a ball in the opponent goal
-  double max_out_share = 0.15;  // T_out
-  int samples = 30;             // N, samples per hypothesis
+  double goal_value = 0.0;     // v_max: value of a ball in the opponent goal
+  double max_out_share = 0.0;  // T_out
+  int samples = 0;             // N, samples per hypothesis
   NaothRuleParams naoth_rule;
   RotationSearchParams rotation_search;
 

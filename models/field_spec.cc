@@ -21,7 +21,7 @@ void FieldSpec::Validate() const {
   RequirePositive("goal.net_height_m", goal.net_height_m);
   RequireInRange("ball.radius_m", ball.radius_m, 1e-3, goal.InnerHalfWidth());
   RequirePositive("ball.mass_kg", ball.mass_kg);
-  RequirePositive("default_obstacle_radius_m", default_obstacle_radius_m);
+  RequireInRange("default_obstacle_radius_m", default_obstacle_radius_m, 0.01, 2.0);
 }
 
 FieldSpec LoadFieldSpec(const std::filesystem::path& file) {

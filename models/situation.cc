@@ -58,6 +58,7 @@ auto LoadReferenced(const JsonObject& root, std::string_view key,
 }  // namespace
 
 void Situation::Validate() const {
+  RequireInRange("robot.theta_deg", state.robot.theta_rad * kRadToDeg, -360.0, 360.0);
   RequireNonNegative("robot.sigma_x_m", state.sigma_robot_x_m);
   RequireNonNegative("robot.sigma_y_m", state.sigma_robot_y_m);
   RequireInRange("robot.sigma_theta_deg", state.sigma_robot_theta_rad * kRadToDeg, 0.0, 180.0);
@@ -112,6 +113,12 @@ Situation LoadSituation(const std::filesystem::path& file,
   // Without an "evaluation" key, the evaluation shipped for the field's name applies.
   situation.evaluation_file = ResolveModelFile(root.StringOr("evaluation", situation.field.name),
                                                "evaluation", dir, models_dir);
+  std::error_code ec;
+  if (!root.Has("evaluation") && !std::filesystem::is_regular_file(situation.evaluation_file, ec)) {
+    throw InputError(file.string() + ": no evaluation for field '" + situation.field.name +
+                     "' (" + situation.evaluation_file.string() +
+                     " does not exist); name one with \"evaluation\"");
+  }
   situation.evaluation =
       LoadReferenced(root, "evaluation", situation.evaluation_file, LoadEvaluationParams);
   situation.state = ReadState(root);

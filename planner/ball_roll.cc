@@ -47,6 +47,9 @@ double ExitDistance(double start, double dir, double limit) {
 
 Category ClassifyPath(const CoarseWorld& world, const Vec2& start, const Vec2& dir, double length,
                       const Vec2& rest) {
+  // A ball that is already out or in a goal stays so, whatever the kick does (as for `none`).
+  const Category at_start = ClassifyPosition(world, start);
+  if (at_start != Category::kInfield) return at_start;
   const double s_x = ExitDistance(start.x(), dir.x(), world.out_x_m);
   const double s_y = ExitDistance(start.y(), dir.y(), world.out_y_m);
   if (std::min(s_x, s_y) > length) return ClassifyPosition(world, rest);

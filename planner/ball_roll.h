@@ -4,7 +4,7 @@
 // Static objects stop it fully inelastically: the path ends where the ball first touches a goal
 // post, a net or an obstacle (its centre one radius short of the surface). The first field line
 // the path crosses outward decides the category: a goal line between the posts is a goal,
-// any other line is out.
+// any other line is out. A ball that starts out or in a goal keeps that category.
 #pragma once
 
 #include "planner/coarse_world.h"

@@ -1,6 +1,7 @@
 #include "planner/decision.h"
 
 #include <cmath>
+#include <functional>
 
 #include "planner/naoth_rule.h"
 
@@ -72,30 +73,39 @@ int BestUtilityChoice(const std::vector<KickOption>& options) {
   return best;
 }
 
-// When nothing is acceptable: every considered kick at the rotation of its best untrimmed
-// utility, and the best of those.
+// Lexicographic score for the fallback: fewest own goals, then fewest outs, then utility.
+// One sample less out is worth more than any utility difference (utility <= goal_value).
+double FallbackScore(const ActionEvaluation& e, double goal_value) {
+  const double step = goal_value + 1.0;
+  return e.utility -
+         step * (e.Count(Category::kOut) + (e.samples + 1.0) * e.Count(Category::kOwnGoal));
+}
+
+// When nothing is acceptable: every considered kick at the rotation of its best fallback
+// score, and the best of those.
 void FallBack(Context& ctx, Decision& decision) {
+  const double goal_value = ctx.evaluator.situation().evaluation.goal_value;
   const KickOption* best = nullptr;
+  double best_score = 0.0;
   for (KickOption& option : decision.kicks) {
     if (!option.considered) continue;
-    const RotationChoice untrimmed = BestRotation(
+    const RotationChoice found = BestRotation(
         [&](double rho) {
           ActionEvaluation e = ctx.evaluator.Evaluate(option.kick_index, rho);
-          e.trimmed_utility = e.utility;  // let the search see the untrimmed utility
+          e.trimmed_utility = FallbackScore(e, goal_value);  // what the search maximises
           return e;
         },
         ctx.search);
-    option.choice = {untrimmed.rotation_rad,
-                     ctx.evaluator.Evaluate(option.kick_index, untrimmed.rotation_rad)};
-    if (best == nullptr || option.choice.evaluation.utility > best->choice.evaluation.utility) {
-      best = &option;
-    }
+    option.choice = {found.rotation_rad, ctx.evaluator.Evaluate(option.kick_index, found.rotation_rad)};
+    const double score = FallbackScore(option.choice.evaluation, goal_value);
+    if (best == nullptr || score > best_score) best = &option, best_score = score;
   }
   if (best != nullptr) {
     decision.kick_index = best->kick_index;
     decision.rotation_rad = best->choice.rotation_rad;
   }
-  decision.note = "no kick is acceptable at any rotation; took the best untrimmed utility";
+  decision.note =
+      "no kick is acceptable at any rotation; took the fewest own goals, then outs, then utility";
 }
 
 void OptimiseEveryKick(Context& ctx, Decision& decision, int only_kick) {
@@ -105,38 +115,42 @@ void OptimiseEveryKick(Context& ctx, Decision& decision, int only_kick) {
   }
 }
 
-void DecideFast(Context& ctx, Decision& decision) {
+// Per kick, the least turn either way for which `wanted` holds; at equal turns the one towards
+// the goal. Kicks without one are marked.
+void FindLeastTurns(Context& ctx, Decision& decision,
+                    const std::function<bool(const ActionEvaluation&)>& wanted) {
   const double towards_goal = TurnTowardsGoal(ctx.evaluator.situation());
-  auto improves = [&ctx](const ActionEvaluation& e) { return ctx.Improves(e); };
   for (KickOption& option : decision.kicks) {
-    // The least turn either way; at equal turns the one towards the goal.
     std::optional<RotationChoice> found = LeastAcceptableRotation(
-        ctx.ObjectiveFor(option.kick_index), improves, towards_goal, ctx.search);
+        ctx.ObjectiveFor(option.kick_index), wanted, towards_goal, ctx.search);
     if (!found || found->rotation_rad != 0.0) {
       std::optional<RotationChoice> away = LeastAcceptableRotation(
-          ctx.ObjectiveFor(option.kick_index), improves, -towards_goal, ctx.search);
+          ctx.ObjectiveFor(option.kick_index), wanted, -towards_goal, ctx.search);
       if (away && (!found || std::abs(away->rotation_rad) < std::abs(found->rotation_rad))) {
         found = away;
       }
     }
     option.considered = found.has_value();
+    option.no_acceptable_rotation = !found.has_value();
     if (found) option.choice = *found;
   }
-  const int chosen = LeastRotationChoice(ctx, decision.kicks);
+}
+
+void DecideFast(Context& ctx, Decision& decision) {
+  FindLeastTurns(ctx, decision, [&ctx](const ActionEvaluation& e) { return ctx.Improves(e); });
+  int chosen = LeastRotationChoice(ctx, decision.kicks);
+  if (chosen < 0) {
+    // Nothing improves on leaving the ball: the least turn that makes some kick acceptable.
+    FindLeastTurns(ctx, decision, [&ctx](const ActionEvaluation& e) { return ctx.Acceptable(e); });
+    chosen = LeastRotationChoice(ctx, decision.kicks);
+    if (chosen >= 0) decision.note = "no kick improves on leaving the ball; took the least turn to an acceptable kick";
+  }
   if (chosen >= 0) {
     decision.kick_index = decision.kicks[static_cast<std::size_t>(chosen)].kick_index;
     decision.rotation_rad = decision.kicks[static_cast<std::size_t>(chosen)].choice.rotation_rad;
     return;
   }
-  // No kick improves on the ball anywhere: report every kick's best rotation and fall back.
-  OptimiseEveryKick(ctx, decision, -1);
-  const int best = BestUtilityChoice(decision.kicks);
-  if (best >= 0 && ctx.Acceptable(decision.kicks[static_cast<std::size_t>(best)].choice.evaluation)) {
-    decision.kick_index = decision.kicks[static_cast<std::size_t>(best)].kick_index;
-    decision.rotation_rad = decision.kicks[static_cast<std::size_t>(best)].choice.rotation_rad;
-    decision.note = "no kick improves on the ball; took the best acceptable kick";
-    return;
-  }
+  for (KickOption& option : decision.kicks) option.considered = true;
   FallBack(ctx, decision);
 }
 

@@ -1,22 +1,23 @@
 // The decision in two steps (Mellmann & Schlotter, sec. IV): per kick choose the rotation around
-// the ball, then choose among the optimised kicks. Strategies (sec. IV-A):
-//   fast          least rotation in both steps: kick at once when some kick is acceptable and
-//                 improves on leaving the ball; otherwise take the least turn that makes one
-//                 so (towards the opponent goal when both ways need the same turn). The paper
-//                 turns towards the goal; a shorter turn the other way is taken here because
-//                 the strategy's point is to turn least.
-//   optimal_value best trimmed utility in both steps.
-//   optimal_all   best trimmed utility per kick, then the kick needing the least rotation.
+// the ball, then choose among the optimised kicks. "Acceptable" means not trimmed (p_out <= T_out
+// and no own-goal sample); "improves" means acceptable with a trimmed utility above that of
+// `none` (leaving the ball where it is). Strategies (sec. IV-A):
+//   fast          least rotation in both steps: per kick the least turn (either way; towards
+//                 the opponent goal at equal turns) that makes it improve, then the kick with
+//                 the least turn, ties to the higher utility. If no turn makes any kick improve,
+//                 the least turn that makes one acceptable. The paper's robot "turns towards
+//                 the goal"; a shorter turn the other way is taken here because the strategy's
+//                 point is to turn least.
+//   optimal_value best trimmed utility in both steps (ties: the least turn).
+//   optimal_all   best trimmed utility per kick, then the kick needing the least rotation among
+//                 the kicks that improve (if none improves: among the acceptable ones).
 //   optimal_one   the forward kick only (the kick whose mean direction is closest to 0),
 //                 rotated to its best trimmed utility.
-//   naoth         NaoTH's published rule, without rotation: drop kicks with an own-goal sample
-//                 or an acceptable (infield + goal) share <= min_acceptable_share; prefer kicks
-//                 with a goal share >= goal_preference_share, most goals first; otherwise the
-//                 lowest mean potential, `none` included. When `none` wins the robot turns to
-//                 face the opponent goal, as NaoTH's behaviour does.
-// "Acceptable" means not trimmed (p_out <= T_out, no own goal); "improves" means a trimmed
-// utility above that of `none`. When no kick is acceptable anywhere, the optimal strategies
-// and fast fall back to the best untrimmed utility and say so in `note`.
+//   naoth         NaoTH's published rule without rotation (planner/naoth_rule.h). When `none`
+//                 wins the robot turns to face the opponent goal, as NaoTH's behaviour does.
+// When no kick is acceptable at any rotation, every strategy but naoth falls back to the kick
+// and rotation with the fewest own-goal samples, then the fewest outs, then the best utility,
+// and says so in `note`.
 #pragma once
 
 #include <optional>
@@ -38,7 +39,8 @@ std::vector<Strategy> AllStrategies();
 // Step 1's result for one kick.
 struct KickOption {
   int kick_index = 0;
-  bool considered = true;  // false: the strategy does not use this kick (optimal_one)
+  bool considered = true;  // false: not used (optimal_one's side kicks, fast's hopeless kicks)
+  bool no_acceptable_rotation = false;  // fast: no turn makes this kick acceptable
   RotationChoice choice;
 };
 

@@ -27,7 +27,8 @@ NaothChoice ApplyNaothRule(const NaothRuleParams& params, const std::vector<Kick
   if (goal_kick != nullptr) return {goal_kick->kick_index};
 
   NaothChoice choice;  // `none` unless a kick has a lower mean potential
-  double best_potential = none.Count(Category::kInfield) > 0 ? none.potential_avg : INFINITY;
+  double best_potential =
+      Passes(params, none) && none.Count(Category::kInfield) > 0 ? none.potential_avg : INFINITY;
   for (const KickOption& k : kicks) {
     const ActionEvaluation& e = k.choice.evaluation;
     if (!Passes(params, e) || e.Count(Category::kInfield) == 0) continue;

@@ -4,7 +4,9 @@
 //      <= min_acceptable_share;
 //   2. if some remaining kick has a goal share >= goal_preference_share, take the one with the
 //      most goal samples (ties: the higher utility);
-//   3. otherwise take the lowest mean potential among the remaining kicks and `none`.
+//   3. otherwise take the lowest mean potential among the remaining kicks and `none` (which
+//      passes the same filter). The mean is over the infield samples only: goal samples have
+//      no potential, and below the goal preference they do not count.
 #pragma once
 
 #include <vector>

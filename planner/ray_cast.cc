@@ -14,7 +14,10 @@ double RayCapsuleEntry(const Vec2& start, const Vec2& dir, const Vec2& a, const 
   if (length <= 0.0) return RayCircleEntry(start, dir, a, radius);
   const Vec2 u = axis / length;
   const double start_along = std::clamp((start - a).dot(u), 0.0, length);
-  if ((a + start_along * u - start).squaredNorm() <= radius * radius) return kNoHit;  // inside
+  const Vec2 from_axis = start - (a + start_along * u);
+  if (from_axis.squaredNorm() <= radius * radius) {  // starts in contact
+    return from_axis.dot(dir) < 0.0 ? 0.0 : kNoHit;
+  }
   double best = std::min(RayCircleEntry(start, dir, a, radius), RayCircleEntry(start, dir, b, radius));
   const Vec2 normal(-u.y(), u.x());
   const double offset = (start - a).dot(normal);  // signed distance of the start from the line

@@ -1,6 +1,7 @@
 #include "planner/rotation_search.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <vector>
 
@@ -21,7 +22,30 @@ RotationChoice At(const RotationObjective& evaluate, double rotation_rad) {
   return {rotation_rad, evaluate(rotation_rad)};
 }
 
-// Local maxima of the circular grid, best first.
+// An exact strict weak order for sorting (BetterRotation's tolerance is not one): higher
+// utility, then the smaller turn, then the counter-clockwise one.
+bool SortsBefore(const RotationChoice& a, const RotationChoice& b) {
+  const double ua = a.evaluation.trimmed_utility, ub = b.evaluation.trimmed_utility;
+  if (ua != ub) return ua > ub;
+  const double ta = std::abs(a.rotation_rad), tb = std::abs(b.rotation_rad);
+  if (ta != tb) return ta < tb;
+  return a.rotation_rad > b.rotation_rad;
+}
+
+// True when grid points j and k lie on one flat run: every point between them (the shorter
+// way round) has the same utility.
+bool SameFlatRun(const std::vector<RotationChoice>& grid, int j, int k) {
+  const int n = static_cast<int>(grid.size());
+  const int forward = (k - j + n) % n;
+  const int step = forward <= n / 2 ? 1 : -1;
+  const double u = grid[static_cast<std::size_t>(j)].evaluation.trimmed_utility;
+  for (int i = j; i != k; i = (i + step + n) % n) {
+    if (grid[static_cast<std::size_t>(i)].evaluation.trimmed_utility != u) return false;
+  }
+  return grid[static_cast<std::size_t>(k)].evaluation.trimmed_utility == u;
+}
+
+// Local maxima of the circular grid, best first, one per flat run (its least turn).
 std::vector<int> LocalMaxima(const std::vector<RotationChoice>& grid) {
   const int n = static_cast<int>(grid.size());
   std::vector<int> maxima;
@@ -33,8 +57,14 @@ std::vector<int> LocalMaxima(const std::vector<RotationChoice>& grid) {
     }
   }
   std::sort(maxima.begin(), maxima.end(),
-            [&](int a, int b) { return BetterRotation(grid[a], grid[b]); });
-  return maxima;
+            [&](int a, int b) { return SortsBefore(grid[a], grid[b]); });
+  std::vector<int> distinct;
+  for (int k : maxima) {
+    bool seen = false;
+    for (int j : distinct) seen = seen || SameFlatRun(grid, j, k);
+    if (!seen) distinct.push_back(k);
+  }
+  return distinct;
 }
 
 RotationChoice Refine(const RotationObjective& evaluate, RotationChoice best, double step,
@@ -80,6 +110,7 @@ bool BetterRotation(const RotationChoice& a, const RotationChoice& b) {
 }
 
 RotationChoice BestRotation(const RotationObjective& evaluate, const RotationSearchParams& params) {
+  assert(params.grid_step_rad > 0.0 && params.refine_candidates >= 1);  // Validate() ensures it
   const int n = GridSize(params);
   const double step = 2.0 * kPi / n;
   std::vector<RotationChoice> grid;
@@ -100,6 +131,7 @@ RotationChoice BestRotation(const RotationObjective& evaluate, const RotationSea
 std::optional<RotationChoice> LeastAcceptableRotation(
     const RotationObjective& evaluate, const std::function<bool(const ActionEvaluation&)>& acceptable,
     double sign, const RotationSearchParams& params) {
+  assert(params.grid_step_rad > 0.0);
   const int n = GridSize(params);
   const double step = 2.0 * kPi / n;
   RotationChoice at_zero = At(evaluate, 0.0);

@@ -21,9 +21,8 @@ void WriteFileAtomically(const std::filesystem::path& file, std::string_view con
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
     if (!out) throw InputError(file.string() + ": cannot write file");
     out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
+    out.close();  // checked: a failed close can mean lost data
     if (!out) {
-      out.close();
       std::filesystem::remove(temp, ec);
       throw InputError(file.string() + ": write failed");
     }

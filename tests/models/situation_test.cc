@@ -186,12 +186,9 @@ TEST(SituationTest, FieldGivenAsPathDoesNotReadTheFieldFileAsEvaluation) {
   WriteTempFile("situation_own_field2.json", ShippedText("fields/spl.json"));
   const auto file = BrokenOpenGoal("field_path_no_eval", "\"field\": \"spl\"",
                                    "\"field\": \"situation_own_field2.json\"");
-  try {
-    const Situation s = LoadSituation(file, ModelsDir());
-    EXPECT_EQ(s.evaluation.name, "spl");
-  } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("evaluation"));
-  }
+  const Situation s = LoadSituation(file, ModelsDir());
+  EXPECT_EQ(s.evaluation.name, "spl");
+  EXPECT_EQ(s.evaluation_file, ModelsDir() / "evaluation" / "spl.json");
 }
 
 TEST(SituationTest, InfiniteCoordinateCannotEnter) {

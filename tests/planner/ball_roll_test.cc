@@ -115,6 +115,26 @@ TEST_F(BallRollTest, BallOnTheNetCanRollAway) {
   const Vec2 start(g.post_centre_x_m + g.net_depth_m - 0.5 * situation_.field.ball.radius_m, 0.0);
   const Outcome o = Roll(start, 180.0, 1.0);
   EXPECT_LT(o.p_F_rest.x(), start.x() - 1.0);
+  EXPECT_EQ(o.category, Category::kOppGoal);  // it was in the goal: it counts as scored
+}
+
+TEST_F(BallRollTest, BallTouchingAnObstacleCannotPassThroughIt) {
+  Situation s = testing::MakeSituation({}, {{Vec2(1.0, 0.0), 0.2}});
+  const CoarseWorld world = CoarseWorld::Build(MakeScene(s));
+  const Vec2 start(1.0 - 0.2 - 0.5 * s.field.ball.radius_m, 0.0);  // overlapping it
+  const Outcome blocked = RollBall(world, start, Vec2(1.0, 0.0), 3.0);
+  EXPECT_EQ(blocked.first_contact, Contact::kObstacle);
+  EXPECT_EQ(blocked.p_F_rest, start);
+  EXPECT_EQ(blocked.time_s, 0.0);
+  const Outcome away = RollBall(world, start, Vec2(-1.0, 0.0), 1.0);
+  EXPECT_EQ(away.first_contact, Contact::kNone);
+}
+
+TEST_F(BallRollTest, BallOutsideTheFieldStaysOutWhenKickedBackIn) {
+  const FieldSpec& f = situation_.field;
+  const Outcome o = Roll(Vec2(0.0, f.HalfWidth() + 0.2), -90.0, 1.0);
+  EXPECT_LT(o.p_F_rest.y(), f.HalfWidth());
+  EXPECT_EQ(o.category, Category::kOut);
 }
 
 }  // namespace

@@ -16,9 +16,12 @@ double SegmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
   return (a + t * ab - p).norm();
 }
 
-// First s on a fine grid where the distance drops to `radius`, entering from outside.
+// First s on a fine grid where the distance drops to `radius`; a start in contact is blocked at
+// once if the path goes deeper, free if it leaves.
 double MarchCapsule(const Vec2& start, const Vec2& dir, const Vec2& a, const Vec2& b, double r) {
-  if (SegmentDistance(start, a, b) <= r) return kNoHit;
+  if (SegmentDistance(start, a, b) <= r) {
+    return SegmentDistance(start + 1e-7 * dir, a, b) < SegmentDistance(start, a, b) ? 0.0 : kNoHit;
+  }
   for (double s = 0.0; s < 10.0; s += 1e-4) {
     if (SegmentDistance(start + s * dir, a, b) <= r) return s;
   }
@@ -29,7 +32,8 @@ TEST(RayCastTest, CircleEntryIsExact) {
   EXPECT_DOUBLE_EQ(RayCircleEntry(Vec2(0, 0), Vec2(1, 0), Vec2(3, 0), 1.0), 2.0);
   EXPECT_EQ(RayCircleEntry(Vec2(0, 0), Vec2(-1, 0), Vec2(3, 0), 1.0), kNoHit);  // away
   EXPECT_EQ(RayCircleEntry(Vec2(0, 0), Vec2(1, 0), Vec2(3, 1.01), 1.0), kNoHit);  // misses
-  EXPECT_EQ(RayCircleEntry(Vec2(3, 0.5), Vec2(1, 0), Vec2(3, 0), 1.0), kNoHit);  // inside
+  EXPECT_EQ(RayCircleEntry(Vec2(2.5, 0.5), Vec2(1, 0), Vec2(3, 0), 1.0), 0.0);  // in, going deeper
+  EXPECT_EQ(RayCircleEntry(Vec2(3.5, 0.5), Vec2(1, 0), Vec2(3, 0), 1.0), kNoHit);  // in, leaving
 }
 
 TEST(RayCastTest, CapsuleEntryAgreesWithMarching) {

@@ -1,0 +1,37 @@
+#include "app/cli_values.h"
+
+#include <charconv>
+
+#include "models/error.h"
+
+namespace foresight {
+
+namespace {
+
+template <typename T>
+bool ParseWhole(const std::string& text, T& value) {
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  return ec == std::errc() && ptr == end && !text.empty();
+}
+
+}  // namespace
+
+int ParseCount(const std::string& flag, const std::string& text, int lo, int hi) {
+  long long value = 0;
+  if (!ParseWhole(text, value) || value < lo || value > hi) {
+    throw InputError(flag + ": must be an integer in [" + std::to_string(lo) + ", " +
+                     std::to_string(hi) + "], got '" + text + "'");
+  }
+  return static_cast<int>(value);
+}
+
+std::uint64_t ParseSeed(const std::string& text) {
+  std::uint64_t value = 0;
+  if (!ParseWhole(text, value)) {
+    throw InputError("--seed: must be an integer in [0, 18446744073709551615], got '" + text + "'");
+  }
+  return value;
+}
+
+}  // namespace foresight

@@ -1,0 +1,58 @@
+// Output files are written whole or not at all.
+#include "validation/atomic_file.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "models/error.h"
+
+namespace foresight {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path FreshDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / "foresight_atomic_test" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string Read(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(AtomicFileTest, WritesTheWholeContentAndNoTemporaryRemains) {
+  const fs::path dir = FreshDir("whole");
+  WriteFileAtomically(dir / "out.txt", "first");
+  WriteFileAtomically(dir / "out.txt", "second, longer");  // replaces
+  EXPECT_EQ(Read(dir / "out.txt"), "second, longer");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+TEST(AtomicFileTest, MissingDirectoryIsAnInputErrorNamingTheFile) {
+  const fs::path dir = FreshDir("missing");
+  try {
+    WriteFileAtomically(dir / "nope" / "out.txt", "x");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("nope/out.txt"), std::string::npos) << e.what();
+  }
+}
+
+TEST(AtomicFileTest, TargetThatIsADirectoryFailsAndLeavesItAlone) {
+  const fs::path dir = FreshDir("is_dir");
+  fs::create_directories(dir / "taken");
+  EXPECT_THROW(WriteFileAtomically(dir / "taken", "x"), InputError);
+  EXPECT_TRUE(fs::is_directory(dir / "taken"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+}  // namespace
+}  // namespace foresight
