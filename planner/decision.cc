@@ -177,7 +177,11 @@ Decision Decide(ActionEvaluator& evaluator, Strategy strategy) {
   Decision decision;
   decision.strategy = strategy;
   decision.none = ctx.none;
-  for (int k = 0; k < evaluator.kick_count(); ++k) decision.kicks.push_back({k, true, {}});
+  for (int k = 0; k < evaluator.kick_count(); ++k) {
+    KickOption option;
+    option.kick_index = k;
+    decision.kicks.push_back(option);
+  }
 
   switch (strategy) {
     case Strategy::kFast: DecideFast(ctx, decision); break;

@@ -1,5 +1,7 @@
 #include "planner/position_value.h"
 
+#include "models/fast_math.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -18,7 +20,7 @@ double PositionValue::Potential(const Vec2& p_F) const {
   for (const GaussianTerm& g : potential_.gaussians) {
     const double dx = (p_F.x() - g.centre_x_m) / g.sigma_x_m;
     const double dy = (p_F.y() - g.centre_y_m) / g.sigma_y_m;
-    f += g.weight * std::exp(-0.5 * (dx * dx + dy * dy));
+    f += g.weight * ExpFast(-0.5 * (dx * dx + dy * dy));
   }
   return f;
 }

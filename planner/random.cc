@@ -20,7 +20,7 @@ random_detail::ZigguratTables MakeTables() {
   t.x[0] = kLayerArea / f;
   t.x[1] = kTailStart;
   for (int i = 2; i < kLayers; ++i) {
-    t.x[i] = std::sqrt(-2.0 * std::log(kLayerArea / t.x[i - 1] + f));
+    t.x[i] = std::sqrt(-2.0 * Log(kLayerArea / t.x[i - 1] + f));
     f = Exp(-0.5 * t.x[i] * t.x[i]);
   }
   t.x[kLayers] = 0.0;
@@ -37,8 +37,8 @@ double RandomStream::NormalTail(bool negative) {
   // Marsaglia (1964): exact sampling of the normal tail beyond kTailStart.
   double x, y;
   do {
-    x = std::log(1.0 - NextUniform()) / kTailStart;
-    y = std::log(1.0 - NextUniform());
+    x = Log(1.0 - NextUniform()) / kTailStart;
+    y = Log(1.0 - NextUniform());
   } while (-2.0 * y < x * x);
   return negative ? x - kTailStart : kTailStart - x;
 }

@@ -52,5 +52,30 @@ TEST(FastMathTest, ExpWithinTwoUlps) {
   EXPECT_EQ(Exp(1000.0), std::numeric_limits<double>::infinity());
 }
 
+TEST(FastMathTest, ExpFastWithinThreeUlps) {
+  double worst = 0.0;
+  for (int i = -70000; i <= 70000; ++i) {
+    const double x = i * 1e-2 + 1e-5;
+    worst = std::max(worst, Ulps(ExpFast(x), std::exp(x)));
+  }
+  EXPECT_LE(worst, 3.0);
+  EXPECT_EQ(ExpFast(0.0), 1.0);
+  EXPECT_EQ(ExpFast(-800.0), 0.0);
+}
+
+TEST(FastMathTest, LogWithinTwoUlps) {
+  double worst = 0.0;
+  for (int i = 1; i <= 200000; ++i) {
+    for (double x : {i * 1e-5, i * 0.37, 1.0 / (i * 7.3)}) {
+      if (std::abs(std::log(x)) > 1e-3) worst = std::max(worst, Ulps(Log(x), std::log(x)));
+      ASSERT_NEAR(Log(x), std::log(x), 1e-15 * std::max(1.0, std::abs(std::log(x))));
+    }
+  }
+  EXPECT_LE(worst, 2.0);
+  EXPECT_EQ(Log(1.0), 0.0);
+  EXPECT_EQ(Log(0.0), -std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(std::isnan(Log(-1.0)));
+}
+
 }  // namespace
 }  // namespace foresight
