@@ -12,11 +12,13 @@
 namespace foresight {
 
 void AddDecideCommand(CLI::App& app, DecideOptions& options) {
-  CLI::App* cmd = app.add_subcommand("decide", "Choose a kick for a situation with the coarse model");
+  CLI::App* cmd =
+      app.add_subcommand("decide", "Choose a kick for a situation with the coarse model");
   cmd->add_option("--situation", options.situation_file, "Situation file (JSON)")->required();
   cmd->add_option("--kicks", options.kicks_file, "Kick model file replacing the situation's");
   std::string names;
-  for (Strategy s : AllStrategies()) names += (names.empty() ? "" : ", ") + std::string(StrategyName(s));
+  for (Strategy s : AllStrategies())
+    names += (names.empty() ? "" : ", ") + std::string(StrategyName(s));
   cmd->add_option("--strategy", options.strategy, "One of: " + names)->capture_default_str();
   cmd->add_option("--samples", options.samples,
                   "Samples per hypothesis (default: the evaluation file's N)");
@@ -29,11 +31,14 @@ int RunDecide(const DecideOptions& options, const std::string& models_dir) {
   const std::optional<Strategy> strategy = ParseStrategy(options.strategy);
   if (!strategy) {
     std::string names;
-    for (Strategy s : AllStrategies()) names += (names.empty() ? "" : ", ") + std::string(StrategyName(s));
-    throw InputError("--strategy: unknown strategy '" + options.strategy + "' (one of: " + names + ")");
+    for (Strategy s : AllStrategies())
+      names += (names.empty() ? "" : ", ") + std::string(StrategyName(s));
+    throw InputError("--strategy: unknown strategy '" + options.strategy + "' (one of: " + names +
+                     ")");
   }
   const bool samples_given = !options.samples.empty();
-  const int samples_flag = samples_given ? ParseCount("--samples", options.samples, 1, kMaxSamples) : 0;
+  const int samples_flag =
+      samples_given ? ParseCount("--samples", options.samples, 1, kMaxSamples) : 0;
   const std::uint64_t seed = ParseSeed(options.seed);
   SituationOverrides overrides;
   overrides.kicks_file = options.kicks_file;
@@ -43,12 +48,18 @@ int RunDecide(const DecideOptions& options, const std::string& models_dir) {
   const int samples = samples_given ? samples_flag : situation.evaluation.samples;
 
   const CoarsePlanner planner(situation);
-  DecisionRun run{options.situation_file, &planner, planner.Decide(*strategy, samples, seed),
-                  samples, seed, models};
+  DecisionRun run{options.situation_file,
+                  &planner,
+                  planner.Decide(*strategy, samples, seed),
+                  samples,
+                  seed,
+                  models};
   // Everything is made before anything is written, so a failure leaves no file behind.
-  const std::string printed = options.json ? DecisionJson(run).dump(2, ' ', false,
-                                                 nlohmann::ordered_json::error_handler_t::replace) + "\n"
-                                           : DecisionText(run);
+  const std::string printed =
+      options.json ? DecisionJson(run).dump(2, ' ', false,
+                                            nlohmann::ordered_json::error_handler_t::replace) +
+                         "\n"
+                   : DecisionText(run);
   const std::string drawing = options.svg_file.empty() ? "" : DecisionSvg(run);
   if (!options.svg_file.empty()) WriteFileAtomically(options.svg_file, drawing);
   std::cout << printed << std::flush;

@@ -1,10 +1,9 @@
 // `foresight decide`: the coarse decision on one situation file.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <string>
-
-#include <CLI/CLI.hpp>
 
 namespace foresight {
 

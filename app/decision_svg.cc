@@ -30,8 +30,9 @@ void DrawKickSamples(FieldCanvas& canvas, const DecisionRun& run, const KickOpti
   const bool chosen = option.kick_index == run.decision.kick_index;
   CoarseActionEvaluator evaluator = run.planner->MakeEvaluator(run.samples, run.seed);
   const std::string colour = KickColour(option.kick_index);
-  const std::string filled = "fill:" + colour + ";stroke:#000;stroke-width:" +
-                             (chosen ? "1.2" : "0.6") + ";fill-opacity:" + (chosen ? "1" : "0.75");
+  const std::string filled = "fill:" + colour +
+                             ";stroke:#000;stroke-width:" + (chosen ? "1.2" : "0.6") +
+                             ";fill-opacity:" + (chosen ? "1" : "0.75");
   const std::string hollow = "fill:none;stroke:" + colour + ";stroke-width:2";
   const double radius_px = chosen ? 5.0 : 3.5;
   canvas.svg().OpenGroup("class=\"kick\"");
@@ -48,10 +49,11 @@ void DrawLegend(FieldCanvas& canvas, const DecisionRun& run) {
   double y = 34.0;
   svg.Text(x, y, run.planner->situation().name, "font-size:17px;font-weight:bold");
   y += 22.0;
-  svg.Text(x, y, "strategy " + std::string(StrategyName(run.decision.strategy)) +
-                     Format(", N = %d, seed %llu", run.samples,
-                            static_cast<unsigned long long>(run.seed)),
-           "font-size:13px");
+  svg.Text(
+      x, y,
+      "strategy " + std::string(StrategyName(run.decision.strategy)) +
+          Format(", N = %d, seed %llu", run.samples, static_cast<unsigned long long>(run.seed)),
+      "font-size:13px");
   y += 30.0;
   for (const KickOption& k : run.decision.kicks) {
     if (!k.considered) continue;
@@ -61,19 +63,22 @@ void DrawLegend(FieldCanvas& canvas, const DecisionRun& run) {
     svg.Text(x + 20, y, KickName(run, k.kick_index) + (chosen ? "  (chosen)" : ""),
              chosen ? "font-size:14px;font-weight:bold" : "font-size:14px");
     y += 18.0;
-    svg.Text(x + 20, y, Format("turn %+.1f deg, utility %.3f%s", k.choice.rotation_rad * kRadToDeg,
-                               e.trimmed_utility, e.too_risky ? " (too risky)" : ""),
+    svg.Text(x + 20, y,
+             Format("turn %+.1f deg, utility %.3f%s", k.choice.rotation_rad * kRadToDeg,
+                    e.trimmed_utility, e.too_risky ? " (too risky)" : ""),
              "font-size:12px");
     y += 16.0;
-    svg.Text(x + 20, y, Format("goal %.2f  out %.2f  own %.2f  infield %.2f", e.p_opp_goal, e.p_out,
-                               e.p_own_goal, e.p_infield),
+    svg.Text(x + 20, y,
+             Format("goal %.2f  out %.2f  own %.2f  infield %.2f", e.p_opp_goal, e.p_out,
+                    e.p_own_goal, e.p_infield),
              "font-size:12px");
     y += 26.0;
   }
   svg.Text(x, y, Format("none: utility %.3f", run.decision.none.trimmed_utility), "font-size:12px");
   y += 20.0;
   svg.Text(x, y, "hollow circles: samples that end out", "font-size:11px;fill:#555");
-  if (!run.decision.note.empty()) svg.Text(x, y + 16.0, run.decision.note, "font-size:11px;fill:#a00");
+  if (!run.decision.note.empty())
+    svg.Text(x, y + 16.0, run.decision.note, "font-size:11px;fill:#a00");
 }
 
 }  // namespace

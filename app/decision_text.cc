@@ -53,9 +53,9 @@ std::string DecisionText(const DecisionRun& run) {
   for (const KickOption& k : d.kicks) {
     const std::string name = KickName(run, k.kick_index);
     if (!k.considered) {
-      out += Format("%-18s %9s  (%s)\n", name.c_str(), "-",
-                    k.no_acceptable_rotation ? "no turn makes it acceptable"
-                                             : "not used by this strategy");
+      out += Format(
+          "%-18s %9s  (%s)\n", name.c_str(), "-",
+          k.no_acceptable_rotation ? "no turn makes it acceptable" : "not used by this strategy");
       continue;
     }
     const std::string mark = (k.kick_index == d.kick_index ? "<- chosen" : "") +

@@ -1,8 +1,7 @@
 // The `foresight` command line: one binary, one subcommand per job. Bad input of any kind ends
 // in one line "foresight: error: ..." on stderr and exit code 2 (DESIGN.md, "Errors").
-#include <iostream>
-
 #include <CLI/CLI.hpp>
+#include <iostream>
 
 #include "app/decide_command.h"
 #include "models/error.h"

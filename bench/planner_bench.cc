@@ -16,10 +16,11 @@ std::vector<Situation> Field(int count) {
   std::vector<Situation> situations;
   RandomStream rng(StreamKey(123, 0));
   for (int i = 0; i < count; ++i) {
-    situations.push_back(testing::MakeSituation(testing::Uncertain(
-        {.x_m = -4.2 + 8.4 * rng.NextUniform(), .y_m = -2.8 + 5.6 * rng.NextUniform(),
-         .theta_deg = 360 * rng.NextUniform() - 180}),
-        {{Vec2(3.8, 0.4), 0.15}}));
+    situations.push_back(
+        testing::MakeSituation(testing::Uncertain({.x_m = -4.2 + 8.4 * rng.NextUniform(),
+                                                   .y_m = -2.8 + 5.6 * rng.NextUniform(),
+                                                   .theta_deg = 360 * rng.NextUniform() - 180}),
+                               {{Vec2(3.8, 0.4), 0.15}}));
   }
   return situations;
 }
@@ -82,7 +83,8 @@ void BM_Decision(benchmark::State& state, Strategy strategy) {
 BENCHMARK_CAPTURE(BM_Decision, plain_naoth, Strategy::kNaoth)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Decision, fast, Strategy::kFast)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Decision, optimal_all, Strategy::kOptimalAll)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Decision, optimal_value, Strategy::kOptimalValue)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Decision, optimal_value, Strategy::kOptimalValue)
+    ->Unit(benchmark::kMicrosecond);
 
 // Building the per-situation planner (scene and the value's normalisation over the field).
 void BM_PlannerSetup(benchmark::State& state) {

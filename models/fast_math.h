@@ -35,27 +35,27 @@ inline double RoundToInt(double x) {
 inline double SinPoly(double r) {
   const double r2 = r * r;
   // sum_{n=0..8} (-1)^n r^(2n+1) / (2n+1)!, Horner form.
-  double p = 1.0 / 355687428096000.0;              // 1/17!
-  p = p * r2 - 1.0 / 1307674368000.0;              // -1/15!
-  p = p * r2 + 1.0 / 6227020800.0;                 // 1/13!
-  p = p * r2 - 1.0 / 39916800.0;                   // -1/11!
-  p = p * r2 + 1.0 / 362880.0;                     // 1/9!
-  p = p * r2 - 1.0 / 5040.0;                       // -1/7!
-  p = p * r2 + 1.0 / 120.0;                        // 1/5!
-  p = p * r2 - 1.0 / 6.0;                          // -1/3!
+  double p = 1.0 / 355687428096000.0;  // 1/17!
+  p = p * r2 - 1.0 / 1307674368000.0;  // -1/15!
+  p = p * r2 + 1.0 / 6227020800.0;     // 1/13!
+  p = p * r2 - 1.0 / 39916800.0;       // -1/11!
+  p = p * r2 + 1.0 / 362880.0;         // 1/9!
+  p = p * r2 - 1.0 / 5040.0;           // -1/7!
+  p = p * r2 + 1.0 / 120.0;            // 1/5!
+  p = p * r2 - 1.0 / 6.0;              // -1/3!
   return r + r * r2 * p;
 }
 
 inline double CosPoly(double r) {
   const double r2 = r * r;
-  double p = -1.0 / 6402373705728000.0;            // -1/18!
-  p = p * r2 + 1.0 / 20922789888000.0;             // 1/16!
-  p = p * r2 - 1.0 / 87178291200.0;                // -1/14!
-  p = p * r2 + 1.0 / 479001600.0;                  // 1/12!
-  p = p * r2 - 1.0 / 3628800.0;                    // -1/10!
-  p = p * r2 + 1.0 / 40320.0;                      // 1/8!
-  p = p * r2 - 1.0 / 720.0;                        // -1/6!
-  p = p * r2 + 1.0 / 24.0;                         // 1/4!
+  double p = -1.0 / 6402373705728000.0;  // -1/18!
+  p = p * r2 + 1.0 / 20922789888000.0;   // 1/16!
+  p = p * r2 - 1.0 / 87178291200.0;      // -1/14!
+  p = p * r2 + 1.0 / 479001600.0;        // 1/12!
+  p = p * r2 - 1.0 / 3628800.0;          // -1/10!
+  p = p * r2 + 1.0 / 40320.0;            // 1/8!
+  p = p * r2 - 1.0 / 720.0;              // -1/6!
+  p = p * r2 + 1.0 / 24.0;               // 1/4!
   return 1.0 - 0.5 * r2 + r2 * r2 * p;
 }
 
@@ -70,10 +70,22 @@ inline void SinCos(double x, double* sin_x, double* cos_x) {
   const double r = (x - k * kPio2Hi) - k * kPio2Lo;
   const double s = SinPoly(r), c = CosPoly(r);
   switch (static_cast<std::int64_t>(k) & 3) {
-    case 0: *sin_x = s; *cos_x = c; break;
-    case 1: *sin_x = c; *cos_x = -s; break;
-    case 2: *sin_x = -s; *cos_x = -c; break;
-    default: *sin_x = -c; *cos_x = s; break;
+    case 0:
+      *sin_x = s;
+      *cos_x = c;
+      break;
+    case 1:
+      *sin_x = c;
+      *cos_x = -s;
+      break;
+    case 2:
+      *sin_x = -s;
+      *cos_x = -c;
+      break;
+    default:
+      *sin_x = -c;
+      *cos_x = s;
+      break;
   }
 }
 
@@ -86,7 +98,7 @@ inline double Exp(double x) {
   if (x > 709.0) return INFINITY;
   const double k = fast_math_detail::RoundToInt(x * kInvLn2);
   const double r = (x - k * kLn2Hi) - k * kLn2Lo;  // |r| <= ln2 / 2
-  double p = 1.0 / 6227020800.0;  // 1/13!, then Horner down to 1/2!
+  double p = 1.0 / 6227020800.0;                   // 1/13!, then Horner down to 1/2!
   for (double c : {1.0 / 479001600, 1.0 / 39916800, 1.0 / 3628800, 1.0 / 362880, 1.0 / 40320,
                    1.0 / 5040, 1.0 / 720, 1.0 / 120, 1.0 / 24, 1.0 / 6, 0.5}) {
     p = p * r + c;
@@ -130,7 +142,8 @@ inline double ExpFast(double x) {
   const double r = (x - n * (kLn2Hi / 64.0)) - n * (kLn2Lo / 64.0);
   const std::int64_t ni = static_cast<std::int64_t>(n);
   const std::int64_t j = ni & 63, k = (ni - j) / 64;
-  const double p = 1.0 + r + r * r * (0.5 + r * (1.0 / 6 + r * (1.0 / 24 + r * (1.0 / 120 + r * (1.0 / 720)))));
+  const double p =
+      1.0 + r + r * r * (0.5 + r * (1.0 / 6 + r * (1.0 / 24 + r * (1.0 / 120 + r * (1.0 / 720)))));
   double scaled = fast_math_detail::GetExpTable().two_pow[j] * p;
   std::uint64_t bits;
   std::memcpy(&bits, &scaled, sizeof bits);

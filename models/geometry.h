@@ -2,10 +2,9 @@
 // y to the left, REP-103) and the robot frame R (x forward, y left). Metres and radians.
 #pragma once
 
+#include <Eigen/Core>
 #include <cmath>
 #include <numbers>
-
-#include <Eigen/Core>
 
 #include "models/fast_math.h"
 

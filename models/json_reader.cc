@@ -25,7 +25,9 @@ void JsonObject::Fail(std::string_view key, std::string_view problem) const {
   throw InputError(file_ + ": " + PathOf(key) + ": " + std::string(problem));
 }
 
-bool JsonObject::Has(std::string_view key) const { return value_->contains(key); }
+bool JsonObject::Has(std::string_view key) const {
+  return value_->contains(key);
+}
 
 const nlohmann::json& JsonObject::Get(std::string_view key) const {
   auto it = value_->find(key);
@@ -146,7 +148,8 @@ JsonDocument JsonDocument::Parse(std::string_view text, std::string origin) {
     const auto open = what.find('\''), close = what.rfind('\'');
     if (open != std::string::npos && close > open) {
       const auto at = text.find(what.substr(open + 1, close - open - 1));
-      if (at != std::string_view::npos) where = " at " + LineAndColumn(text, at + 2) + KeyBefore(text, at);
+      if (at != std::string_view::npos)
+        where = " at " + LineAndColumn(text, at + 2) + KeyBefore(text, at);
     }
     throw InputError(doc.origin_ + ": invalid JSON" + where + ": " + what);
   }
@@ -164,6 +167,8 @@ JsonDocument JsonDocument::Load(const std::filesystem::path& file) {
   return Parse(buffer.str(), file.string());
 }
 
-JsonObject JsonDocument::Root() const { return JsonObject(&tree_, origin_, ""); }
+JsonObject JsonDocument::Root() const {
+  return JsonObject(&tree_, origin_, "");
+}
 
 }  // namespace foresight

@@ -21,8 +21,8 @@ void KickModel::Validate() const {
     const KickSpec& kick = kicks[i];
     const std::string at = "kicks[" + std::to_string(i) + "].";
     if (kick.name.empty() || kick.name == "none") {
-      throw InputError(at + "name: must be a non-empty name other than 'none', got '" +
-                       kick.name + "'");
+      throw InputError(at + "name: must be a non-empty name other than 'none', got '" + kick.name +
+                       "'");
     }
     for (std::size_t j = 0; j < i; ++j) {
       if (kicks[j].name == kick.name) throw InputError(at + "name: duplicate '" + kick.name + "'");

@@ -28,8 +28,7 @@ std::string CarpetText(const FieldSpec& field) {
 StateEstimate ReadState(const JsonObject& root) {
   StateEstimate state;
   JsonObject robot = root.Object("robot");
-  robot.RejectUnknownKeys(
-      {"x_m", "y_m", "theta_deg", "sigma_x_m", "sigma_y_m", "sigma_theta_deg"});
+  robot.RejectUnknownKeys({"x_m", "y_m", "theta_deg", "sigma_x_m", "sigma_y_m", "sigma_theta_deg"});
   state.robot.p_F = Vec2(robot.Number("x_m"), robot.Number("y_m"));
   state.robot.theta_rad = robot.Number("theta_deg") * kDegToRad;
   state.sigma_robot_x_m = robot.NumberOr("sigma_x_m", 0.0);
@@ -46,8 +45,8 @@ StateEstimate ReadState(const JsonObject& root) {
 
 // Loads a file the situation names; a missing one is reported against the naming field.
 template <typename Loader>
-auto LoadReferenced(const JsonObject& root, std::string_view key,
-                    const std::filesystem::path& file, Loader load) {
+auto LoadReferenced(const JsonObject& root, std::string_view key, const std::filesystem::path& file,
+                    Loader load) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) {
     root.Fail(key, "refers to " + file.string() + ", which does not exist");
@@ -65,13 +64,13 @@ void Situation::Validate() const {
   RequireNonNegative("ball.sigma_x_m", state.sigma_ball_x_m);
   RequireNonNegative("ball.sigma_y_m", state.sigma_ball_y_m);
   if (!OnCarpet(field, state.robot.p_F)) {
-    throw InputError("robot: position " + PointText(state.robot.p_F) +
-                     " is outside the carpet (" + CarpetText(field) + ")");
+    throw InputError("robot: position " + PointText(state.robot.p_F) + " is outside the carpet (" +
+                     CarpetText(field) + ")");
   }
   const Vec2 ball = state.MeanBallInField();
   if (!OnCarpet(field, ball)) {
-    throw InputError("ball: position " + PointText(ball) + " in the field frame is outside the carpet (" +
-                     CarpetText(field) + ")");
+    throw InputError("ball: position " + PointText(ball) +
+                     " in the field frame is outside the carpet (" + CarpetText(field) + ")");
   }
   for (std::size_t i = 0; i < obstacles.size(); ++i) {
     const std::string at = "obstacles[" + std::to_string(i) + "]";
@@ -87,8 +86,7 @@ void Situation::Validate() const {
   }
 }
 
-Situation LoadSituation(const std::filesystem::path& file,
-                        const std::filesystem::path& models_dir,
+Situation LoadSituation(const std::filesystem::path& file, const std::filesystem::path& models_dir,
                         const SituationOverrides& overrides) {
   JsonDocument doc = JsonDocument::Load(file);
   JsonObject root = doc.Root();
@@ -115,8 +113,8 @@ Situation LoadSituation(const std::filesystem::path& file,
                                                "evaluation", dir, models_dir);
   std::error_code ec;
   if (!root.Has("evaluation") && !std::filesystem::is_regular_file(situation.evaluation_file, ec)) {
-    throw InputError(file.string() + ": no evaluation for field '" + situation.field.name +
-                     "' (" + situation.evaluation_file.string() +
+    throw InputError(file.string() + ": no evaluation for field '" + situation.field.name + "' (" +
+                     situation.evaluation_file.string() +
                      " does not exist); name one with \"evaluation\"");
   }
   situation.evaluation =

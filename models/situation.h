@@ -51,8 +51,7 @@ struct SituationOverrides {
   std::filesystem::path kicks_file;  // replaces the situation's kick model when not empty
 };
 
-Situation LoadSituation(const std::filesystem::path& file,
-                        const std::filesystem::path& models_dir,
+Situation LoadSituation(const std::filesystem::path& file, const std::filesystem::path& models_dir,
                         const SituationOverrides& overrides = {});
 
 }  // namespace foresight

@@ -6,9 +6,9 @@
 
 namespace foresight {
 
-CoarseActionEvaluator::CoarseActionEvaluator(const Situation& situation,
-                                             const CoarseWorld& world, const PositionValue& value,
-                                             int samples, std::uint64_t seed)
+CoarseActionEvaluator::CoarseActionEvaluator(const Situation& situation, const CoarseWorld& world,
+                                             const PositionValue& value, int samples,
+                                             std::uint64_t seed)
     : ActionEvaluator(situation), world_(world), value_(value), sample_count_(samples) {
   std::vector<DrawnSample> drawn;
   DrawSamples(situation.state, seed, samples, drawn);
@@ -27,7 +27,8 @@ CoarseActionEvaluator::CoarseActionEvaluator(const Situation& situation,
 Outcome CoarseActionEvaluator::SimulateOne(int kick_index, std::size_t sample, double cos_rho,
                                            double sin_rho) const {
   if (kick_index < 0) return RollBall(world_, p_F_ball_[sample], Vec2(1.0, 0.0), 0.0);
-  const Launch& launch = launches_[static_cast<std::size_t>(kick_index) * p_F_ball_.size() + sample];
+  const Launch& launch =
+      launches_[static_cast<std::size_t>(kick_index) * p_F_ball_.size() + sample];
   const Vec2& u = launch.direction_F;
   const Vec2 direction(cos_rho * u.x() - sin_rho * u.y(), sin_rho * u.x() + cos_rho * u.y());
   return RollBall(world_, p_F_ball_[sample], direction, launch.speed_mps);

@@ -40,8 +40,8 @@ class CoarseActionEvaluator final : public ActionEvaluator {
   const CoarseWorld& world_;
   const PositionValue& value_;
   int sample_count_ = 0;
-  std::vector<Vec2> p_F_ball_;     // per sample
-  std::vector<Launch> launches_;   // per kick, then per sample: [kick * samples + i]
+  std::vector<Vec2> p_F_ball_;    // per sample
+  std::vector<Launch> launches_;  // per kick, then per sample: [kick * samples + i]
 };
 
 }  // namespace foresight

@@ -35,10 +35,10 @@ struct GoalShapes {
 struct CoarseWorld {
   double ball_radius_m = 0.0;
   double deceleration_mps2 = 0.0;
-  double out_x_m = 0.0;           // |x| beyond this: over a goal line
-  double out_y_m = 0.0;           // |y| beyond this: over a side line
-  double goal_half_width_m = 0.0;  // |y| below this when crossing a goal line: a goal
-  double goal_depth_x_m = 0.0;     // x of the back nets
+  double out_x_m = 0.0;             // |x| beyond this: over a goal line
+  double out_y_m = 0.0;             // |y| beyond this: over a side line
+  double goal_half_width_m = 0.0;   // |y| below this when crossing a goal line: a goal
+  double goal_depth_x_m = 0.0;      // x of the back nets
   std::array<GoalShapes, 2> goals;  // [0] opponent (+x), [1] own (-x)
   std::vector<CircleShape> obstacles;
 

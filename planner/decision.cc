@@ -50,7 +50,10 @@ int LeastRotationChoice(const Context& ctx, const std::vector<KickOption>& optio
       const KickOption& o = options[i];
       const ActionEvaluation& e = o.choice.evaluation;
       if (!o.considered || !(need_improvement ? ctx.Improves(e) : ctx.Acceptable(e))) continue;
-      if (best < 0) { best = static_cast<int>(i); continue; }
+      if (best < 0) {
+        best = static_cast<int>(i);
+        continue;
+      }
       const RotationChoice& b = options[static_cast<std::size_t>(best)].choice;
       const double da = std::abs(o.choice.rotation_rad), db = std::abs(b.rotation_rad);
       if (da < db || (da == db && e.trimmed_utility > b.evaluation.trimmed_utility)) {
@@ -66,7 +69,8 @@ int BestUtilityChoice(const std::vector<KickOption>& options) {
   int best = -1;
   for (std::size_t i = 0; i < options.size(); ++i) {
     if (!options[i].considered) continue;
-    if (best < 0 || BetterRotation(options[i].choice, options[static_cast<std::size_t>(best)].choice)) {
+    if (best < 0 ||
+        BetterRotation(options[i].choice, options[static_cast<std::size_t>(best)].choice)) {
       best = static_cast<int>(i);
     }
   }
@@ -96,7 +100,8 @@ void FallBack(Context& ctx, Decision& decision) {
           return e;
         },
         ctx.search);
-    option.choice = {found.rotation_rad, ctx.evaluator.Evaluate(option.kick_index, found.rotation_rad)};
+    option.choice = {found.rotation_rad,
+                     ctx.evaluator.Evaluate(option.kick_index, found.rotation_rad)};
     const double score = FallbackScore(option.choice.evaluation, goal_value);
     if (best == nullptr || score > best_score) best = &option, best_score = score;
   }
@@ -111,7 +116,8 @@ void FallBack(Context& ctx, Decision& decision) {
 void OptimiseEveryKick(Context& ctx, Decision& decision, int only_kick) {
   for (KickOption& option : decision.kicks) {
     option.considered = only_kick < 0 || option.kick_index == only_kick;
-    if (option.considered) option.choice = BestRotation(ctx.ObjectiveFor(option.kick_index), ctx.search);
+    if (option.considered)
+      option.choice = BestRotation(ctx.ObjectiveFor(option.kick_index), ctx.search);
   }
 }
 
@@ -143,7 +149,9 @@ void DecideFast(Context& ctx, Decision& decision) {
     // Nothing improves on leaving the ball: the least turn that makes some kick acceptable.
     FindLeastTurns(ctx, decision, [&ctx](const ActionEvaluation& e) { return ctx.Acceptable(e); });
     chosen = LeastRotationChoice(ctx, decision.kicks);
-    if (chosen >= 0) decision.note = "no kick improves on leaving the ball; took the least turn to an acceptable kick";
+    if (chosen >= 0)
+      decision.note =
+          "no kick improves on leaving the ball; took the least turn to an acceptable kick";
   }
   if (chosen >= 0) {
     decision.kick_index = decision.kicks[static_cast<std::size_t>(chosen)].kick_index;
@@ -156,9 +164,10 @@ void DecideFast(Context& ctx, Decision& decision) {
 
 void DecideOptimal(Context& ctx, Decision& decision, bool least_rotation, int only_kick) {
   OptimiseEveryKick(ctx, decision, only_kick);
-  const int chosen = least_rotation ? LeastRotationChoice(ctx, decision.kicks)
-                                    : BestUtilityChoice(decision.kicks);
-  const bool usable = chosen >= 0 &&
+  const int chosen =
+      least_rotation ? LeastRotationChoice(ctx, decision.kicks) : BestUtilityChoice(decision.kicks);
+  const bool usable =
+      chosen >= 0 &&
       ctx.Acceptable(decision.kicks[static_cast<std::size_t>(chosen)].choice.evaluation);
   if (!usable) {
     FallBack(ctx, decision);
@@ -184,9 +193,15 @@ Decision Decide(ActionEvaluator& evaluator, Strategy strategy) {
   }
 
   switch (strategy) {
-    case Strategy::kFast: DecideFast(ctx, decision); break;
-    case Strategy::kOptimalValue: DecideOptimal(ctx, decision, false, -1); break;
-    case Strategy::kOptimalAll: DecideOptimal(ctx, decision, true, -1); break;
+    case Strategy::kFast:
+      DecideFast(ctx, decision);
+      break;
+    case Strategy::kOptimalValue:
+      DecideOptimal(ctx, decision, false, -1);
+      break;
+    case Strategy::kOptimalAll:
+      DecideOptimal(ctx, decision, true, -1);
+      break;
     case Strategy::kOptimalOne:
       DecideOptimal(ctx, decision, false, ForwardKick(situation.kicks));
       break;
@@ -194,7 +209,8 @@ Decision Decide(ActionEvaluator& evaluator, Strategy strategy) {
       for (KickOption& option : decision.kicks) {
         option.choice = {0.0, evaluator.Evaluate(option.kick_index, 0.0)};
       }
-      const NaothChoice choice = ApplyNaothRule(situation.evaluation.naoth_rule, decision.kicks, ctx.none);
+      const NaothChoice choice =
+          ApplyNaothRule(situation.evaluation.naoth_rule, decision.kicks, ctx.none);
       decision.kick_index = choice.kick_index;
       decision.rotation_rad = choice.kick_index < 0 ? FaceGoalRotation(situation) : 0.0;
       break;

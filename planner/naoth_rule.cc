@@ -19,7 +19,10 @@ NaothChoice ApplyNaothRule(const NaothRuleParams& params, const std::vector<Kick
   for (const KickOption& k : kicks) {
     const ActionEvaluation& e = k.choice.evaluation;
     if (!Passes(params, e) || e.p_opp_goal < params.goal_preference_share) continue;
-    if (goal_kick == nullptr) { goal_kick = &k; continue; }
+    if (goal_kick == nullptr) {
+      goal_kick = &k;
+      continue;
+    }
     const ActionEvaluation& g = goal_kick->choice.evaluation;
     const int goals = e.Count(Category::kOppGoal), best_goals = g.Count(Category::kOppGoal);
     if (goals > best_goals || (goals == best_goals && e.utility > g.utility)) goal_kick = &k;

@@ -1,9 +1,9 @@
 #include "planner/position_value.h"
 
-#include "models/fast_math.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "models/fast_math.h"
 
 namespace foresight {
 

@@ -1,9 +1,9 @@
 #include "planner/random.h"
 
-#include "models/fast_math.h"
-
 #include <array>
 #include <cmath>
+
+#include "models/fast_math.h"
 
 namespace foresight {
 

@@ -23,7 +23,8 @@ inline std::uint64_t Mix64(std::uint64_t z) {
 // Key of stream `index` of a run seeded with `seed`; `domain` separates the uses of one seed
 // (e.g. coarse samples and physics trials of the same run).
 inline std::uint64_t StreamKey(std::uint64_t seed, std::uint64_t index, std::uint64_t domain = 0) {
-  return Mix64(Mix64(seed + kGoldenGamma) ^ Mix64(index * kGoldenGamma + domain * 0xD1B54A32D192ED03ULL));
+  return Mix64(Mix64(seed + kGoldenGamma) ^
+               Mix64(index * kGoldenGamma + domain * 0xD1B54A32D192ED03ULL));
 }
 
 namespace random_detail {

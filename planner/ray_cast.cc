@@ -18,7 +18,8 @@ double RayCapsuleEntry(const Vec2& start, const Vec2& dir, const Vec2& a, const 
   if (from_axis.squaredNorm() <= radius * radius) {  // starts in contact
     return from_axis.dot(dir) < 0.0 ? 0.0 : kNoHit;
   }
-  double best = std::min(RayCircleEntry(start, dir, a, radius), RayCircleEntry(start, dir, b, radius));
+  double best =
+      std::min(RayCircleEntry(start, dir, a, radius), RayCircleEntry(start, dir, b, radius));
   const Vec2 normal(-u.y(), u.x());
   const double offset = (start - a).dot(normal);  // signed distance of the start from the line
   const double approach = dir.dot(normal);

@@ -85,14 +85,17 @@ RotationChoice TowardsZero(const RotationObjective& evaluate, RotationChoice bes
   const double target = best.evaluation.trimmed_utility - kUtilityTolerance;
   while (best.rotation_rad != 0.0) {
     const double toward = best.rotation_rad > 0.0 ? std::max(0.0, best.rotation_rad - step)
-                                                   : std::min(0.0, best.rotation_rad + step);
+                                                  : std::min(0.0, best.rotation_rad + step);
     RotationChoice trial = At(evaluate, toward);
     if (trial.evaluation.trimmed_utility < target) {
       double fail = toward;
       for (int i = 0; i < levels + 2; ++i) {
         const double mid = 0.5 * (fail + best.rotation_rad);
         RotationChoice probe = At(evaluate, mid);
-        if (probe.evaluation.trimmed_utility >= target) best = probe; else fail = mid;
+        if (probe.evaluation.trimmed_utility >= target)
+          best = probe;
+        else
+          fail = mid;
       }
       return best;
     }
@@ -121,16 +124,17 @@ RotationChoice BestRotation(const RotationObjective& evaluate, const RotationSea
   RotationChoice best = grid[static_cast<std::size_t>(maxima.front())];
   const int candidates = std::min<int>(params.refine_candidates, static_cast<int>(maxima.size()));
   for (int c = 0; c < candidates; ++c) {
-    RotationChoice refined = Refine(evaluate, grid[static_cast<std::size_t>(maxima[c])], step,
-                                    params.refine_levels);
+    RotationChoice refined =
+        Refine(evaluate, grid[static_cast<std::size_t>(maxima[c])], step, params.refine_levels);
     if (BetterRotation(refined, best)) best = refined;
   }
   return TowardsZero(evaluate, best, step, params.refine_levels);
 }
 
 std::optional<RotationChoice> LeastAcceptableRotation(
-    const RotationObjective& evaluate, const std::function<bool(const ActionEvaluation&)>& acceptable,
-    double sign, const RotationSearchParams& params) {
+    const RotationObjective& evaluate,
+    const std::function<bool(const ActionEvaluation&)>& acceptable, double sign,
+    const RotationSearchParams& params) {
   assert(params.grid_step_rad > 0.0);
   const int n = GridSize(params);
   const double step = 2.0 * kPi / n;
@@ -145,7 +149,10 @@ std::optional<RotationChoice> LeastAcceptableRotation(
     }
     for (int i = 0; i < params.refine_levels + 2; ++i) {
       RotationChoice probe = At(evaluate, 0.5 * (fail + trial.rotation_rad));
-      if (acceptable(probe.evaluation)) trial = probe; else fail = probe.rotation_rad;
+      if (acceptable(probe.evaluation))
+        trial = probe;
+      else
+        fail = probe.rotation_rad;
     }
     return trial;
   }

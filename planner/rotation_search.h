@@ -34,8 +34,9 @@ RotationChoice BestRotation(const RotationObjective& evaluate, const RotationSea
 // Smallest |rho| with rho in direction `sign` (+1 counter-clockwise, -1 clockwise), up to pi,
 // for which `acceptable` holds; nullopt if no rotation in that direction is acceptable.
 std::optional<RotationChoice> LeastAcceptableRotation(
-    const RotationObjective& evaluate, const std::function<bool(const ActionEvaluation&)>& acceptable,
-    double sign, const RotationSearchParams& params);
+    const RotationObjective& evaluate,
+    const std::function<bool(const ActionEvaluation&)>& acceptable, double sign,
+    const RotationSearchParams& params);
 
 // True when a is a better choice than b: higher trimmed utility, then the smaller turn.
 bool BetterRotation(const RotationChoice& a, const RotationChoice& b);

@@ -23,7 +23,8 @@ DrawnSample DrawSample(const StateEstimate& estimate, std::uint64_t seed, std::u
 void DrawSamples(const StateEstimate& estimate, std::uint64_t seed, int count,
                  std::vector<DrawnSample>& out) {
   out.resize(static_cast<std::size_t>(count));
-  for (int i = 0; i < count; ++i) out[i] = DrawSample(estimate, seed, static_cast<std::uint64_t>(i));
+  for (int i = 0; i < count; ++i)
+    out[i] = DrawSample(estimate, seed, static_cast<std::uint64_t>(i));
 }
 
 ConcreteAction MakeAction(const KickModel& kicks, int kick_index, double rotation_rad,
@@ -35,7 +36,8 @@ ConcreteAction MakeAction(const KickModel& kicks, int kick_index, double rotatio
   if (kick_index >= 0) {
     const KickSpec& kick = kicks.kicks[static_cast<std::size_t>(kick_index)];
     action.launch_speed_mps = kick.speed_mps + kick.sigma_speed_mps * sample.z_speed;
-    action.launch_direction_rad = kick.direction_rad + kick.sigma_direction_rad * sample.z_direction;
+    action.launch_direction_rad =
+        kick.direction_rad + kick.sigma_direction_rad * sample.z_direction;
   }
   return action;
 }

@@ -4,11 +4,16 @@ namespace foresight {
 
 std::string_view StrategyName(Strategy strategy) {
   switch (strategy) {
-    case Strategy::kFast: return "fast";
-    case Strategy::kOptimalValue: return "optimal_value";
-    case Strategy::kOptimalAll: return "optimal_all";
-    case Strategy::kOptimalOne: return "optimal_one";
-    case Strategy::kNaoth: return "naoth";
+    case Strategy::kFast:
+      return "fast";
+    case Strategy::kOptimalValue:
+      return "optimal_value";
+    case Strategy::kOptimalAll:
+      return "optimal_all";
+    case Strategy::kOptimalOne:
+      return "optimal_one";
+    case Strategy::kNaoth:
+      return "naoth";
   }
   return "?";
 }

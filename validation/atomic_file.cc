@@ -13,7 +13,8 @@ void WriteFileAtomically(const std::filesystem::path& file, std::string_view con
   const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : ".";
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec)) {
-    throw InputError(file.string() + ": cannot write: directory " + dir.string() + " does not exist");
+    throw InputError(file.string() + ": cannot write: directory " + dir.string() +
+                     " does not exist");
   }
   std::filesystem::path temp = file;
   temp += ".tmp." + std::to_string(::getpid());

@@ -15,7 +15,8 @@ void FieldCanvas::DrawField() {
   svg_.Rect(0, 0, legend_x() + 10000, height(), "fill:#ffffff");
   svg_.Rect(X(-field_.CarpetHalfLength()), Y(field_.CarpetHalfWidth()), Px(field_.carpet_length_m),
             Px(field_.carpet_width_m), "fill:#3f9b4b");
-  const std::string line = "fill:none;stroke:#ffffff;stroke-width:" + SvgWriter::Num(Px(field_.line_width_m));
+  const std::string line =
+      "fill:none;stroke:#ffffff;stroke-width:" + SvgWriter::Num(Px(field_.line_width_m));
   const double hx = field_.HalfLength(), hy = field_.HalfWidth();
   svg_.Rect(X(-hx), Y(hy), Px(field_.field_length_m), Px(field_.field_width_m), line);
   svg_.Line(X(0), Y(hy), X(0), Y(-hy), line);
@@ -43,7 +44,8 @@ void FieldCanvas::DrawRobot(const Pose2& pose, double radius_m, std::string_view
   const std::string style = "fill:" + std::string(colour) + ";stroke:#111;stroke-width:1.5";
   svg_.Circle(X(pose.p_F.x()), Y(pose.p_F.y()), Px(radius_m), style);
   const Vec2 nose = pose.p_F + radius_m * UnitVector(pose.theta_rad);
-  svg_.Line(X(pose.p_F.x()), Y(pose.p_F.y()), X(nose.x()), Y(nose.y()), "stroke:#111;stroke-width:2.5");
+  svg_.Line(X(pose.p_F.x()), Y(pose.p_F.y()), X(nose.x()), Y(nose.y()),
+            "stroke:#111;stroke-width:2.5");
 }
 
 void FieldCanvas::DrawDot(const Vec2& p_F, double radius_px, std::string_view style) {

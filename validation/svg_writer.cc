@@ -21,11 +21,20 @@ std::string SvgWriter::Escape(std::string_view text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -42,8 +51,8 @@ void SvgWriter::Circle(double cx, double cy, double r, std::string_view style) {
 }
 
 void SvgWriter::Line(double x1, double y1, double x2, double y2, std::string_view style) {
-  body_ << "<line x1=\"" << Num(x1) << "\" y1=\"" << Num(y1) << "\" x2=\"" << Num(x2)
-        << "\" y2=\"" << Num(y2) << "\" style=\"" << style << "\"/>\n";
+  body_ << "<line x1=\"" << Num(x1) << "\" y1=\"" << Num(y1) << "\" x2=\"" << Num(x2) << "\" y2=\""
+        << Num(y2) << "\" style=\"" << style << "\"/>\n";
 }
 
 void SvgWriter::Text(double x, double y, std::string_view text, std::string_view style) {
@@ -51,9 +60,15 @@ void SvgWriter::Text(double x, double y, std::string_view text, std::string_view
         << Escape(text) << "</text>\n";
 }
 
-void SvgWriter::OpenGroup(std::string_view attributes) { body_ << "<g " << attributes << ">\n"; }
-void SvgWriter::CloseGroup() { body_ << "</g>\n"; }
-void SvgWriter::Title(std::string_view text) { body_ << "<title>" << Escape(text) << "</title>\n"; }
+void SvgWriter::OpenGroup(std::string_view attributes) {
+  body_ << "<g " << attributes << ">\n";
+}
+void SvgWriter::CloseGroup() {
+  body_ << "</g>\n";
+}
+void SvgWriter::Title(std::string_view text) {
+  body_ << "<title>" << Escape(text) << "</title>\n";
+}
 
 std::string SvgWriter::Finish() {
   std::ostringstream doc;

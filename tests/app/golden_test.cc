@@ -19,8 +19,9 @@ TEST_F(GoldenTest, NearGoalCornerOptimalAllSeed5) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   nlohmann::ordered_json actual = nlohmann::ordered_json::parse(run.out);
   actual["situation"].erase("file");  // the path differs between checkouts
-  nlohmann::ordered_json golden = nlohmann::ordered_json::parse(
-      ReadFile(std::filesystem::path(FORESIGHT_TEST_SOURCE_DIR) / "app/golden/near_goal_corner_optimal_all_seed5.json"));
+  nlohmann::ordered_json golden =
+      nlohmann::ordered_json::parse(ReadFile(std::filesystem::path(FORESIGHT_TEST_SOURCE_DIR) /
+                                             "app/golden/near_goal_corner_optimal_all_seed5.json"));
   golden.erase("regenerate");
   EXPECT_EQ(actual.dump(2), golden.dump(2));
 }

@@ -12,7 +12,8 @@ namespace {
 
 class BallRollTest : public ::testing::Test {
  protected:
-  BallRollTest() : situation_(testing::MakeSituation({})), world_(CoarseWorld::Build(MakeScene(situation_))) {}
+  BallRollTest()
+      : situation_(testing::MakeSituation({})), world_(CoarseWorld::Build(MakeScene(situation_))) {}
 
   Outcome Roll(Vec2 start, double heading_deg, double speed) const {
     return RollBall(world_, start, UnitVector(heading_deg * kDegToRad), speed);
@@ -58,7 +59,8 @@ TEST_F(BallRollTest, ShotIntoGoalStopsAtBackNetAndCountsAsGoal) {
   const Outcome o = Roll(Vec2(3.0, 0.1), 0.0, 5.0);
   EXPECT_EQ(o.category, Category::kOppGoal);
   EXPECT_EQ(o.first_contact, Contact::kNet);
-  EXPECT_NEAR(o.p_F_rest.x(), g.post_centre_x_m + g.net_depth_m - situation_.field.ball.radius_m, 1e-12);
+  EXPECT_NEAR(o.p_F_rest.x(), g.post_centre_x_m + g.net_depth_m - situation_.field.ball.radius_m,
+              1e-12);
   EXPECT_NEAR(o.p_F_rest.y(), 0.1, 1e-12);
 }
 

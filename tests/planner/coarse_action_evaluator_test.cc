@@ -22,7 +22,8 @@ TEST(CoarseActionEvaluatorTest, AgreesWithTheSeamEvaluator) {
                                  .theta_deg = 360 * rng.NextUniform() - 180});
     } while ((Vec2(spec.x_m, spec.y_m) - Vec2(3.9, 0.3)).norm() < 0.6 ||
              (Vec2(spec.x_m, spec.y_m) - Vec2(-3.5, -0.5)).norm() < 0.6);
-    const Situation s = testing::MakeSituation(spec, {{Vec2(3.9, 0.3), 0.15}, {Vec2(-3.5, -0.5), 0.2}});
+    const Situation s =
+        testing::MakeSituation(spec, {{Vec2(3.9, 0.3), 0.15}, {Vec2(-3.5, -0.5), 0.2}});
     const CoarsePlanner planner(s);
     CoarseActionEvaluator fast = planner.MakeEvaluator(30, trial);
     SeamActionEvaluator seam = planner.MakeSeamEvaluator(30, trial);

@@ -50,7 +50,8 @@ TEST(DecisionTest, NextToTheSideLineTheKickTowardsTheLineIsRejected) {
 }
 
 TEST(DecisionTest, FacingTheOwnGoalTheRobotTurnsOrKicksSideways) {
-  const Situation s = testing::MakeSituation(testing::Uncertain({.x_m = -3.3, .y_m = 0.2, .theta_deg = 180}));
+  const Situation s =
+      testing::MakeSituation(testing::Uncertain({.x_m = -3.3, .y_m = 0.2, .theta_deg = 180}));
   const CoarsePlanner planner(s);
   CoarseActionEvaluator evaluator = planner.MakeEvaluator(30, 1);
   EXPECT_GT(evaluator.Evaluate(kForward, 0.0).p_own_goal, 0.3);  // the trap is real
@@ -78,9 +79,10 @@ TEST(DecisionTest, ObstacleInTheWayIsAvoided) {
 TEST(DecisionTest, OptimalOneUsesOnlyTheForwardKick) {
   RandomStream rng(StreamKey(5, 0));
   for (int i = 0; i < 30; ++i) {
-    const Situation s = testing::MakeSituation(testing::Uncertain(
-        {.x_m = -4.2 + 8.4 * rng.NextUniform(), .y_m = -2.8 + 5.6 * rng.NextUniform(),
-         .theta_deg = 360 * rng.NextUniform() - 180}));
+    const Situation s =
+        testing::MakeSituation(testing::Uncertain({.x_m = -4.2 + 8.4 * rng.NextUniform(),
+                                                   .y_m = -2.8 + 5.6 * rng.NextUniform(),
+                                                   .theta_deg = 360 * rng.NextUniform() - 180}));
     const Decision d = DecideOn(s, Strategy::kOptimalOne, i);
     EXPECT_EQ(d.kick_index, kForward);
     EXPECT_TRUE(d.kicks[kForward].considered);
@@ -96,9 +98,10 @@ TEST(DecisionTest, StrategyInvariantsOnRandomSituations) {
   RandomStream rng(StreamKey(77, 0));
   int turned = 0;
   for (int i = 0; i < 60; ++i) {
-    const Situation s = testing::MakeSituation(testing::Uncertain(
-        {.x_m = -4.3 + 8.6 * rng.NextUniform(), .y_m = -2.9 + 5.8 * rng.NextUniform(),
-         .theta_deg = 360 * rng.NextUniform() - 180}));
+    const Situation s =
+        testing::MakeSituation(testing::Uncertain({.x_m = -4.3 + 8.6 * rng.NextUniform(),
+                                                   .y_m = -2.9 + 5.8 * rng.NextUniform(),
+                                                   .theta_deg = 360 * rng.NextUniform() - 180}));
     const Decision fast = DecideOn(s, Strategy::kFast, i);
     const Decision value = DecideOn(s, Strategy::kOptimalValue, i);
     const Decision all = DecideOn(s, Strategy::kOptimalAll, i);
@@ -120,7 +123,8 @@ TEST(DecisionTest, StrategyInvariantsOnRandomSituations) {
 }
 
 TEST(DecisionTest, SameSeedSameDecision) {
-  const Situation s = testing::MakeSituation(testing::Uncertain({.x_m = 3.6, .y_m = 1.9, .theta_deg = 10}));
+  const Situation s =
+      testing::MakeSituation(testing::Uncertain({.x_m = 3.6, .y_m = 1.9, .theta_deg = 10}));
   for (Strategy strategy : AllStrategies()) {
     const Decision a = DecideOn(s, strategy, 42), b = DecideOn(s, strategy, 42);
     EXPECT_EQ(a.kick_index, b.kick_index);

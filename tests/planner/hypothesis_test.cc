@@ -8,7 +8,9 @@
 namespace foresight {
 namespace {
 
-EvaluationParams Params() { return testing::MakeSituation({}).evaluation; }
+EvaluationParams Params() {
+  return testing::MakeSituation({}).evaluation;
+}
 
 ActionEvaluation Make(int infield, double value_each, int goal, int own, int out) {
   HypothesisAccumulator h;

@@ -28,14 +28,16 @@ std::vector<KickOption> Kicks(std::vector<ActionEvaluation> evaluations) {
 const NaothRuleParams kRule{0.85, 0.30};
 
 TEST(NaothRuleTest, MostGoalSamplesWinAboveThePreference) {
-  const auto kicks = Kicks({Counts(20, -1.0, 10, 0, 0), Counts(18, -1.5, 12, 0, 0), Counts(30, -1.9, 0, 0, 0)});
+  const auto kicks =
+      Kicks({Counts(20, -1.0, 10, 0, 0), Counts(18, -1.5, 12, 0, 0), Counts(30, -1.9, 0, 0, 0)});
   EXPECT_EQ(ApplyNaothRule(kRule, kicks, Counts(30, 0.0, 0, 0, 0)).kick_index, 1);
 }
 
 TEST(NaothRuleTest, AnOwnGoalOrTooFewAcceptableSamplesDropAKick) {
   // Kick 0 has 29 goals but one own goal; kick 1 has 26 of 30 acceptable (0.867 > 0.85) and
   // kick 2 only 25 (0.833): kick 2 is dropped although its potential is the lowest.
-  const auto kicks = Kicks({Counts(0, 0.0, 29, 1, 0), Counts(26, -1.0, 0, 0, 4), Counts(25, -1.8, 0, 0, 5)});
+  const auto kicks =
+      Kicks({Counts(0, 0.0, 29, 1, 0), Counts(26, -1.0, 0, 0, 4), Counts(25, -1.8, 0, 0, 5)});
   EXPECT_EQ(ApplyNaothRule(kRule, kicks, Counts(30, 0.0, 0, 0, 0)).kick_index, 1);
 }
 
@@ -46,7 +48,8 @@ TEST(NaothRuleTest, NoneWinsWhenNoKickLowersThePotential) {
 
 TEST(NaothRuleTest, FaceGoalRotationPointsAtTheGoalCentre) {
   // Robot at the centre spot facing +y, ball at its feet: the goal is 90 deg clockwise.
-  const Situation s = testing::MakeSituation({.x_m = 0, .y_m = 0, .theta_deg = 90, .ball_x_m = 0.0});
+  const Situation s =
+      testing::MakeSituation({.x_m = 0, .y_m = 0, .theta_deg = 90, .ball_x_m = 0.0});
   EXPECT_NEAR(FaceGoalRotation(s), -kPi / 2, 1e-12);
 }
 

@@ -30,7 +30,7 @@ double MarchCapsule(const Vec2& start, const Vec2& dir, const Vec2& a, const Vec
 
 TEST(RayCastTest, CircleEntryIsExact) {
   EXPECT_DOUBLE_EQ(RayCircleEntry(Vec2(0, 0), Vec2(1, 0), Vec2(3, 0), 1.0), 2.0);
-  EXPECT_EQ(RayCircleEntry(Vec2(0, 0), Vec2(-1, 0), Vec2(3, 0), 1.0), kNoHit);  // away
+  EXPECT_EQ(RayCircleEntry(Vec2(0, 0), Vec2(-1, 0), Vec2(3, 0), 1.0), kNoHit);    // away
   EXPECT_EQ(RayCircleEntry(Vec2(0, 0), Vec2(1, 0), Vec2(3, 1.01), 1.0), kNoHit);  // misses
   EXPECT_EQ(RayCircleEntry(Vec2(2.5, 0.5), Vec2(1, 0), Vec2(3, 0), 1.0), 0.0);  // in, going deeper
   EXPECT_EQ(RayCircleEntry(Vec2(3.5, 0.5), Vec2(1, 0), Vec2(3, 0), 1.0), kNoHit);  // in, leaving
@@ -42,12 +42,15 @@ TEST(RayCastTest, CapsuleEntryAgreesWithMarching) {
   for (int i = 0; i < 300; ++i) {
     const Vec2 start(4.0 * rng.NextUniform() - 2.0, 4.0 * rng.NextUniform() - 2.0);
     const Vec2 dir = UnitVector(2.0 * kPi * rng.NextUniform());
-    const Vec2 a(rng.NextUniform(), rng.NextUniform()), b(rng.NextUniform() + 0.5, -rng.NextUniform());
+    const Vec2 a(rng.NextUniform(), rng.NextUniform()),
+        b(rng.NextUniform() + 0.5, -rng.NextUniform());
     const double r = 0.05 + 0.2 * rng.NextUniform();
     const double exact = RayCapsuleEntry(start, dir, a, b, r);
     const double marched = MarchCapsule(start, dir, a, b, r);
     if (marched == kNoHit) {
-      EXPECT_TRUE(exact == kNoHit || exact > 9.999) << i << " exact " << exact << " start " << start.transpose() << " dir " << dir.transpose() << " a " << a.transpose() << " b " << b.transpose() << " r " << r;
+      EXPECT_TRUE(exact == kNoHit || exact > 9.999)
+          << i << " exact " << exact << " start " << start.transpose() << " dir " << dir.transpose()
+          << " a " << a.transpose() << " b " << b.transpose() << " r " << r;
     } else {
       ++hits;
       EXPECT_NEAR(exact, marched, 2e-4) << i;

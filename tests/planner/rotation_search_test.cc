@@ -13,7 +13,9 @@
 namespace foresight {
 namespace {
 
-RotationSearchParams Params() { return testing::MakeSituation({}).evaluation.rotation_search; }
+RotationSearchParams Params() {
+  return testing::MakeSituation({}).evaluation.rotation_search;
+}
 
 RotationObjective Synthetic(double (*utility)(double)) {
   return [utility](double rho) {
@@ -38,7 +40,8 @@ TEST(RotationSearchTest, PlateauGivesTheLeastTurn) {
   // Best value on [30, 80] deg and on [-100, -60] deg: the least turn is +30 deg.
   const RotationChoice c = BestRotation(Synthetic(+[](double rho) {
                                           const double d = rho * kRadToDeg;
-                                          if ((d >= 30 && d <= 80) || (d >= -100 && d <= -60)) return 0.9;
+                                          if ((d >= 30 && d <= 80) || (d >= -100 && d <= -60))
+                                            return 0.9;
                                           return 0.2 + 0.001 * std::abs(d);
                                         }),
                                         Params());
@@ -69,9 +72,10 @@ TEST(RotationSearchTest, RealObjectiveMatchesBruteForce) {
   double worst_loss = 0.0, total_loss = 0.0;
   int total = 0;
   for (int trial = 0; trial < 24; ++trial) {
-    const testing::StateSpec spec = testing::Uncertain(
-        {.x_m = -4.0 + 8.0 * rng.NextUniform(), .y_m = -2.8 + 5.6 * rng.NextUniform(),
-         .theta_deg = 360.0 * rng.NextUniform() - 180.0});
+    const testing::StateSpec spec =
+        testing::Uncertain({.x_m = -4.0 + 8.0 * rng.NextUniform(),
+                            .y_m = -2.8 + 5.6 * rng.NextUniform(),
+                            .theta_deg = 360.0 * rng.NextUniform() - 180.0});
     const Situation s = testing::MakeSituation(spec);
     const CoarsePlanner planner(s);
     for (int kick = 0; kick < 3; ++kick) {

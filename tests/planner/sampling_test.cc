@@ -41,14 +41,16 @@ TEST(SamplingTest, LaunchSpeedAndDirectionFollowTheKickModel) {
   EXPECT_NEAR(Of(speed).mean, forward.speed_mps, 4 * 0.15 / std::sqrt(n));
   EXPECT_NEAR(Of(speed).sd, 0.15, 4 * 0.15 / std::sqrt(2 * n));
   EXPECT_NEAR(Of(direction).mean, 0.0, 4 * forward.sigma_direction_rad / std::sqrt(n));
-  EXPECT_NEAR(Of(direction).sd, forward.sigma_direction_rad, 4 * forward.sigma_direction_rad / std::sqrt(2 * n));
+  EXPECT_NEAR(Of(direction).sd, forward.sigma_direction_rad,
+              4 * forward.sigma_direction_rad / std::sqrt(2 * n));
   EXPECT_NEAR(Of(x).mean, 1.0, 4 * 0.1 / std::sqrt(n));
   EXPECT_NEAR(Of(x).sd, 0.1, 4 * 0.1 / std::sqrt(2 * n));
   EXPECT_NEAR(Of(theta).sd, 5.0 * kDegToRad, 4 * 5.0 * kDegToRad / std::sqrt(2 * n));
 }
 
 TEST(SamplingTest, BallIsPlacedRelativeToTheDrawnRobot) {
-  const Situation s = testing::MakeSituation({.x_m = 1.0, .y_m = 2.0, .theta_deg = 90, .ball_x_m = 0.2});
+  const Situation s =
+      testing::MakeSituation({.x_m = 1.0, .y_m = 2.0, .theta_deg = 90, .ball_x_m = 0.2});
   const DrawnSample d = DrawSample(s.state, 3, 0);  // no state noise: exact
   EXPECT_NEAR(d.state.p_F_ball.x(), 1.0, 1e-12);
   EXPECT_NEAR(d.state.p_F_ball.y(), 2.2, 1e-12);

@@ -6,7 +6,9 @@
 
 namespace foresight::testing {
 
-std::filesystem::path ModelsDir() { return FORESIGHT_TEST_MODELS_DIR; }
+std::filesystem::path ModelsDir() {
+  return FORESIGHT_TEST_MODELS_DIR;
+}
 
 Situation MakeSituation(const StateSpec& spec, std::vector<Obstacle> obstacles,
                         const std::string& field, const std::string& kicks) {

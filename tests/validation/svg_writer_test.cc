@@ -25,7 +25,8 @@ TEST(SvgWriterTest, DocumentHasHeaderBodyAndEnd) {
   const std::string doc = svg.Finish();
   EXPECT_EQ(doc.rfind("<?xml", 0), 0u);
   EXPECT_NE(doc.find("viewBox=\"0 0 100 50\""), std::string::npos);
-  EXPECT_NE(doc.find("<circle cx=\"10\" cy=\"20\" r=\"3\" style=\"fill:red\"/>"), std::string::npos);
+  EXPECT_NE(doc.find("<circle cx=\"10\" cy=\"20\" r=\"3\" style=\"fill:red\"/>"),
+            std::string::npos);
   EXPECT_NE(doc.find(">x&lt;y</text>"), std::string::npos);
   EXPECT_EQ(doc.substr(doc.size() - 7), "</svg>\n");
 }
