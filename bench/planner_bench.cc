@@ -17,10 +17,7 @@ std::vector<Situation> Field(int count) {
   RandomStream rng(StreamKey(123, 0));
   for (int i = 0; i < count; ++i) {
     situations.push_back(
-        testing::MakeSituation(testing::Uncertain({.x_m = -4.2 + 8.4 * rng.NextUniform(),
-                                                   .y_m = -2.8 + 5.6 * rng.NextUniform(),
-                                                   .theta_deg = 360 * rng.NextUniform() - 180}),
-                               {{Vec2(3.8, 0.4), 0.15}}));
+        testing::MakeSituation(testing::RandomPose(rng, 4.2, 2.8), {{Vec2(3.8, 0.4), 0.15}}));
   }
   return situations;
 }

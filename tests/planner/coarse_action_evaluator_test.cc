@@ -17,9 +17,7 @@ TEST(CoarseActionEvaluatorTest, AgreesWithTheSeamEvaluator) {
   for (int trial = 0; trial < 40; ++trial) {
     testing::StateSpec spec;
     do {  // a robot whose ball is clear of the obstacles
-      spec = testing::Uncertain({.x_m = -4.3 + 8.6 * rng.NextUniform(),
-                                 .y_m = -2.9 + 5.8 * rng.NextUniform(),
-                                 .theta_deg = 360 * rng.NextUniform() - 180});
+      spec = testing::RandomPose(rng, 4.3, 2.9);
     } while ((Vec2(spec.x_m, spec.y_m) - Vec2(3.9, 0.3)).norm() < 0.6 ||
              (Vec2(spec.x_m, spec.y_m) - Vec2(-3.5, -0.5)).norm() < 0.6);
     const Situation s =

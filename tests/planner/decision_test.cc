@@ -79,10 +79,7 @@ TEST(DecisionTest, ObstacleInTheWayIsAvoided) {
 TEST(DecisionTest, OptimalOneUsesOnlyTheForwardKick) {
   RandomStream rng(StreamKey(5, 0));
   for (int i = 0; i < 30; ++i) {
-    const Situation s =
-        testing::MakeSituation(testing::Uncertain({.x_m = -4.2 + 8.4 * rng.NextUniform(),
-                                                   .y_m = -2.8 + 5.6 * rng.NextUniform(),
-                                                   .theta_deg = 360 * rng.NextUniform() - 180}));
+    const Situation s = testing::MakeSituation(testing::RandomPose(rng, 4.2, 2.8));
     const Decision d = DecideOn(s, Strategy::kOptimalOne, i);
     EXPECT_EQ(d.kick_index, kForward);
     EXPECT_TRUE(d.kicks[kForward].considered);
@@ -98,10 +95,7 @@ TEST(DecisionTest, StrategyInvariantsOnRandomSituations) {
   RandomStream rng(StreamKey(77, 0));
   int turned = 0;
   for (int i = 0; i < 60; ++i) {
-    const Situation s =
-        testing::MakeSituation(testing::Uncertain({.x_m = -4.3 + 8.6 * rng.NextUniform(),
-                                                   .y_m = -2.9 + 5.8 * rng.NextUniform(),
-                                                   .theta_deg = 360 * rng.NextUniform() - 180}));
+    const Situation s = testing::MakeSituation(testing::RandomPose(rng, 4.3, 2.9));
     const Decision fast = DecideOn(s, Strategy::kFast, i);
     const Decision value = DecideOn(s, Strategy::kOptimalValue, i);
     const Decision all = DecideOn(s, Strategy::kOptimalAll, i);

@@ -72,10 +72,7 @@ TEST(RotationSearchTest, RealObjectiveMatchesBruteForce) {
   double worst_loss = 0.0, total_loss = 0.0;
   int total = 0;
   for (int trial = 0; trial < 24; ++trial) {
-    const testing::StateSpec spec =
-        testing::Uncertain({.x_m = -4.0 + 8.0 * rng.NextUniform(),
-                            .y_m = -2.8 + 5.6 * rng.NextUniform(),
-                            .theta_deg = 360.0 * rng.NextUniform() - 180.0});
+    const testing::StateSpec spec = testing::RandomPose(rng, 4.0, 2.8);
     const Situation s = testing::MakeSituation(spec);
     const CoarsePlanner planner(s);
     for (int kick = 0; kick < 3; ++kick) {

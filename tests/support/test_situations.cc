@@ -43,6 +43,14 @@ StateSpec Uncertain(StateSpec state) {
   return state;
 }
 
+StateSpec RandomPose(RandomStream& rng, double half_x_m, double half_y_m) {
+  StateSpec spec;
+  spec.x_m = half_x_m * (2.0 * rng.NextUniform() - 1.0);
+  spec.y_m = half_y_m * (2.0 * rng.NextUniform() - 1.0);
+  spec.theta_deg = 360.0 * rng.NextUniform() - 180.0;
+  return Uncertain(spec);
+}
+
 std::filesystem::path WriteTempFile(const std::string& name, const std::string& text) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "foresight_tests";
   std::filesystem::create_directories(dir);

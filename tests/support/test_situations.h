@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "models/situation.h"
+#include "planner/random.h"
 
 namespace foresight::testing {
 
@@ -27,6 +28,10 @@ Situation MakeNoiselessSituation(const StateSpec& state, std::vector<Obstacle> o
 
 // The paper's typical uncertainty: 0.1 m / 5 deg on the robot, 0.05 m on the ball.
 StateSpec Uncertain(StateSpec state);
+
+// A random robot pose, uniform over [-half_x, half_x] x [-half_y, half_y] and all headings,
+// with the paper's uncertainty (Uncertain()).
+StateSpec RandomPose(RandomStream& rng, double half_x_m, double half_y_m);
 
 // Writes `text` to a fresh file in a per-test temporary folder and returns its path.
 std::filesystem::path WriteTempFile(const std::string& name, const std::string& text);
