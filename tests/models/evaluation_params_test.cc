@@ -13,6 +13,7 @@
 namespace foresight {
 namespace {
 
+using testing::BrokenShipped;
 using ::testing::HasSubstr;
 using testing::InputErrorMessage;
 using testing::ModelsDir;
@@ -23,8 +24,7 @@ using testing::WriteTempFile;
 
 std::filesystem::path BrokenSplEvaluation(const std::string& name, const std::string& from,
                                           const std::string& to) {
-  return WriteTempFile("evaluation_params_" + name + ".json",
-                       ReplaceOnce(ShippedText("evaluation/spl.json"), from, to));
+  return BrokenShipped("evaluation/spl.json", "evaluation_params_" + name, from, to);
 }
 
 std::string LoadError(const std::filesystem::path& file) {

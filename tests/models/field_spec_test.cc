@@ -12,6 +12,7 @@
 namespace foresight {
 namespace {
 
+using testing::BrokenShipped;
 using ::testing::HasSubstr;
 using testing::InputErrorMessage;
 using testing::ModelsDir;
@@ -23,8 +24,7 @@ using testing::WriteTempFile;
 // The shipped SPL field with `from` replaced by `to`, written to a temporary file.
 std::filesystem::path BrokenSplField(const std::string& name, const std::string& from,
                                      const std::string& to) {
-  return WriteTempFile("field_spec_" + name + ".json",
-                       ReplaceOnce(ShippedText("fields/spl.json"), from, to));
+  return BrokenShipped("fields/spl.json", "field_spec_" + name, from, to);
 }
 
 std::string LoadError(const std::filesystem::path& file) {

@@ -13,6 +13,7 @@
 namespace foresight {
 namespace {
 
+using testing::BrokenShipped;
 using ::testing::HasSubstr;
 using testing::InputErrorMessage;
 using testing::ModelsDir;
@@ -26,8 +27,7 @@ constexpr const char* kForwardLine =
 
 std::filesystem::path BrokenNaoKicks(const std::string& name, const std::string& from,
                                      const std::string& to) {
-  return WriteTempFile("kick_model_" + name + ".json",
-                       ReplaceOnce(ShippedText("kicks/nao.json"), from, to));
+  return BrokenShipped("kicks/nao.json", "kick_model_" + name, from, to);
 }
 
 std::string LoadError(const std::filesystem::path& file) {

@@ -35,6 +35,13 @@ inline std::string ReplaceOnce(std::string text, const std::string& from, const 
   return text.replace(at, from.size(), to);
 }
 
+// The shipped file `shipped` ("fields/spl.json") with `from` replaced by `to`, written to a
+// temporary file called `temp_name`.json; returns its path.
+inline std::filesystem::path BrokenShipped(const std::string& shipped, const std::string& temp_name,
+                                           const std::string& from, const std::string& to) {
+  return WriteTempFile(temp_name + ".json", ReplaceOnce(ShippedText(shipped), from, to));
+}
+
 // The message of the InputError `action` throws; a test failure if it throws nothing or
 // something else.
 template <typename Action>

@@ -13,6 +13,7 @@
 namespace foresight {
 namespace {
 
+using testing::BrokenShipped;
 using ::testing::HasSubstr;
 using testing::InputErrorMessage;
 using testing::ModelsDir;
@@ -28,8 +29,7 @@ std::filesystem::path Shipped(const std::string& name) {
 // The shipped open_goal situation with `from` replaced by `to`, in a temporary file.
 std::filesystem::path BrokenOpenGoal(const std::string& name, const std::string& from,
                                      const std::string& to) {
-  return WriteTempFile("situation_" + name + ".json",
-                       ReplaceOnce(ShippedText("situations/open_goal.json"), from, to));
+  return BrokenShipped("situations/open_goal.json", "situation_" + name, from, to);
 }
 
 std::string LoadError(const std::filesystem::path& file, const SituationOverrides& overrides = {}) {
