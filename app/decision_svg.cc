@@ -26,9 +26,9 @@ std::string Format(const char* format, auto... args) {
 }
 
 // Every sample's rest position of one kick at its chosen rotation; out samples hollow.
-void DrawKickSamples(FieldCanvas& canvas, const DecisionRun& run, const KickOption& option) {
+void DrawKickSamples(FieldCanvas& canvas, const DecisionRun& run, const ActionEvaluator& evaluator,
+                     const KickOption& option) {
   const bool chosen = option.kick_index == run.decision.kick_index;
-  CoarseActionEvaluator evaluator = run.planner->MakeEvaluator(run.samples, run.seed);
   const std::string colour = KickColour(option.kick_index);
   const std::string filled = "fill:" + colour +
                              ";stroke:#000;stroke-width:" + (chosen ? "1.2" : "0.6") +
@@ -87,6 +87,8 @@ std::string DecisionSvg(const DecisionRun& run) {
   const Situation& s = run.planner->situation();
   FieldCanvas canvas(s.field, 900.0 / s.field.carpet_length_m, 330.0);
   canvas.DrawField();
+  // The decision's own samples (same seed), drawn once for every kick.
+  const CoarseActionEvaluator evaluator = run.planner->MakeEvaluator(run.samples, run.seed);
   for (const Obstacle& o : s.obstacles) {
     canvas.DrawDot(o.p_F, canvas.Px(o.radius_m), "fill:#444;fill-opacity:0.85;stroke:#000");
   }
@@ -99,10 +101,12 @@ std::string DecisionSvg(const DecisionRun& run) {
     canvas.DrawRobot(turned, 0.12, "#ffffff");
   }
   for (const KickOption& k : run.decision.kicks) {
-    if (k.considered && k.kick_index != run.decision.kick_index) DrawKickSamples(canvas, run, k);
+    if (k.considered && k.kick_index != run.decision.kick_index)
+      DrawKickSamples(canvas, run, evaluator, k);
   }
   for (const KickOption& k : run.decision.kicks) {
-    if (k.considered && k.kick_index == run.decision.kick_index) DrawKickSamples(canvas, run, k);
+    if (k.considered && k.kick_index == run.decision.kick_index)
+      DrawKickSamples(canvas, run, evaluator, k);
   }
   canvas.DrawDot(ball, canvas.Px(s.field.ball.radius_m), "fill:#ff7f00;stroke:#000;stroke-width:1");
   if (run.decision.kick_index >= 0) {
