@@ -37,37 +37,10 @@ void HitGoal(const GoalShapes& goal, double ball_radius, const Vec2& start, cons
   }
 }
 
-// Path length until the path first leaves |coordinate| <= limit, or kNoHit.
-double ExitDistance(double start, double dir, double limit) {
-  if (std::abs(start) > limit) return kNoHit;  // already beyond: not an outward crossing
-  if (dir > 0.0) return (limit - start) / dir;
-  if (dir < 0.0) return (-limit - start) / dir;
-  return kNoHit;
-}
-
-Category ClassifyPath(const CoarseWorld& world, const Vec2& start, const Vec2& dir, double length,
-                      const Vec2& rest) {
-  // A ball that is already out or in a goal stays so, whatever the kick does (as for `none`).
-  const Category at_start = ClassifyPosition(world, start);
-  if (at_start != Category::kInfield) return at_start;
-  const double s_x = ExitDistance(start.x(), dir.x(), world.out_x_m);
-  const double s_y = ExitDistance(start.y(), dir.y(), world.out_y_m);
-  if (std::min(s_x, s_y) > length) return ClassifyPosition(world, rest);
-  if (s_y < s_x) return Category::kOut;
-  const double y_at_line = start.y() + s_x * dir.y();
-  if (std::abs(y_at_line) >= world.goal_half_width_m) return Category::kOut;
-  return dir.x() > 0.0 ? Category::kOppGoal : Category::kOwnGoal;
-}
-
 }  // namespace
 
 Category ClassifyPosition(const CoarseWorld& world, const Vec2& p_F) {
-  const double ax = std::abs(p_F.x()), ay = std::abs(p_F.y());
-  if (ax <= world.out_x_m && ay <= world.out_y_m) return Category::kInfield;
-  if (ax <= world.goal_depth_x_m && ay < world.goal_half_width_m) {
-    return p_F.x() > 0.0 ? Category::kOppGoal : Category::kOwnGoal;
-  }
-  return Category::kOut;
+  return ClassifyPosition(world.lines, p_F);
 }
 
 Outcome RollBall(const CoarseWorld& world, const Vec2& p_F_start, const Vec2& dir_F,
@@ -91,7 +64,7 @@ Outcome RollBall(const CoarseWorld& world, const Vec2& p_F_start, const Vec2& di
   const double travelled_m = std::min(hit.s, stop_m);
   outcome.first_contact = hit.s <= stop_m ? hit.kind : Contact::kNone;
   outcome.p_F_rest = p_F_start + travelled_m * dir_F;
-  outcome.category = ClassifyPath(world, p_F_start, dir_F, travelled_m, outcome.p_F_rest);
+  outcome.category = ClassifyPath(world.lines, p_F_start, dir_F, travelled_m);
   // Time to cover travelled_m: solve travelled = v t - a t^2 / 2 for the first root.
   const double remaining_speed_sq = std::max(0.0, speed_mps * speed_mps - 2.0 * a * travelled_m);
   outcome.time_s = (speed_mps - std::sqrt(remaining_speed_sq)) / a;

@@ -31,11 +31,7 @@ CoarseWorld CoarseWorld::Build(const Scene& scene) {
   CoarseWorld world;
   world.ball_radius_m = field.ball.radius_m;
   world.deceleration_mps2 = scene.rolling_deceleration_mps2;
-  const double beyond_line = 0.5 * field.line_width_m + field.ball.radius_m;
-  world.out_x_m = field.HalfLength() + beyond_line;
-  world.out_y_m = field.HalfWidth() + beyond_line;
-  world.goal_half_width_m = field.goal.post_centre_y_m;
-  world.goal_depth_x_m = field.goal.post_centre_x_m + field.goal.net_depth_m;
+  world.lines = FieldLines::Of(field);
   world.goals[0] = MakeGoal(field, +1.0);
   world.goals[1] = MakeGoal(field, -1.0);
   for (const Obstacle& o : scene.obstacles) {

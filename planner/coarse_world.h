@@ -1,8 +1,7 @@
 // The static world of the coarse model, precomputed once per scene: goal posts and obstacles as
 // circles, nets as segments, and the lines whose crossing puts the ball out or into a goal.
 //
-// A ball counts as out (or in a goal) once it has completely crossed the line: its centre is
-// beyond the line's outer edge by one ball radius (RoboCup SPL rules). Goals: posts at
+// The lines that decide the category are models/field_lines.h. Goals: posts at
 // (+-post_centre_x, +-post_centre_y); each net is three segments from the posts back
 // net_depth_m (two sides and the back), of zero thickness.
 #pragma once
@@ -10,6 +9,7 @@
 #include <array>
 #include <vector>
 
+#include "models/field_lines.h"
 #include "models/outcome.h"
 
 namespace foresight {
@@ -35,10 +35,7 @@ struct GoalShapes {
 struct CoarseWorld {
   double ball_radius_m = 0.0;
   double deceleration_mps2 = 0.0;
-  double out_x_m = 0.0;             // |x| beyond this: over a goal line
-  double out_y_m = 0.0;             // |y| beyond this: over a side line
-  double goal_half_width_m = 0.0;   // |y| below this when crossing a goal line: a goal
-  double goal_depth_x_m = 0.0;      // x of the back nets
+  FieldLines lines;
   std::array<GoalShapes, 2> goals;  // [0] opponent (+x), [1] own (-x)
   std::vector<CircleShape> obstacles;
 

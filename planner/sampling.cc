@@ -1,6 +1,6 @@
 #include "planner/sampling.h"
 
-#include "planner/random.h"
+#include "models/random.h"
 
 namespace foresight {
 

@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "planner/random.h"
+#include "models/random.h"
 
 namespace foresight {
 namespace {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "models/situation.h"
-#include "planner/random.h"
+#include "models/random.h"
 
 namespace foresight::testing {
 

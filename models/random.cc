@@ -1,4 +1,4 @@
-#include "planner/random.h"
+#include "models/random.h"
 
 #include <array>
 #include <cmath>

@@ -1,0 +1,56 @@
+#include "models/physics_params.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "tests/models/model_test_util.h"
+
+namespace foresight {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::InputErrorMessage;
+
+PhysicsParams Shipped(const std::string& field) {
+  return LoadPhysicsParams(testing::ModelsDir() / "physics" / (field + ".json"));
+}
+
+TEST(PhysicsParamsTest, ShippedFilesLoadAndAgreeWithTheKickModelsBelief) {
+  for (const char* field : {"spl", "four_legged"}) {
+    const PhysicsParams p = Shipped(field);
+    // The carpet physics rolls on is what the shipped coarse model assumes (mu g, mu = 0.0275).
+    EXPECT_DOUBLE_EQ(p.carpet.rolling_deceleration_mps2, 0.2697) << field;
+    EXPECT_LT(p.steps.near_time_step_s, p.steps.free_time_step_s) << field;
+  }
+}
+
+struct BrokenCase {
+  const char* from;
+  const char* to;
+  const char* message;
+};
+
+class PhysicsParamsErrorTest : public ::testing::TestWithParam<BrokenCase> {};
+
+TEST_P(PhysicsParamsErrorTest, NamesTheFileTheFieldAndTheValue) {
+  const BrokenCase c = GetParam();
+  const auto file = testing::BrokenShipped("physics/spl.json", "physics_broken", c.from, c.to);
+  const std::string message = InputErrorMessage([&] { LoadPhysicsParams(file); });
+  EXPECT_THAT(message, HasSubstr(file.string()));
+  EXPECT_THAT(message, HasSubstr(c.message));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, PhysicsParamsErrorTest,
+    ::testing::Values(
+        BrokenCase{"\"rolling_deceleration_mps2\": 0.2697", "\"rolling_deceleration_mps2\": -1",
+                   "carpet.rolling_deceleration_mps2: must be in [0.001, 10], got -1"},
+        BrokenCase{"\"free_time_step_s\": 0.016", "\"free_time_step_s\": 0.001",
+                   "steps.free_time_step_s"},
+        BrokenCase{"\"position_gain\": 0.2", "\"position_gain\": 2",
+                   "motors.position_gain: must be in [0, 1], got 2"},
+        BrokenCase{"\"net_friction\": 1.0", "\"net_frictoin\": 1.0", "net_frictoin"},
+        BrokenCase{"\"patch_seed\": 2026", "\"patch_seed\": -4", "carpet.patch_seed"}));
+
+}  // namespace
+}  // namespace foresight
