@@ -2,6 +2,8 @@
 
 #include <charconv>
 
+#include "app/report_text.h"
+#include "models/checks.h"
 #include "models/error.h"
 
 namespace foresight {
@@ -32,6 +34,24 @@ std::uint64_t ParseSeed(const std::string& text) {
     throw InputError("--seed: must be an integer in [0, 18446744073709551615], got '" + text + "'");
   }
   return value;
+}
+
+double ParseNumber(const std::string& flag, const std::string& text, double lo, double hi) {
+  double value = 0.0;
+  if (!ParseWhole(text, value) || !(value >= lo && value <= hi)) {
+    throw InputError(flag + ": must be a number in [" + FormatNumber(lo) + ", " +
+                     FormatNumber(hi) + "], got '" + text + "'");
+  }
+  return value;
+}
+
+std::string DisplayPath(const std::filesystem::path& file,
+                        const std::filesystem::path& models_dir) {
+  const std::filesystem::path relative =
+      std::filesystem::absolute(file).lexically_normal().lexically_relative(
+          std::filesystem::absolute(models_dir).lexically_normal());
+  if (!relative.empty() && *relative.begin() != "..") return relative.generic_string();
+  return file.generic_string();
 }
 
 }  // namespace foresight

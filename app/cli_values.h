@@ -10,5 +10,6 @@ namespace foresight {
 
 int ParseCount(const std::string& flag, const std::string& text, int lo, int hi);
 std::uint64_t ParseSeed(const std::string& text);  // for --seed: 0 .. 2^64 - 1
+double ParseNumber(const std::string& flag, const std::string& text, double lo, double hi);
 
 }  // namespace foresight

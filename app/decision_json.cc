@@ -1,6 +1,7 @@
 #include <string>
 
 #include "app/decision_output.h"
+#include "app/report_text.h"
 
 namespace foresight {
 
@@ -18,17 +19,6 @@ nlohmann::ordered_json EvaluationJson(const ActionEvaluation& e) {
   j["trimmed_utility"] = e.trimmed_utility;
   j["too_risky"] = e.too_risky;
   return j;
-}
-
-// A data file as reports show it: relative to the models folder when inside it, so the same
-// run gives the same bytes in every checkout.
-std::string DisplayPath(const std::filesystem::path& file,
-                        const std::filesystem::path& models_dir) {
-  const std::filesystem::path relative =
-      std::filesystem::absolute(file).lexically_normal().lexically_relative(
-          std::filesystem::absolute(models_dir).lexically_normal());
-  if (!relative.empty() && *relative.begin() != "..") return relative.generic_string();
-  return file.generic_string();
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "app/decision_output.h"
+#include "app/report_text.h"
 #include "validation/field_svg.h"
 
 namespace foresight {
@@ -15,14 +16,6 @@ const char* KickColour(int index) {
   static const char* const kColours[] = {"#00c8e6", "#ffd400", "#e6194b", "#f58231",
                                          "#911eb4", "#46f0f0", "#f032e6", "#bcf60c"};
   return kColours[static_cast<std::size_t>(index) % (sizeof kColours / sizeof *kColours)];
-}
-
-std::string Format(const char* format, auto... args) {
-  const int length = std::snprintf(nullptr, 0, format, args...);
-  std::string text(static_cast<std::size_t>(length > 0 ? length : 0) + 1, '\0');
-  std::snprintf(text.data(), text.size(), format, args...);
-  text.pop_back();
-  return text;
 }
 
 // Every sample's rest position of one kick at its chosen rotation; out samples hollow.

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/decide_command.h"
+#include "app/simulate_command.h"
 #include "models/error.h"
 
 namespace {
@@ -26,6 +27,8 @@ int main(int argc, char** argv) {
   app.add_option("--models", models_dir, "Folder of the shipped data (default: the source tree's)");
   foresight::DecideOptions decide;
   foresight::AddDecideCommand(app, decide);
+  foresight::SimulateOptions simulate;
+  foresight::AddSimulateCommand(app, simulate);
 
   try {
     app.parse(argc, argv);
@@ -41,6 +44,7 @@ int main(int argc, char** argv) {
 
   try {
     if (app.got_subcommand("decide")) return foresight::RunDecide(decide, models_dir);
+    if (app.got_subcommand("simulate")) return foresight::RunSimulate(simulate, models_dir);
   } catch (const foresight::InputError& e) {
     return Fail(e.what());
   } catch (const std::exception& e) {

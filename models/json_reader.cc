@@ -86,6 +86,42 @@ std::vector<JsonObject> JsonObject::ObjectArray(std::string_view key) const {
   return items;
 }
 
+const nlohmann::json& JsonObject::GetArray(std::string_view key) const {
+  const nlohmann::json& v = Get(key);
+  if (!v.is_array()) Fail(key, "must be an array, got " + v.dump());
+  return v;
+}
+
+std::vector<std::string> JsonObject::StringArray(std::string_view key) const {
+  const nlohmann::json& v = GetArray(key);
+  std::vector<std::string> items;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const std::string item_key = std::string(key) + "[" + std::to_string(i) + "]";
+    if (!v[i].is_string()) Fail(item_key, "must be a string, got " + v[i].dump());
+    items.push_back(v[i].get<std::string>());
+  }
+  return items;
+}
+
+std::vector<double> JsonObject::NumberArray(std::string_view key) const {
+  const nlohmann::json& v = GetArray(key);
+  std::vector<double> items;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const std::string item_key = std::string(key) + "[" + std::to_string(i) + "]";
+    if (!v[i].is_number()) Fail(item_key, "must be a number, got " + v[i].dump());
+    const double number = v[i].get<double>();
+    if (!std::isfinite(number)) Fail(item_key, "must be finite, got " + FormatNumber(number));
+    items.push_back(number);
+  }
+  return items;
+}
+
+std::vector<std::string> JsonObject::Keys() const {
+  std::vector<std::string> keys;
+  for (const auto& [key, unused] : value_->items()) keys.push_back(key);
+  return keys;
+}
+
 void JsonObject::RejectUnknownKeys(std::initializer_list<std::string_view> known) const {
   for (const auto& [key, unused] : value_->items()) {
     if (key == "notes") continue;

@@ -28,6 +28,11 @@ class JsonObject {
   std::string StringOr(std::string_view key, std::string fallback) const;
   JsonObject Object(std::string_view key) const;
   std::vector<JsonObject> ObjectArray(std::string_view key) const;  // empty if the key is absent
+  // Arrays of plain values; each item is checked ("FILE: PATH.key[2]: must be a number, ...").
+  std::vector<std::string> StringArray(std::string_view key) const;
+  std::vector<double> NumberArray(std::string_view key) const;  // finite numbers
+  // The object's keys in the order nlohmann keeps them (sorted), "notes" included.
+  std::vector<std::string> Keys() const;
 
   // Throws if the object has a key outside `known` (and "notes").
   void RejectUnknownKeys(std::initializer_list<std::string_view> known) const;
@@ -41,6 +46,7 @@ class JsonObject {
 
  private:
   const nlohmann::json& Get(std::string_view key) const;
+  const nlohmann::json& GetArray(std::string_view key) const;
 
   const nlohmann::json* value_;
   std::string file_;

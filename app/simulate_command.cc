@@ -1,0 +1,124 @@
+#include "app/simulate_command.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+
+#include "app/cli_values.h"
+#include "app/simulation_output.h"
+#include "models/error.h"
+#include "models/model_paths.h"
+#include "validation/atomic_file.h"
+
+namespace foresight {
+
+namespace {
+
+constexpr int kMaxTrials = 1000000;
+constexpr int kMaxThreads = 1024;
+
+std::string KickNames(const KickModel& kicks) {
+  std::string names;
+  for (const KickSpec& k : kicks.kicks) names += (names.empty() ? "" : ", ") + k.name;
+  return names;
+}
+
+// Progress on stderr, only when it is a terminal (DESIGN.md, "Output").
+std::function<void(int, int)> TerminalProgress() {
+  if (!isatty(STDERR_FILENO)) return {};
+  return [](int done, int total) {
+    std::fprintf(stderr, "\rsimulate: %d / %d trials", done, total);
+    if (done == total) std::fprintf(stderr, "\n");
+  };
+}
+
+}  // namespace
+
+void AddSimulateCommand(CLI::App& app, SimulateOptions& options) {
+  CLI::App* cmd = app.add_subcommand("simulate", "Physics trials of one kick from a situation");
+  cmd->add_option("--situation", options.situation_file, "Situation file (JSON)")->required();
+  cmd->add_option("--kick", options.kick, "Name of the kick (as in the kick model)")->required();
+  cmd->add_option("--kicks", options.kicks_file, "Kick model file replacing the situation's");
+  cmd->add_option("--physics", options.physics_file,
+                  "Physics file (default: MODELS/physics/<field>.json)");
+  cmd->add_option("--trials", options.trials, "Number of trials")->capture_default_str();
+  cmd->add_option("--seed", options.seed, "Random seed")->capture_default_str();
+  cmd->add_option("--threads", options.threads, "Worker threads (0: all cores)")
+      ->capture_default_str();
+  cmd->add_option("--rotation", options.rotation_deg,
+                  "Turn around the ball before the kick, degrees (left positive)")
+      ->capture_default_str();
+  cmd->add_flag("--json", options.json, "Print every trial and the summary as JSON");
+  cmd->add_option("--svg", options.svg_file, "Draw the rest positions on the field");
+  cmd->add_option("--trace", options.trace_file, "Write the balls' trajectories as CSV");
+}
+
+int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
+  const int trials = ParseCount("--trials", options.trials, 1, kMaxTrials);
+  const std::uint64_t seed = ParseSeed(options.seed);
+  const int threads = ParseCount("--threads", options.threads, 0, kMaxThreads);
+  const double rotation_deg = ParseNumber("--rotation", options.rotation_deg, -360.0, 360.0);
+  const std::filesystem::path models =
+      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+  SituationOverrides overrides;
+  overrides.kicks_file = options.kicks_file;
+  const Situation situation = LoadSituation(options.situation_file, models, overrides);
+  const std::optional<int> kick = situation.kicks.Find(options.kick);
+  if (!kick) {
+    throw InputError("--kick: no kick '" + options.kick + "' in " +
+                     situation.kicks_file.string() + " (one of: " + KickNames(situation.kicks) +
+                     ")");
+  }
+  const Robot robot = LoadRobot(situation.kicks.robot, models);
+  if (!robot.FindMotion(options.kick)) {
+    throw InputError("--kick: robot '" + robot.spec.name + "' has no motion for kick '" +
+                     options.kick + "'");
+  }
+  const std::filesystem::path physics_file =
+      options.physics_file.empty() ? models / "physics" / (situation.field.name + ".json")
+                                   : std::filesystem::path(options.physics_file);
+  const PhysicsParams params = LoadPhysicsParams(physics_file);
+
+  SimulationRun run;
+  run.situation_file = options.situation_file;
+  run.situation = &situation;
+  run.robot = &robot;
+  run.physics_file = physics_file;
+  run.models_dir = models;
+  run.kick = options.kick;
+  run.rotation_rad = rotation_deg * kDegToRad;
+  run.seed = seed;
+  // Physics plays the world as it is: the state estimate's mean, no belief noise.
+  run.state = DrawnState{situation.state.robot, situation.state.MeanBallInField()};
+  const PhysicsSimulator simulator(
+      MakePhysicsScene(situation.field, params, &robot, situation.obstacles, run.state.p_F_ball),
+      situation.kicks);
+  KickTrialsRequest request;
+  request.state = run.state;
+  request.kick_index = *kick;
+  request.rotation_rad = run.rotation_rad;
+  request.trials = trials;
+  request.seed = seed;
+  request.threads = threads;
+  request.record_trace = !options.trace_file.empty();
+  request.progress = TerminalProgress();
+  run.results = RunKickTrials(simulator, request);
+  run.summary = Summarize(run.results);
+
+  // Everything is made before anything is written, so a failure leaves no file behind.
+  const std::string printed =
+      options.json ? SimulationJson(run).dump(2, ' ', false,
+                                              nlohmann::ordered_json::error_handler_t::replace) +
+                         "\n"
+                   : SimulationText(run);
+  const std::string drawing = options.svg_file.empty() ? "" : SimulationSvg(run);
+  const std::string trace = options.trace_file.empty() ? "" : SimulationTraceCsv(run);
+  if (!options.svg_file.empty()) WriteFileAtomically(options.svg_file, drawing);
+  if (!options.trace_file.empty()) WriteFileAtomically(options.trace_file, trace);
+  std::cout << printed << std::flush;
+  if (!std::cout) throw InputError("cannot write to standard output");
+  return 0;
+}
+
+}  // namespace foresight

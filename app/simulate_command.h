@@ -1,0 +1,28 @@
+// `foresight simulate`: physics trials of one kick from a situation file.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace foresight {
+
+struct SimulateOptions {
+  std::string situation_file;
+  std::string kick;
+  std::string kicks_file;    // replaces the situation's kick model when given
+  std::string physics_file;  // default: MODELS/physics/<field>.json
+  std::string trials = "100";
+  std::string seed = "1";
+  std::string threads = "0";  // 0: all cores
+  std::string rotation_deg = "0";
+  bool json = false;
+  std::string svg_file;
+  std::string trace_file;
+};
+
+void AddSimulateCommand(CLI::App& app, SimulateOptions& options);
+
+// Runs the command; bad input throws InputError. Returns the exit code.
+int RunSimulate(const SimulateOptions& options, const std::string& models_dir);
+
+}  // namespace foresight

@@ -1,0 +1,209 @@
+// robot.json, and a Robot assembled from it: spec, URDF body and kick motions, checked against
+// each other so physics can drive every joint target without further checks.
+#include "models/robot_spec.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "models/checks.h"
+#include "models/error.h"
+#include "models/geometry.h"
+#include "models/json_reader.h"
+
+namespace foresight {
+namespace {
+
+// Joint targets within this much of a limit count as within it (degrees in files, radians here).
+constexpr double kLimitToleranceRad = 1e-9;
+
+// Runs a check from models/checks.h and prefixes the file to its "field: ..." message.
+template <typename Check>
+void WithFile(const std::string& file, Check&& check) {
+  try {
+    check();
+  } catch (const InputError& e) {
+    throw InputError(file + ": " + e.what());
+  }
+}
+
+std::filesystem::path Resolve(const std::filesystem::path& dir, const std::string& reference) {
+  const std::filesystem::path path(reference);
+  return path.is_absolute() ? path : (dir / path).lexically_normal();
+}
+
+TrialVariation ReadVariation(const JsonObject& item) {
+  item.RejectUnknownKeys({"placement_sigma_x_m", "placement_sigma_y_m", "placement_sigma_theta_deg",
+                          "motion_speed_sigma_rel"});
+  TrialVariation variation;
+  variation.placement_sigma_x_m = item.Number("placement_sigma_x_m");
+  variation.placement_sigma_y_m = item.Number("placement_sigma_y_m");
+  variation.placement_sigma_theta_rad = item.Number("placement_sigma_theta_deg") * kDegToRad;
+  variation.motion_speed_sigma_rel = item.Number("motion_speed_sigma_rel");
+  return variation;
+}
+
+// The revolute joint `joint_name` of `model`; throws "FILE: FIELD: ..." when it is missing or
+// fixed.
+const RobotJoint& RevoluteJoint(const RobotModel& model, const std::string& joint_name,
+                                const std::string& file, const std::string& field) {
+  const std::optional<int> index = model.FindJoint(joint_name);
+  if (!index) {
+    throw InputError(file + ": " + field + ": '" + joint_name + "' is not a joint of " +
+                     model.source.string());
+  }
+  const RobotJoint& joint = model.joints[*index];
+  if (joint.kind != RobotJoint::Kind::kRevolute) {
+    throw InputError(file + ": " + field + ": '" + joint_name + "' is a fixed joint in " +
+                     model.source.string());
+  }
+  return joint;
+}
+
+// `label` names the target in the file: "keyframes[2].positions_deg[1] (LKneePitch)".
+void RequireWithinLimits(const RobotJoint& joint, double position_rad, const std::string& file,
+                         const std::string& label) {
+  if (position_rad >= joint.lower_rad - kLimitToleranceRad &&
+      position_rad <= joint.upper_rad + kLimitToleranceRad) {
+    return;
+  }
+  throw InputError(file + ": " + label + ": " + FormatNumber(position_rad * kRadToDeg) +
+                   " deg is outside the joint's limits [" +
+                   FormatNumber(joint.lower_rad * kRadToDeg) + ", " +
+                   FormatNumber(joint.upper_rad * kRadToDeg) + "] deg");
+}
+
+void CheckStandingPose(const Robot& robot, const std::string& spec_file) {
+  for (const auto& [joint_name, position_rad] : robot.spec.standing_pose_rad) {
+    const std::string field = "standing_pose_deg." + joint_name;
+    const RobotJoint& joint = RevoluteJoint(robot.model, joint_name, spec_file, field);
+    RequireWithinLimits(joint, position_rad, spec_file, field);
+  }
+}
+
+void CheckMotion(const KickMotion& motion, const RobotModel& model, const std::string& file) {
+  for (std::size_t j = 0; j < motion.joints.size(); ++j) {
+    const std::string joint_field = "joints[" + std::to_string(j) + "]";
+    const RobotJoint& joint = RevoluteJoint(model, motion.joints[j], file, joint_field);
+    for (std::size_t k = 0; k < motion.keyframes.size(); ++k) {
+      const std::string label = "keyframes[" + std::to_string(k) + "].positions_deg[" +
+                                std::to_string(j) + "] (" + joint.name + ")";
+      RequireWithinLimits(joint, motion.keyframes[k].positions_rad[j], file, label);
+    }
+  }
+}
+
+}  // namespace
+
+void TrialVariation::Validate(const std::string& file) const {
+  WithFile(file, [&] {
+    RequireNonNegative("trial_variation.placement_sigma_x_m", placement_sigma_x_m);
+    RequireNonNegative("trial_variation.placement_sigma_y_m", placement_sigma_y_m);
+    RequireNonNegative("trial_variation.placement_sigma_theta_deg",
+                       placement_sigma_theta_rad * kRadToDeg);
+    RequireNonNegative("trial_variation.motion_speed_sigma_rel", motion_speed_sigma_rel);
+  });
+  if (!(motion_speed_sigma_rel < 0.5)) {
+    throw InputError(file + ": trial_variation.motion_speed_sigma_rel: must be < 0.5, got " +
+                     FormatNumber(motion_speed_sigma_rel));
+  }
+}
+
+RobotSpec LoadRobotSpec(const std::filesystem::path& file) {
+  const JsonDocument doc = JsonDocument::Load(file);
+  const JsonObject root = doc.Root();
+  root.RejectUnknownKeys(
+      {"name", "urdf", "base_height_m", "standing_pose_deg", "kicks", "trial_variation"});
+  const std::filesystem::path dir = file.parent_path();
+  const std::string where = file.string();
+  RobotSpec spec;
+  spec.name = root.String("name");
+  if (spec.name.empty()) root.Fail("name", "must not be empty");
+  const std::string urdf = root.String("urdf");
+  if (urdf.empty()) root.Fail("urdf", "must name the robot's URDF file");
+  spec.urdf_file = Resolve(dir, urdf);
+  spec.base_height_m = root.Number("base_height_m");
+  WithFile(where, [&] { RequirePositive("base_height_m", spec.base_height_m); });
+
+  const JsonObject pose = root.Object("standing_pose_deg");
+  for (const std::string& joint : pose.Keys()) {
+    if (joint == "notes") continue;  // allowed everywhere (json_reader.h)
+    if (joint.empty()) pose.Fail(joint, "joint names must not be empty");
+    spec.standing_pose_rad.emplace_back(joint, pose.Number(joint) * kDegToRad);  // files: degrees
+  }
+
+  if (!root.Has("kicks")) root.Fail("kicks", "missing");
+  const std::vector<JsonObject> kicks = root.ObjectArray("kicks");
+  if (kicks.empty()) root.Fail("kicks", "must list at least one kick");
+  for (const JsonObject& kick : kicks) {
+    kick.RejectUnknownKeys({"name", "motion"});
+    const std::string name = kick.String("name");
+    if (name.empty()) kick.Fail("name", "must not be empty");
+    for (const auto& [other, unused] : spec.kick_motion_files) {
+      if (other == name) kick.Fail("name", "duplicate '" + name + "'");
+    }
+    const std::string motion = kick.String("motion");
+    if (motion.empty()) kick.Fail("motion", "must name the kick's motion file");
+    spec.kick_motion_files.emplace_back(name, Resolve(dir, motion));
+  }
+
+  spec.variation = ReadVariation(root.Object("trial_variation"));
+  spec.variation.Validate(where);
+  return spec;
+}
+
+std::optional<int> Robot::FindMotion(const std::string& kick_name) const {
+  for (std::size_t i = 0; i < spec.kick_motion_files.size(); ++i) {
+    if (spec.kick_motion_files[i].first == kick_name) return static_cast<int>(i);
+  }
+  return std::nullopt;
+}
+
+std::vector<double> Robot::StandingPositions() const {
+  std::vector<double> positions(model.joints.size(), 0.0);
+  for (const auto& [joint_name, position_rad] : spec.standing_pose_rad) {
+    if (const std::optional<int> index = model.FindJoint(joint_name)) {
+      positions[*index] = position_rad;
+    }
+  }
+  return positions;
+}
+
+Robot LoadRobot(const std::string& name, const std::filesystem::path& models_dir) {
+  const std::filesystem::path robots_dir = models_dir / "robots";
+  const std::filesystem::path spec_file = robots_dir / name / "robot.json";
+  std::error_code ec;
+  if (name.empty() || name.find('/') != std::string::npos ||
+      !std::filesystem::is_regular_file(spec_file, ec)) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(robots_dir, ec)) {
+      if (std::filesystem::is_regular_file(entry.path() / "robot.json", ec)) {
+        names.push_back(entry.path().filename().string());
+      }
+    }
+    std::sort(names.begin(), names.end());
+    std::string available;
+    for (const std::string& robot : names) available += (available.empty() ? "" : ", ") + robot;
+    throw InputError("no robot '" + name + "' in " + robots_dir.string() +
+                     " (available: " + (available.empty() ? "none" : available) + ")");
+  }
+  Robot robot;
+  robot.spec = LoadRobotSpec(spec_file);
+  if (robot.spec.name != name) {
+    throw InputError(spec_file.string() + ": name: must be '" + name +
+                     "' (the robot's folder), got '" + robot.spec.name + "'");
+  }
+  robot.model = LoadRobotModel(robot.spec.urdf_file);
+  CheckStandingPose(robot, spec_file.string());
+  for (const auto& [kick_name, motion_file] : robot.spec.kick_motion_files) {
+    robot.motions.push_back(LoadKickMotion(motion_file));
+    const KickMotion& motion = robot.motions.back();
+    if (motion.name != kick_name) {
+      throw InputError(motion_file.string() + ": name: must be '" + kick_name + "' (the kick in " +
+                       spec_file.string() + "), got '" + motion.name + "'");
+    }
+    CheckMotion(motion, robot.model, motion_file.string());
+  }
+  return robot;
+}
+
+}  // namespace foresight

@@ -1,0 +1,53 @@
+// Everything physics needs to know about one robot type besides its URDF
+// (models/robots/<robot>/robot.json): how it stands, which kick motions it has, and how much a
+// trial varies for physical reasons (placement relative to the ball, the motion's speed).
+// Calibration measures sigma_v and sigma_alpha from these causes; nothing here is a kick sigma.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "models/kick_motion.h"
+#include "models/robot_model.h"
+
+namespace foresight {
+
+struct TrialVariation {
+  double placement_sigma_x_m = 0.0;        // robot's placement error along R's x
+  double placement_sigma_y_m = 0.0;        // ... along R's y
+  double placement_sigma_theta_rad = 0.0;  // heading error
+  double motion_speed_sigma_rel = 0.0;     // relative std. dev. of the motion's playback speed
+  void Validate(const std::string& file) const;
+};
+
+struct RobotSpec {
+  std::string name;
+  std::filesystem::path urdf_file;  // resolved
+  double base_height_m = 0.0;       // height of the root link's frame above the carpet
+  std::vector<std::pair<std::string, double>> standing_pose_rad;  // joints not named: 0
+  std::vector<std::pair<std::string, std::filesystem::path>> kick_motion_files;  // resolved
+  TrialVariation variation;
+};
+
+RobotSpec LoadRobotSpec(const std::filesystem::path& file);
+
+// A robot ready for physics: its spec, body and kick motions, checked against each other
+// (every joint a motion or the standing pose names exists and is revolute; every target lies
+// within the joint's limits).
+struct Robot {
+  RobotSpec spec;
+  RobotModel model;
+  std::vector<KickMotion> motions;  // in the order of spec.kick_motion_files
+
+  std::optional<int> FindMotion(const std::string& kick_name) const;
+  // The standing position of every joint of `model`, in model.joints order.
+  std::vector<double> StandingPositions() const;
+};
+
+// Loads models_dir/robots/<name>/robot.json and everything it names.
+Robot LoadRobot(const std::string& name, const std::filesystem::path& models_dir);
+
+}  // namespace foresight

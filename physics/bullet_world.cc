@@ -1,0 +1,124 @@
+#include "physics/bullet_world.h"
+
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
+#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+
+#include <cassert>
+
+namespace foresight {
+
+Contact ContactOf(BodyTag tag) {
+  switch (tag) {
+    case BodyTag::kPost: return Contact::kPost;
+    case BodyTag::kNet: return Contact::kNet;
+    case BodyTag::kObstacle: return Contact::kObstacle;
+    case BodyTag::kKicker: return Contact::kRobot;
+    default: return Contact::kNone;
+  }
+}
+
+BodyTag TagOf(const btCollisionObject& object) {
+  return static_cast<BodyTag>(object.getUserIndex());
+}
+
+namespace {
+
+std::unique_ptr<btCollisionConfiguration> MakeConfig() {
+  // Small pools: a trial's world holds a handful of contacts, and allocating Bullet's default
+  // pools (thousands of manifolds) would cost more than a whole free roll.
+  btDefaultCollisionConstructionInfo info;
+  info.m_defaultMaxPersistentManifoldPoolSize = 256;
+  info.m_defaultMaxCollisionAlgorithmPoolSize = 256;
+  return std::make_unique<btDefaultCollisionConfiguration>(info);
+}
+
+}  // namespace
+
+BulletWorld::BulletWorld(Kind kind, int solver_iterations)
+    : config_(MakeConfig()),
+      dispatcher_(std::make_unique<btCollisionDispatcher>(config_.get())),
+      broadphase_(std::make_unique<btDbvtBroadphase>()) {
+  if (kind == Kind::kMultiBody) {
+    auto solver = std::make_unique<btMultiBodyConstraintSolver>();
+    auto world = std::make_unique<btMultiBodyDynamicsWorld>(dispatcher_.get(), broadphase_.get(),
+                                                            solver.get(), config_.get());
+    multibody_world_ = world.get();
+    solver_ = std::move(solver);
+    world_ = std::move(world);
+  } else {
+    solver_ = std::make_unique<btSequentialImpulseConstraintSolver>();
+    world_ = std::make_unique<btDiscreteDynamicsWorld>(dispatcher_.get(), broadphase_.get(),
+                                                       solver_.get(), config_.get());
+  }
+  world_->setGravity(btVector3(0, 0, -9.81));
+  world_->getSolverInfo().m_numIterations = solver_iterations;
+}
+
+BulletWorld::~BulletWorld() {
+  // Remove everything before the objects die; Bullet only holds raw pointers.
+  for (auto& constraint : constraints_) multibody_world_->removeMultiBodyConstraint(constraint.get());
+  for (auto& body : multibodies_) multibody_world_->removeMultiBody(body.get());
+  for (auto& object : objects_) {
+    if (auto* body = btRigidBody::upcast(object.get())) {
+      world_->removeRigidBody(body);
+    } else {
+      world_->removeCollisionObject(object.get());
+    }
+  }
+}
+
+btRigidBody* BulletWorld::AddStatic(btCollisionShape* shape, const btTransform& pose_F,
+                                    BodyTag tag, Material material) {
+  btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, shape);
+  info.m_startWorldTransform = pose_F;
+  info.m_restitution = material.restitution;
+  info.m_friction = material.friction;
+  auto body = std::make_unique<btRigidBody>(info);
+  body->setUserIndex(static_cast<int>(tag));
+  btRigidBody* raw = body.get();
+  objects_.push_back(std::move(body));
+  world_->addRigidBody(raw, kGroupStatic, kGroupBall);
+  return raw;
+}
+
+btRigidBody* BulletWorld::AddDynamic(btCollisionShape* shape, double mass_kg,
+                                     const btTransform& pose_F, BodyTag tag, Material material,
+                                     int group, int mask) {
+  btVector3 inertia(0, 0, 0);
+  shape->calculateLocalInertia(mass_kg, inertia);
+  btRigidBody::btRigidBodyConstructionInfo info(mass_kg, nullptr, shape, inertia);
+  info.m_startWorldTransform = pose_F;
+  info.m_restitution = material.restitution;
+  info.m_friction = material.friction;
+  auto body = std::make_unique<btRigidBody>(info);
+  body->setUserIndex(static_cast<int>(tag));
+  body->setActivationState(DISABLE_DEACTIVATION);
+  btRigidBody* raw = body.get();
+  objects_.push_back(std::move(body));
+  world_->addRigidBody(raw, group, mask);
+  return raw;
+}
+
+btMultiBody* BulletWorld::AddMultiBody(std::unique_ptr<btMultiBody> body) {
+  assert(multibody_world_ != nullptr);
+  btMultiBody* raw = body.get();
+  multibodies_.push_back(std::move(body));
+  multibody_world_->addMultiBody(raw, kGroupKicker, kGroupBall);
+  return raw;
+}
+
+void BulletWorld::AddCollider(std::unique_ptr<btCollisionObject> collider, int group, int mask) {
+  btCollisionObject* raw = collider.get();
+  objects_.push_back(std::move(collider));
+  world_->addCollisionObject(raw, group, mask);
+}
+
+void BulletWorld::AddConstraint(std::unique_ptr<btMultiBodyConstraint> constraint) {
+  assert(multibody_world_ != nullptr);
+  multibody_world_->addMultiBodyConstraint(constraint.get());
+  constraints_.push_back(std::move(constraint));
+}
+
+}  // namespace foresight

@@ -1,0 +1,86 @@
+// One Bullet world and everything in it, owned together and torn down in the right order.
+//
+// Bullet objects point at each other (world -> bodies -> shapes -> ...), so this class owns
+// them all and destroys the world first. Every collision object carries a BodyTag in its user
+// index, from which contacts are classified. Worlds are never shared between threads; one world
+// per trial keeps trials independent (and so deterministic whatever the thread count).
+#pragma once
+
+#include <btBulletDynamicsCommon.h>
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "models/outcome.h"
+
+class btMultiBodyDynamicsWorld;
+class btMultiBody;
+class btMultiBodyConstraint;
+
+namespace foresight {
+
+enum class BodyTag : int { kUntagged = 0, kCarpet, kBall, kPost, kNet, kObstacle, kKicker };
+
+// The contact kind the ball reports when it touches a body with this tag.
+Contact ContactOf(BodyTag tag);
+BodyTag TagOf(const btCollisionObject& object);
+
+// Collision groups: the kicking robot touches only the ball (its base is fixed, so carpet
+// contacts would only fight the motors).
+enum CollisionGroup : int {
+  kGroupStatic = 1 << 0,
+  kGroupBall = 1 << 1,
+  kGroupKicker = 1 << 2,
+};
+
+struct Material {
+  double restitution = 0.0;
+  double friction = 0.0;
+};
+
+class BulletWorld {
+ public:
+  enum class Kind { kRigid, kMultiBody };
+  BulletWorld(Kind kind, int solver_iterations);
+  ~BulletWorld();
+  BulletWorld(const BulletWorld&) = delete;
+  BulletWorld& operator=(const BulletWorld&) = delete;
+
+  btDiscreteDynamicsWorld& world() { return *world_; }
+  const btDiscreteDynamicsWorld& world() const { return *world_; }
+  btMultiBodyDynamicsWorld* multibody_world() { return multibody_world_; }
+
+  // Takes ownership of a shape and returns it for use in bodies of this world.
+  template <class Shape>
+  Shape* Own(std::unique_ptr<Shape> shape) {
+    Shape* raw = shape.get();
+    shapes_.push_back(std::move(shape));
+    return raw;
+  }
+  // A static body (posts, nets, carpet, obstacle robots).
+  btRigidBody* AddStatic(btCollisionShape* shape, const btTransform& pose_F, BodyTag tag,
+                         Material material);
+  // A dynamic rigid body; the ball.
+  btRigidBody* AddDynamic(btCollisionShape* shape, double mass_kg, const btTransform& pose_F,
+                          BodyTag tag, Material material, int group, int mask);
+  // Takes ownership of a multibody, its colliders and constraints (multibody worlds only).
+  btMultiBody* AddMultiBody(std::unique_ptr<btMultiBody> body);
+  void AddCollider(std::unique_ptr<btCollisionObject> collider, int group, int mask);
+  void AddConstraint(std::unique_ptr<btMultiBodyConstraint> constraint);
+
+ private:
+  // Declaration order is destruction order reversed: the world goes first.
+  std::unique_ptr<btCollisionConfiguration> config_;
+  std::unique_ptr<btCollisionDispatcher> dispatcher_;
+  std::unique_ptr<btBroadphaseInterface> broadphase_;
+  std::unique_ptr<btConstraintSolver> solver_;
+  std::vector<std::unique_ptr<btCollisionShape>> shapes_;
+  std::vector<std::unique_ptr<btCollisionObject>> objects_;
+  std::vector<std::unique_ptr<btMultiBody>> multibodies_;
+  std::vector<std::unique_ptr<btMultiBodyConstraint>> constraints_;
+  std::unique_ptr<btDiscreteDynamicsWorld> world_;
+  btMultiBodyDynamicsWorld* multibody_world_ = nullptr;
+};
+
+}  // namespace foresight

@@ -1,0 +1,47 @@
+#include "physics/carpet.h"
+
+#include <btBulletDynamicsCommon.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "models/random.h"
+
+namespace foresight {
+
+namespace {
+
+constexpr std::uint64_t kPatchDomain = 0x70a7c4;
+
+}  // namespace
+
+Carpet::Carpet(const CarpetParams& params, double trial_factor)
+    : params_(params), trial_factor_(trial_factor) {}
+
+double Carpet::DecelerationAt(const Vec2& p_F) const {
+  double factor = trial_factor_;
+  if (params_.patch_sigma_rel > 0.0) {
+    const auto ix = static_cast<std::int64_t>(std::floor(p_F.x() / params_.patch_size_m));
+    const auto iy = static_cast<std::int64_t>(std::floor(p_F.y() / params_.patch_size_m));
+    const std::uint64_t cell = (static_cast<std::uint64_t>(ix) << 32) ^
+                               static_cast<std::uint64_t>(iy & 0xffffffff);
+    RandomStream stream(StreamKey(params_.patch_seed, cell, kPatchDomain));
+    factor *= std::clamp(1.0 + params_.patch_sigma_rel * stream.NextNormal(), 0.5, 1.5);
+  }
+  return params_.rolling_deceleration_mps2 * factor;
+}
+
+void Carpet::ApplyRollingResistance(btRigidBody& ball, double radius_m, double dt_s) const {
+  const btVector3& p = ball.getCenterOfMassPosition();
+  if (!TouchesCarpet(p.z(), radius_m)) return;
+  btVector3 v = ball.getLinearVelocity();
+  v.setZ(0.0);
+  const double speed = v.length();
+  if (speed <= 0.0) return;
+  const double mass = 1.0 / ball.getInvMass();
+  const double k = 1.0 / (ball.getInvInertiaDiagLocal().x() * mass * radius_m * radius_m);
+  const double deceleration = std::min(DecelerationAt(Vec2(p.x(), p.y())), speed / dt_s);
+  ball.applyCentralForce(v * (-(1.0 + k) * mass * deceleration / speed));
+}
+
+}  // namespace foresight

@@ -1,0 +1,39 @@
+// The carpet's rolling resistance, applied to a Bullet ball as a central force.
+//
+// A ball rolling without slipping under a horizontal central force F (opposite to its velocity)
+// and the carpet's static friction f obeys  m dv/dt = -F + f,  I dw/dt = -f r,  v = w r, so
+//   dv/dt = -F / (m (1 + k)),  k = I / (m r^2)   (k = 2/5 for a solid sphere).
+// F = (1 + k) m a therefore decelerates it at exactly a and keeps it on its line at every
+// heading. Bullet's own rolling friction on a btRigidBody bends the path when the ball rolls off
+// the world axes (bullet3 issue #2117), which is why it is not used.
+//
+// a varies: by a factor per trial (the day's carpet, wear) and by a factor per square patch of
+// carpet (a fixed layout drawn from the patch seed). DESIGN.md, "The physics".
+#pragma once
+
+#include "models/geometry.h"
+#include "models/physics_params.h"
+
+class btRigidBody;
+
+namespace foresight {
+
+class Carpet {
+ public:
+  Carpet(const CarpetParams& params, double trial_factor);
+
+  // The deceleration of a freely rolling ball at p_F.
+  double DecelerationAt(const Vec2& p_F) const;
+  // Applies this step's resisting force to `ball` if it touches the carpet (the force is
+  // capped so it stops the ball within the step instead of pushing it backwards).
+  void ApplyRollingResistance(btRigidBody& ball, double radius_m, double dt_s) const;
+
+ private:
+  CarpetParams params_;
+  double trial_factor_;
+};
+
+// Whether a ball of this radius whose centre is at height z_m touches the carpet.
+inline bool TouchesCarpet(double z_m, double radius_m) { return z_m < radius_m + 1e-3; }
+
+}  // namespace foresight

@@ -1,0 +1,106 @@
+#include "physics/phases.h"
+
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/kicking_robot.h"
+
+namespace foresight {
+
+namespace {
+
+// A ball counts as launched once the robot has not touched it for this long ...
+constexpr double kReleaseTimeS = 0.02;
+// ... and its contact point slides slower than this share of its speed (or 1 cm/s).
+constexpr double kRollingSlipShare = 0.01;
+constexpr double kRollingSlipFloorMps = 0.01;
+// Once the motion is over this long without a touch, the kick missed.
+constexpr double kMissGraceS = 0.2;
+
+btRigidBody* AddBall(BulletWorld& world, const PhysicsScene& scene, const BallState& state) {
+  const BallSpec& spec = scene.field->ball;
+  auto* shape = world.Own(std::make_unique<btSphereShape>(spec.radius_m));
+  const MaterialParams& m = scene.params.materials;
+  btRigidBody* ball = world.AddDynamic(shape, spec.mass_kg, btTransform::getIdentity(),
+                                       BodyTag::kBall, {m.ball_restitution, m.ball_friction},
+                                       kGroupBall, kGroupStatic | kGroupKicker);
+  WriteBall(*ball, state);
+  return ball;
+}
+
+bool RollsFreely(const BallState& ball, double radius_m) {
+  if (!TouchesCarpet(ball.p_F.z(), radius_m) || std::abs(ball.v_F.z()) > 0.05) return false;
+  const double tolerance = std::max(kRollingSlipFloorMps, kRollingSlipShare * ball.PlanarSpeed());
+  return ball.SlipSpeed(radius_m) < tolerance;
+}
+
+}  // namespace
+
+PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const KickMotion& motion,
+                      const Eigen::Isometry3d& pose_F_root, double speed_factor,
+                      const BallState& ball_start, BallMonitor& monitor) {
+  const StepParams& steps = scene.params.steps;
+  const double dt = steps.kick_time_step_s;
+  const double radius = scene.field->ball.radius_m;
+  BulletWorld world(BulletWorld::Kind::kMultiBody, steps.solver_iterations);
+  AddStatics(world, scene);
+  btRigidBody* ball = AddBall(world, scene, ball_start);
+  KickingRobot robot(world, *scene.robot, pose_F_root, scene.standing_q_rad, scene.params, dt);
+  const double motion_end_s = motion.DurationS() / speed_factor;
+  PhaseEnd end;
+  end.ball = ball_start;
+  double last_touch_s = 0.0;
+  for (double t = 0.0; t < steps.max_kick_time_s;) {
+    robot.FollowMotion(motion, t, speed_factor);
+    carpet.ApplyRollingResistance(*ball, radius, dt);
+    world.world().stepSimulation(dt, 0, dt);
+    t += dt;
+    end.ball = ReadBall(*ball);
+    end.t_s = t;
+    const StepContacts contacts = ContactsOf(*world.world().getDispatcher(), *ball);
+    if (contacts.kicker) {
+      if (!end.touched) end.t_first_touch_s = t;
+      end.touched = true;
+      last_touch_s = t;
+    }
+    monitor.Observe(t, end.ball, contacts.other);
+    if (end.touched && t - last_touch_s >= kReleaseTimeS && RollsFreely(end.ball, radius)) {
+      end.launched = true;
+      break;
+    }
+    if (!end.touched && t > motion_end_s + kMissGraceS) break;
+  }
+  return end;
+}
+
+PhaseEnd RunRollPhase(const PhysicsScene& scene, const Carpet& carpet, const BallState& start,
+                      double t_start_s, BallMonitor& monitor) {
+  const StepParams& steps = scene.params.steps;
+  const double radius = scene.field->ball.radius_m;
+  BulletWorld world(BulletWorld::Kind::kRigid, steps.solver_iterations);
+  AddStatics(world, scene);
+  btRigidBody* ball = AddBall(world, scene, start);
+  PhaseEnd end;
+  end.ball = start;
+  end.t_s = t_start_s;
+  const double t_limit = t_start_s + steps.max_roll_time_s;
+  while (end.t_s < t_limit) {
+    const bool on_carpet = TouchesCarpet(end.ball.p_F.z(), radius);
+    if (on_carpet && end.ball.PlanarSpeed() < steps.rest_speed_mps &&
+        std::abs(end.ball.v_F.z()) < steps.rest_speed_mps) {
+      end.settled = true;
+      break;
+    }
+    const double dt = RollTimeStep(scene, end.ball.Planar(), end.ball.PlanarSpeed(), on_carpet);
+    carpet.ApplyRollingResistance(*ball, radius, dt);
+    world.world().stepSimulation(dt, 0, dt);
+    end.t_s += dt;
+    end.ball = ReadBall(*ball);
+    monitor.Observe(end.t_s, end.ball, ContactsOf(*world.world().getDispatcher(), *ball).other);
+  }
+  return end;
+}
+
+}  // namespace foresight

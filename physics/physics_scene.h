@@ -1,0 +1,52 @@
+// The immutable model of one physics scene (the MuJoCo split: this is the model, each trial
+// builds its own Bullet world from it): field, carpet and materials, the robot type, and the
+// other robots standing as static obstacles.
+//
+// Goals in F (for the goal at side s = +1 opponent, -1 own): posts are z-axis cylinders of
+// post_radius at (s * post_centre_x, +-post_centre_y) up to net_height; the crossbar joins their
+// tops; the side nets, the back net and the roof are boxes of net_thickness whose inner faces lie
+// on the coarse model's net lines (y = +-post_centre_y, x = s * (post_centre_x + net_depth)).
+#pragma once
+
+#include <vector>
+
+#include "models/field_lines.h"
+#include "models/field_spec.h"
+#include "models/physics_params.h"
+#include "models/robot_spec.h"
+#include "models/situation.h"
+#include "physics/bullet_world.h"
+
+namespace foresight {
+
+// A circle in the carpet's plane; inside it the ball rolls with the small time step.
+struct NearZone {
+  Vec2 centre{0.0, 0.0};
+  double radius_m = 0.0;
+};
+
+struct PhysicsScene {
+  const FieldSpec* field = nullptr;
+  PhysicsParams params;
+  FieldLines lines;
+  const Robot* robot = nullptr;          // the kicking robot's type; obstacles are of it too
+  std::vector<Pose2> obstacle_poses;     // robots standing still, root frame on the carpet
+  std::vector<NearZone> near_zones;      // goals and obstacles, grown by the ball's radius
+  std::vector<double> standing_q_rad;    // the robot's standing joint positions
+};
+
+// Builds the scene of a situation: the obstacles stand where the situation puts them, facing
+// the ball. `robot` may be null when the situation has no obstacles and no kick is simulated.
+PhysicsScene MakePhysicsScene(const FieldSpec& field, const PhysicsParams& params,
+                              const Robot* robot, const std::vector<Obstacle>& obstacles,
+                              const Vec2& p_F_ball);
+
+// Adds carpet, goals and obstacle robots to a world.
+void AddStatics(BulletWorld& world, const PhysicsScene& scene);
+
+// Time step for a ball at p_F moving at speed_mps: small near goals and obstacles (and in the
+// air), large on open carpet, so a fast ball never crosses a post or a net within one step.
+double RollTimeStep(const PhysicsScene& scene, const Vec2& p_F, double speed_mps,
+                    bool on_carpet);
+
+}  // namespace foresight

@@ -1,0 +1,95 @@
+#include "physics/trial.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "models/random.h"
+#include "physics/bullet_convert.h"
+#include "physics/phases.h"
+
+namespace foresight {
+
+namespace {
+
+// Normal draws are clipped at 3 sigma: a robot never stands a metre off.
+double ClippedNormal(RandomStream& stream) { return std::clamp(stream.NextNormal(), -3.0, 3.0); }
+
+Outcome Finish(const BallMonitor& monitor, const PhaseEnd& end, double t_zero_s) {
+  Outcome outcome;
+  outcome.p_F_rest = end.ball.Planar();
+  outcome.category = monitor.category();
+  outcome.first_contact = monitor.first_contact();
+  outcome.time_s = std::max(0.0, end.t_s - t_zero_s);
+  return outcome;
+}
+
+}  // namespace
+
+TrialDraw DrawTrial(const TrialVariation& variation, const CarpetParams& carpet,
+                    std::uint64_t stream_key) {
+  RandomStream stream(stream_key);
+  TrialDraw draw;
+  draw.placement_dx_m = variation.placement_sigma_x_m * ClippedNormal(stream);
+  draw.placement_dy_m = variation.placement_sigma_y_m * ClippedNormal(stream);
+  draw.placement_dtheta_rad = variation.placement_sigma_theta_rad * ClippedNormal(stream);
+  draw.speed_factor = 1.0 + variation.motion_speed_sigma_rel * ClippedNormal(stream);
+  draw.carpet_factor = 1.0 + carpet.deceleration_sigma_rel * ClippedNormal(stream);
+  return draw;
+}
+
+TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request) {
+  const Robot& robot = *scene.robot;
+  const KickMotion& motion = robot.motions[request.motion_index];
+  TrialResult result;
+  result.draw = DrawTrial(robot.spec.variation, scene.params.carpet, request.stream);
+  const TrialDraw& d = result.draw;
+  const Carpet carpet(scene.params.carpet, d.carpet_factor);
+
+  // The robot stands so the ball lies at the motion's nominal spot, give or take its placement.
+  const double intended_heading = request.state.robot.theta_rad + request.rotation_rad;
+  const double heading = intended_heading + d.placement_dtheta_rad;
+  const Vec2 p_R_ball = motion.p_R_ball + Vec2(d.placement_dx_m, d.placement_dy_m);
+  const Vec2 p_F_ball = request.state.p_F_ball;
+  const Vec2 p_F_root = p_F_ball - Eigen::Rotation2Dd(heading) * p_R_ball;
+  const Eigen::Isometry3d pose_F_root =
+      PlanarPose(p_F_root.x(), p_F_root.y(), robot.spec.base_height_m, heading);
+
+  const double radius = scene.field->ball.radius_m;
+  BallMonitor monitor(scene.lines, p_F_ball, request.record_trace);
+  const BallState ball = RollingBall(p_F_ball, radius, 0.0, 0.0);
+  const PhaseEnd kick = RunKickPhase(scene, carpet, motion, pose_F_root, d.speed_factor, ball, monitor);
+  result.touched = kick.touched;
+  result.launched = kick.launched;
+  const double t_zero = kick.touched ? kick.t_first_touch_s : kick.t_s;
+  if (kick.touched) {
+    const Vec2 v = kick.ball.v_F.head<2>();
+    result.launch_speed_mps = v.norm();
+    result.launch_direction_rad = WrapAngle(std::atan2(v.y(), v.x()) - intended_heading);
+    result.p_F_launch = kick.ball.Planar();
+    result.t_launch_s = kick.t_s - t_zero;
+  }
+  const PhaseEnd roll = RunRollPhase(scene, carpet, kick.ball, kick.t_s, monitor);
+  result.settled = roll.settled;
+  result.outcome = Finish(monitor, roll, t_zero);
+  result.trace = std::move(monitor.trace());
+  return result;
+}
+
+TrialResult RunRollTrial(const PhysicsScene& scene, const BallState& start, std::uint64_t stream,
+                         bool record_trace) {
+  TrialResult result;
+  result.draw = DrawTrial(TrialVariation{}, scene.params.carpet, stream);
+  const Carpet carpet(scene.params.carpet, result.draw.carpet_factor);
+  BallMonitor monitor(scene.lines, start.Planar(), record_trace);
+  const PhaseEnd roll = RunRollPhase(scene, carpet, start, 0.0, monitor);
+  result.touched = result.launched = true;
+  result.launch_speed_mps = start.PlanarSpeed();
+  result.launch_direction_rad = std::atan2(start.v_F.y(), start.v_F.x());
+  result.p_F_launch = start.Planar();
+  result.settled = roll.settled;
+  result.outcome = Finish(monitor, roll, 0.0);
+  result.trace = std::move(monitor.trace());
+  return result;
+}
+
+}  // namespace foresight

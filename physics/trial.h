@@ -1,0 +1,60 @@
+// One physics trial: a robot kicks the ball (or a ball is set rolling) and the ball comes to rest.
+//
+// The variation between trials comes only from physical causes, drawn from the trial's own
+// stream (DESIGN.md: never from the kick model's sigmas): the robot's placement relative to the
+// ball (x, y in R, heading), the motion's playback speed, and the carpet's deceleration factor.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "models/outcome.h"
+#include "physics/ball_state.h"
+#include "physics/physics_scene.h"
+
+namespace foresight {
+
+struct TrialDraw {
+  double placement_dx_m = 0.0;      // ball offset error along R's x
+  double placement_dy_m = 0.0;      // ... along R's y
+  double placement_dtheta_rad = 0.0;
+  double speed_factor = 1.0;        // motion playback speed (1 = as written)
+  double carpet_factor = 1.0;       // factor on the carpet's deceleration
+};
+
+TrialDraw DrawTrial(const TrialVariation& variation, const CarpetParams& carpet,
+                    std::uint64_t stream);
+
+struct TrialResult {
+  Outcome outcome;
+  TrialDraw draw;
+  bool touched = false;   // the robot hit the ball
+  bool launched = false;  // ... and it left the foot rolling without sliding within the kick phase
+  bool settled = false;   // it came to rest within the time limit
+  // The launch: the ball's speed and direction once it rolls freely after the kick. The
+  // direction is in the intended robot frame (the robot's heading after the turn around the
+  // ball, before the placement error), so placement errors show up in it as they would on a
+  // real robot.
+  double launch_speed_mps = 0.0;
+  double launch_direction_rad = 0.0;
+  Vec2 p_F_launch{0.0, 0.0};
+  double t_launch_s = 0.0;  // since the first touch
+  std::vector<TracePoint> trace;  // filled on request; times since the motion's start
+};
+
+struct KickRequest {
+  DrawnState state;           // robot pose (heading before the turn) and ball position in F
+  int motion_index = 0;       // into scene.robot->motions
+  double rotation_rad = 0.0;  // turn around the ball before the kick
+  std::uint64_t stream = 0;
+  bool record_trace = false;
+};
+
+TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request);
+
+// A ball set rolling (without a robot) on the scene's carpet: the free-roll checks and bench.
+// `stream` draws the carpet factor only.
+TrialResult RunRollTrial(const PhysicsScene& scene, const BallState& start, std::uint64_t stream,
+                         bool record_trace);
+
+}  // namespace foresight

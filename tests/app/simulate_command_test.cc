@@ -1,0 +1,100 @@
+// `foresight simulate` against the real binary: the JSON contract, byte-identical output for the
+// same seed whatever the thread count, SVG and CSV files, and one-line errors for bad input.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "tests/app/run_foresight.h"
+
+namespace {
+
+using foresight::testing::CountOf;
+using foresight::testing::ReadFile;
+using foresight::testing::RunResult;
+using foresight::testing::ShippedSituation;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+class SimulateCommandTest : public foresight::testing::ForesightRun {
+ protected:
+  RunResult Simulate(std::vector<std::string> args) const {
+    args.insert(args.begin(), "simulate");
+    return Run(args);
+  }
+  std::vector<std::string> OpenGoal(const std::string& kick, int trials) const {
+    return {"--situation", ShippedSituation("open_goal").string(), "--kick", kick, "--trials",
+            std::to_string(trials)};
+  }
+};
+
+TEST_F(SimulateCommandTest, JsonHasEveryTrialAndSharesThatAddUp) {
+  std::vector<std::string> args = OpenGoal("forward", 4);
+  args.push_back("--json");
+  const RunResult r = Simulate(args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["command"], "simulate");
+  EXPECT_EQ(j["robot"], "nao");
+  EXPECT_EQ(j["trials_detail"].size(), 4u);
+  double total = 0.0;
+  for (const auto& [name, share] : j["summary"]["category_shares"].items()) total += share.get<double>();
+  EXPECT_DOUBLE_EQ(total, 1.0);
+  EXPECT_EQ(j["summary"]["touched"], 4);
+}
+
+TEST_F(SimulateCommandTest, SameSeedSameBytesWithOneThreadOrTwo) {
+  std::vector<std::string> args = OpenGoal("side_kick_left", 4);
+  args.insert(args.end(), {"--json", "--seed", "17", "--svg", "rest.svg", "--trace", "trace.csv"});
+  std::vector<std::string> one = args, two = args;
+  one.insert(one.end(), {"--threads", "1"});
+  two.insert(two.end(), {"--threads", "2"});
+  const RunResult a = Simulate(one);
+  const std::string svg_a = ReadFile(work() / "rest.svg"), csv_a = ReadFile(work() / "trace.csv");
+  const RunResult b = Simulate(two);
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  EXPECT_EQ(a.out, b.out);
+  EXPECT_EQ(svg_a, ReadFile(work() / "rest.svg"));
+  EXPECT_EQ(csv_a, ReadFile(work() / "trace.csv"));
+  EXPECT_THAT(svg_a, HasSubstr("<svg"));
+  EXPECT_THAT(csv_a, StartsWith("trial,t_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps\n"));
+  EXPECT_GT(CountOf(csv_a, "\n3,"), 10);  // the fourth trial has a trajectory
+}
+
+struct BadSimulate {
+  std::string name;
+  std::vector<std::string> extra;  // after --situation open_goal
+  std::string message;
+};
+
+void PrintTo(const BadSimulate& c, std::ostream* os) { *os << c.name; }
+
+class SimulateErrorTest : public SimulateCommandTest,
+                          public ::testing::WithParamInterface<BadSimulate> {};
+
+TEST_P(SimulateErrorTest, OneLineExitTwoNothingWritten) {
+  std::vector<std::string> args = {"--situation", ShippedSituation("open_goal").string(), "--svg",
+                                   "out.svg"};
+  args.insert(args.end(), GetParam().extra.begin(), GetParam().extra.end());
+  const RunResult r = Simulate(args);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_THAT(r.err, StartsWith("foresight: error: "));
+  EXPECT_EQ(CountOf(r.err, "\n"), 1) << r.err;
+  EXPECT_THAT(r.err, HasSubstr(GetParam().message));
+  EXPECT_TRUE(Listing().empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, SimulateErrorTest,
+    ::testing::Values(
+        BadSimulate{"UnknownKick", {"--kick", "bicycle"}, "--kick: no kick 'bicycle'"},
+        BadSimulate{"ZeroTrials", {"--kick", "forward", "--trials", "0"}, "--trials: must be"},
+        BadSimulate{"TextTrials", {"--kick", "forward", "--trials", "many"}, "got 'many'"},
+        BadSimulate{"NanRotation", {"--kick", "forward", "--rotation", "nan"}, "--rotation"},
+        BadSimulate{"MissingPhysics", {"--kick", "forward", "--physics", "nope.json"}, "nope.json"},
+        BadSimulate{"NegativeThreads", {"--kick", "forward", "--threads", "-1"}, "--threads"}),
+    [](const ::testing::TestParamInfo<BadSimulate>& info) { return info.param.name; });
+
+}  // namespace

@@ -1,0 +1,354 @@
+#include "models/robot_spec.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "models/checks.h"
+#include "models/geometry.h"
+#include "tests/models/model_test_util.h"
+#include "tests/support/test_situations.h"
+
+namespace foresight {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::InputErrorMessage;
+using testing::ModelsDir;
+using testing::ReplaceOnce;
+using ::testing::StartsWith;
+
+constexpr const char* kSpec = R"({
+  "name": "tester",
+  "notes": "a two-joint leg for the loader tests",
+  "urdf": "tester.urdf",
+  "base_height_m": 0.3,
+  "standing_pose_deg": {"KneePitch": 40.0, "HipPitch": -20.0},
+  "kicks": [
+    {"name": "forward", "motion": "motions/forward.json"},
+    {"name": "side", "motion": "motions/side.json"}
+  ],
+  "trial_variation": {
+    "placement_sigma_x_m": 0.01,
+    "placement_sigma_y_m": 0.02,
+    "placement_sigma_theta_deg": 2.0,
+    "motion_speed_sigma_rel": 0.05
+  }
+})";
+
+// base -(HipPitch)- thigh -(KneePitch)- shank -(SoleFixed)- sole.
+constexpr const char* kUrdf = R"(<robot name="tester">
+  <link name="base"><inertial><mass value="1.0"/>
+    <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+  <link name="thigh"><inertial><mass value="0.3"/>
+    <inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.001"/></inertial></link>
+  <link name="shank"><inertial><mass value="0.2"/>
+    <inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.001"/></inertial></link>
+  <link name="sole"><inertial><mass value="0.1"/>
+    <inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.001"/></inertial></link>
+  <joint name="HipPitch" type="revolute"><parent link="base"/><child link="thigh"/>
+    <axis xyz="0 1 0"/><limit lower="-1.5" upper="0.5" effort="1" velocity="6"/></joint>
+  <joint name="KneePitch" type="revolute"><parent link="thigh"/><child link="shank"/>
+    <axis xyz="0 1 0"/><limit lower="0" upper="2" effort="1" velocity="6"/></joint>
+  <joint name="SoleFixed" type="fixed"><parent link="shank"/><child link="sole"/></joint>
+</robot>
+)";
+
+constexpr const char* kForward = R"({
+  "name": "forward", "ball_x_m": 0.15, "ball_y_m": -0.05,
+  "joints": ["KneePitch", "HipPitch"],
+  "keyframes": [
+    {"time_s": 0.0, "positions_deg": [40.0, -20.0]},
+    {"time_s": 0.2, "positions_deg": [100.0, -60.0]},
+    {"time_s": 0.4, "positions_deg": [40.0, -20.0]}
+  ]
+})";
+
+constexpr const char* kSide = R"({
+  "name": "side", "ball_x_m": 0.1, "ball_y_m": 0.1, "joints": ["HipPitch"],
+  "keyframes": [{"time_s": 0.0, "positions_deg": [-20.0]}, {"time_s": 0.5, "positions_deg": [10.0]}]
+})";
+
+struct Edit {
+  std::string file;  // "robot.json", "tester.urdf", "motions/forward.json", "motions/side.json"
+  std::string from, to;
+};
+
+// A models folder of its own for the test `test` (ctest runs tests in parallel processes) with
+// robots/tester/ holding the files above, `edit` applied; returns the models folder.
+std::filesystem::path TesterModels(const std::string& test, const Edit& edit = {}) {
+  const std::filesystem::path models =
+      std::filesystem::temp_directory_path() / "foresight_tests" / ("robot_spec_" + test);
+  const std::filesystem::path dir = models / "robots" / "tester";
+  std::filesystem::create_directories(dir / "motions");
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {"robot.json", kSpec},
+      {"tester.urdf", kUrdf},
+      {"motions/forward.json", kForward},
+      {"motions/side.json", kSide}};
+  for (const auto& [name, text] : files) {
+    const std::string written = name == edit.file ? ReplaceOnce(text, edit.from, edit.to) : text;
+    std::ofstream(dir / name) << written;
+  }
+  return models;
+}
+
+std::filesystem::path SpecFile(const std::filesystem::path& models) {
+  return models / "robots" / "tester" / "robot.json";
+}
+
+std::string SpecError(const std::string& test, const std::string& from, const std::string& to,
+                      std::filesystem::path* file) {
+  *file = SpecFile(TesterModels(test, {"robot.json", from, to}));
+  return InputErrorMessage([&] { LoadRobotSpec(*file); });
+}
+
+std::string RobotError(const std::filesystem::path& models) {
+  return InputErrorMessage([&] { LoadRobot("tester", models); });
+}
+
+TEST(RobotSpecTest, LoadsNameHeightAndResolvesPathsFromItsFolder) {
+  const std::filesystem::path models = TesterModels("paths");
+  const RobotSpec spec = LoadRobotSpec(SpecFile(models));
+  const std::filesystem::path dir = models / "robots" / "tester";
+  EXPECT_EQ(spec.name, "tester");
+  EXPECT_EQ(spec.urdf_file, dir / "tester.urdf");
+  EXPECT_EQ(spec.base_height_m, 0.3);
+  ASSERT_EQ(spec.kick_motion_files.size(), 2u);
+  EXPECT_EQ(spec.kick_motion_files[0].first, "forward");
+  EXPECT_EQ(spec.kick_motion_files[0].second, dir / "motions" / "forward.json");
+  EXPECT_EQ(spec.kick_motion_files[1].first, "side");
+  EXPECT_EQ(spec.kick_motion_files[1].second, dir / "motions" / "side.json");
+}
+
+TEST(RobotSpecTest, ConvertsDegreesOnce) {
+  const RobotSpec spec = LoadRobotSpec(SpecFile(TesterModels("degrees")));
+  ASSERT_EQ(spec.standing_pose_rad.size(), 2u);  // sorted by joint name
+  EXPECT_EQ(spec.standing_pose_rad[0].first, "HipPitch");
+  EXPECT_DOUBLE_EQ(spec.standing_pose_rad[0].second, -20.0 * kDegToRad);
+  EXPECT_EQ(spec.standing_pose_rad[1].first, "KneePitch");
+  EXPECT_DOUBLE_EQ(spec.standing_pose_rad[1].second, 40.0 * kDegToRad);
+  EXPECT_EQ(spec.variation.placement_sigma_x_m, 0.01);
+  EXPECT_EQ(spec.variation.placement_sigma_y_m, 0.02);
+  EXPECT_DOUBLE_EQ(spec.variation.placement_sigma_theta_rad, 2.0 * kDegToRad);
+  EXPECT_EQ(spec.variation.motion_speed_sigma_rel, 0.05);
+}
+
+TEST(RobotSpecTest, BaseHeightMustBePositive) {
+  std::filesystem::path file;
+  const std::string message =
+      SpecError("zero_height", "\"base_height_m\": 0.3", "\"base_height_m\": 0", &file);
+  EXPECT_EQ(message, file.string() + ": base_height_m: must be > 0, got 0");
+}
+
+TEST(RobotSpecTest, NegativePlacementSigmaIsRejected) {
+  std::filesystem::path file;
+  const std::string message = SpecError("negative_sigma", "\"placement_sigma_y_m\": 0.02",
+                                        "\"placement_sigma_y_m\": -0.02", &file);
+  EXPECT_EQ(message,
+            file.string() + ": trial_variation.placement_sigma_y_m: must be >= 0, got -0.02");
+}
+
+TEST(RobotSpecTest, NegativeHeadingSigmaIsReportedInDegrees) {
+  std::filesystem::path file;
+  const std::string message = SpecError("negative_theta", "\"placement_sigma_theta_deg\": 2.0",
+                                        "\"placement_sigma_theta_deg\": -2.5", &file);
+  EXPECT_EQ(message,
+            file.string() + ": trial_variation.placement_sigma_theta_deg: must be >= 0, got -2.5");
+}
+
+TEST(RobotSpecTest, MotionSpeedSigmaMustStayBelowOneHalf) {
+  std::filesystem::path file;
+  const std::string message = SpecError("speed_sigma", "\"motion_speed_sigma_rel\": 0.05",
+                                        "\"motion_speed_sigma_rel\": 0.5", &file);
+  EXPECT_EQ(message,
+            file.string() + ": trial_variation.motion_speed_sigma_rel: must be < 0.5, got 0.5");
+}
+
+TEST(RobotSpecTest, DuplicateKickNameIsRejected) {
+  std::filesystem::path file;
+  const std::string message =
+      SpecError("duplicate_kick", "\"name\": \"side\"", "\"name\": \"forward\"", &file);
+  EXPECT_EQ(message, file.string() + ": kicks[1].name: duplicate 'forward'");
+}
+
+TEST(RobotSpecTest, EmptyKickNameIsRejected) {
+  std::filesystem::path file;
+  const std::string message =
+      SpecError("empty_kick", "\"name\": \"side\"", "\"name\": \"\"", &file);
+  EXPECT_EQ(message, file.string() + ": kicks[1].name: must not be empty");
+}
+
+TEST(RobotSpecTest, RobotWithoutKicksIsRejected) {
+  std::filesystem::path file;
+  const std::string message = SpecError("no_kicks", R"([
+    {"name": "forward", "motion": "motions/forward.json"},
+    {"name": "side", "motion": "motions/side.json"}
+  ])",
+                                        "[]", &file);
+  EXPECT_EQ(message, file.string() + ": kicks: must list at least one kick");
+}
+
+TEST(RobotSpecTest, UnknownVariationFieldIsRejected) {
+  std::filesystem::path file;
+  const std::string message =
+      SpecError("typo", "\"placement_sigma_x_m\"", "\"placement_sigma_m\"", &file);
+  EXPECT_EQ(message, file.string() + ": trial_variation.placement_sigma_m: unknown field");
+}
+
+TEST(RobotSpecTest, StandingPoseValuesMustBeNumbers) {
+  std::filesystem::path file;
+  const std::string message =
+      SpecError("pose_type", "\"KneePitch\": 40.0", "\"KneePitch\": \"bent\"", &file);
+  EXPECT_EQ(message,
+            file.string() + ": standing_pose_deg.KneePitch: must be a number, got \"bent\"");
+}
+
+TEST(RobotSpecTest, MissingTrialVariationIsNamed) {
+  std::filesystem::path file;
+  const std::string message = SpecError("no_variation", R"(,
+  "trial_variation": {
+    "placement_sigma_x_m": 0.01,
+    "placement_sigma_y_m": 0.02,
+    "placement_sigma_theta_deg": 2.0,
+    "motion_speed_sigma_rel": 0.05
+  })",
+                                        "", &file);
+  EXPECT_EQ(message, file.string() + ": trial_variation: missing");
+}
+
+TEST(RobotSpecTest, LoadRobotAssemblesSpecModelAndMotions) {
+  const Robot robot = LoadRobot("tester", TesterModels("assemble"));
+  EXPECT_EQ(robot.spec.name, "tester");
+  EXPECT_EQ(robot.model.name, "tester");
+  EXPECT_EQ(robot.model.joints.size(), 3u);
+  ASSERT_EQ(robot.motions.size(), 2u);
+  EXPECT_EQ(robot.motions[0].name, "forward");
+  EXPECT_EQ(robot.motions[1].name, "side");
+  EXPECT_EQ(robot.FindMotion("forward"), 0);
+  EXPECT_EQ(robot.FindMotion("side"), 1);
+  EXPECT_EQ(robot.FindMotion("Side"), std::nullopt);
+}
+
+TEST(RobotSpecTest, StandingPositionsFollowTheModelsJointOrder) {
+  const Robot robot = LoadRobot("tester", TesterModels("standing"));
+  // Joints in model order: HipPitch, KneePitch, SoleFixed (fixed, not named: 0).
+  const std::vector<double> expected = {-20.0 * kDegToRad, 40.0 * kDegToRad, 0.0};
+  EXPECT_EQ(robot.StandingPositions(), expected);
+}
+
+TEST(RobotSpecTest, UnknownRobotListsTheAvailableOnes) {
+  const std::filesystem::path models = TesterModels("unknown_robot");
+  EXPECT_EQ(InputErrorMessage([&] { LoadRobot("robonova", models); }),
+            "no robot 'robonova' in " + (models / "robots").string() + " (available: tester)");
+}
+
+TEST(RobotSpecTest, SpecNameMustMatchItsFolder) {
+  const std::filesystem::path models =
+      TesterModels("name_mismatch", {"robot.json", "\"name\": \"tester\"", "\"name\": \"other\""});
+  EXPECT_EQ(RobotError(models), SpecFile(models).string() +
+                                    ": name: must be 'tester' (the robot's folder), got 'other'");
+}
+
+TEST(RobotSpecTest, StandingPoseJointMustExistInTheUrdf) {
+  const std::filesystem::path models = TesterModels(
+      "pose_unknown_joint", {"robot.json", "\"KneePitch\": 40.0", "\"AnklePitch\": 40.0"});
+  EXPECT_EQ(RobotError(models),
+            SpecFile(models).string() + ": standing_pose_deg.AnklePitch: 'AnklePitch' is not a " +
+                "joint of " + (models / "robots" / "tester" / "tester.urdf").string());
+}
+
+TEST(RobotSpecTest, StandingPoseCannotMoveAFixedJoint) {
+  const std::filesystem::path models =
+      TesterModels("pose_fixed_joint", {"robot.json", "\"KneePitch\": 40.0", "\"SoleFixed\": 0.0"});
+  EXPECT_THAT(RobotError(models),
+              StartsWith(SpecFile(models).string() +
+                         ": standing_pose_deg.SoleFixed: 'SoleFixed' is a fixed joint in "));
+}
+
+TEST(RobotSpecTest, StandingPoseMustLieWithinTheLimits) {
+  const std::filesystem::path models = TesterModels(
+      "pose_beyond_limit", {"robot.json", "\"HipPitch\": -20.0", "\"HipPitch\": 45.0"});
+  const std::string message = RobotError(models);
+  EXPECT_THAT(message, StartsWith(SpecFile(models).string() +
+                                  ": standing_pose_deg.HipPitch: 45 deg is outside the joint's "
+                                  "limits [-85.9"));
+  EXPECT_THAT(message, HasSubstr(", 28.6"));
+  EXPECT_THAT(message, HasSubstr("] deg"));
+}
+
+TEST(RobotSpecTest, MotionJointMustExistInTheUrdf) {
+  const std::filesystem::path models =
+      TesterModels("motion_unknown_joint", {"motions/side.json", "[\"HipPitch\"]", "[\"Tail\"]"});
+  const std::filesystem::path motion = models / "robots" / "tester" / "motions" / "side.json";
+  EXPECT_THAT(RobotError(models),
+              StartsWith(motion.string() + ": joints[0]: 'Tail' is not a joint of "));
+}
+
+TEST(RobotSpecTest, KeyframeBeyondALimitNamesFileKeyframeJointValueAndLimits) {
+  const std::filesystem::path models = TesterModels(
+      "motion_beyond_limit", {"motions/forward.json", "[100.0, -60.0]", "[130.0, -60.0]"});
+  const std::filesystem::path motion = models / "robots" / "tester" / "motions" / "forward.json";
+  EXPECT_EQ(RobotError(models),
+            motion.string() +
+                ": keyframes[1].positions_deg[0] (KneePitch): 130 deg is outside the joint's "
+                "limits [0, " +
+                FormatNumber(2.0 * kRadToDeg) + "] deg");
+}
+
+TEST(RobotSpecTest, BrokenUrdfFailsTheRobot) {
+  const std::filesystem::path models =
+      TesterModels("broken_urdf",
+                   {"tester.urdf", R"(<limit lower="0" upper="2" effort="1" velocity="6"/>)", ""});
+  EXPECT_EQ(RobotError(models), (models / "robots" / "tester" / "tester.urdf").string() +
+                                    ": joint KneePitch: revolute joint has no <limit>");
+}
+
+TEST(RobotSpecTest, MotionMustCarryItsKicksName) {
+  const std::filesystem::path models = TesterModels(
+      "motion_name", {"motions/side.json", "\"name\": \"side\"", "\"name\": \"forward\""});
+  const std::filesystem::path motion = models / "robots" / "tester" / "motions" / "side.json";
+  EXPECT_EQ(RobotError(models), motion.string() + ": name: must be 'side' (the kick in " +
+                                    SpecFile(models).string() + "), got 'forward'");
+}
+
+TEST(RobotSpecTest, NotesAreNotAJointOfTheStandingPose) {
+  const std::filesystem::path models = TesterModels(
+      "pose_notes",
+      {"robot.json", "\"KneePitch\": 40.0", "\"notes\": \"bent knees\", \"KneePitch\": 40.0"});
+  EXPECT_EQ(LoadRobotSpec(SpecFile(models)).standing_pose_rad.size(), 2u);
+}
+
+TEST(RobotSpecTest, MissingMotionFileIsNamed) {
+  const std::filesystem::path models =
+      TesterModels("missing_motion", {"robot.json", "motions/side.json", "motions/no_such.json"});
+  EXPECT_EQ(
+      RobotError(models),
+      (models / "robots" / "tester" / "motions" / "no_such.json").string() + ": cannot open file");
+}
+
+// The shipped robots: each loads with its body and three kick motions that fit its joints.
+TEST(RobotSpecTest, ShippedNaoLoadsWithThreeKicks) {
+  const Robot nao = LoadRobot("nao", ModelsDir());
+  EXPECT_EQ(nao.model.links.size(), 25u);
+  EXPECT_EQ(nao.motions.size(), 3u);
+  EXPECT_EQ(nao.StandingPositions().size(), nao.model.joints.size());
+  for (const auto& [kick, file] : nao.spec.kick_motion_files) {
+    EXPECT_TRUE(nao.FindMotion(kick).has_value()) << kick;
+  }
+}
+
+TEST(RobotSpecTest, ShippedAiboLoadsWithThreeKicks) {
+  const Robot aibo = LoadRobot("aibo_ers7", ModelsDir());
+  EXPECT_EQ(aibo.model.links.size(), 16u);
+  EXPECT_EQ(aibo.motions.size(), 3u);
+  EXPECT_EQ(aibo.StandingPositions().size(), aibo.model.joints.size());
+}
+
+}  // namespace
+}  // namespace foresight

@@ -1,0 +1,103 @@
+// The robots' kicks in physics: the ball goes where each kick should send it, at a plausible
+// speed, and the same seed gives the same trials whatever the thread count.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "models/geometry.h"
+#include "models/kick_model.h"
+#include "physics/physics_simulator.h"
+#include "tests/physics/physics_test_scenes.h"
+#include "tests/support/test_situations.h"
+#include "validation/physics_runs.h"
+
+namespace foresight {
+namespace {
+
+constexpr int kTrials = 12;
+
+struct KickCase {
+  const char* robot;
+  const char* field;
+  const char* kicks;
+  const char* kick;
+  double direction_deg;  // where the ball must go, in the robot frame
+  double tolerance_deg;
+  double min_speed_mps;
+  double max_speed_mps;
+};
+
+void PrintTo(const KickCase& c, std::ostream* os) { *os << c.robot << " " << c.kick; }
+
+class KickTest : public ::testing::TestWithParam<KickCase> {};
+
+TEST_P(KickTest, SendsTheBallTheWayTheKickShould) {
+  const KickCase c = GetParam();
+  const auto data = testing::LoadPhysicsFixture(c.field, false, c.robot);
+  const KickModel kicks = LoadKickModel(testing::ModelsDir() / "kicks" / (std::string(c.kicks) + ".json"));
+  // The robot at the centre circle, turned 30 degrees, so the kick does not run along an axis.
+  const DrawnState state{Pose2{Vec2(-0.3, 0.2), 30.0 * kDegToRad}, Vec2(-0.3, 0.2)};
+  const PhysicsSimulator simulator(testing::SceneOf(*data, {}, state.p_F_ball), kicks);
+  KickTrialsRequest request;
+  request.state = state;
+  request.kick_index = *kicks.Find(c.kick);
+  request.trials = kTrials;
+  request.seed = 11;
+  const std::vector<TrialResult> results = RunKickTrials(simulator, request);
+  const TrialSummary summary = Summarize(results);
+  EXPECT_EQ(summary.touched, kTrials);
+  EXPECT_EQ(summary.launched, kTrials);
+  EXPECT_EQ(summary.settled, kTrials);
+  EXPECT_NEAR(summary.launch_direction_mean_rad * kRadToDeg, c.direction_deg, c.tolerance_deg);
+  EXPECT_GT(summary.launch_speed_mean_mps, c.min_speed_mps);
+  EXPECT_LT(summary.launch_speed_mean_mps, c.max_speed_mps);
+  // The physical causes do make the trials differ.
+  EXPECT_GT(summary.launch_speed_sd_mps, 0.0);
+  EXPECT_GT(summary.launch_direction_sd_rad, 0.0);
+  // The ball rests where its launch direction points, in F.
+  const Vec2 travel = summary.rest_mean_F - state.p_F_ball;
+  const double travel_deg = WrapAngle(std::atan2(travel.y(), travel.x()) - state.robot.theta_rad) * kRadToDeg;
+  EXPECT_NEAR(travel_deg, c.direction_deg, c.tolerance_deg + 5.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Kicks, KickTest,
+    ::testing::Values(KickCase{"nao", "spl", "nao", "forward", 0.0, 10.0, 0.5, 3.0},
+                      KickCase{"nao", "spl", "nao", "side_kick_left", 90.0, 30.0, 0.2, 3.0},
+                      KickCase{"nao", "spl", "nao", "side_kick_right", -90.0, 30.0, 0.2, 3.0},
+                      KickCase{"aibo_ers7", "four_legged", "aibo_ers7", "forward", 0.0, 15.0, 0.3, 3.0},
+                      KickCase{"aibo_ers7", "four_legged", "aibo_ers7", "head_kick_left", 90.0, 35.0, 0.2, 3.0},
+                      KickCase{"aibo_ers7", "four_legged", "aibo_ers7", "head_kick_right", -90.0, 35.0, 0.2, 3.0}),
+    [](const ::testing::TestParamInfo<KickCase>& info) {
+      return std::string(info.param.robot) + "_" + info.param.kick;
+    });
+
+TEST(KickDeterminismTest, SameSeedSameTrialsWithOneThreadOrSeveral) {
+  const auto data = testing::LoadPhysicsFixture("spl", false, "nao");
+  const KickModel kicks = LoadKickModel(testing::ModelsDir() / "kicks" / "nao.json");
+  const DrawnState state{Pose2{Vec2(3.2, 0.5), 10.0 * kDegToRad}, Vec2(3.35, 0.5)};
+  const PhysicsSimulator simulator(testing::SceneOf(*data, {}, state.p_F_ball), kicks);
+  KickTrialsRequest request;
+  request.state = state;
+  request.kick_index = 0;
+  request.trials = 6;
+  request.seed = 99;
+  request.threads = 1;
+  const std::vector<TrialResult> one = RunKickTrials(simulator, request);
+  request.threads = 3;
+  const std::vector<TrialResult> several = RunKickTrials(simulator, request);
+  ASSERT_EQ(one.size(), several.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    // Bit-identical, not merely close.
+    EXPECT_EQ(one[i].outcome.p_F_rest.x(), several[i].outcome.p_F_rest.x()) << i;
+    EXPECT_EQ(one[i].outcome.p_F_rest.y(), several[i].outcome.p_F_rest.y()) << i;
+    EXPECT_EQ(one[i].outcome.time_s, several[i].outcome.time_s) << i;
+    EXPECT_EQ(one[i].launch_speed_mps, several[i].launch_speed_mps) << i;
+    EXPECT_EQ(one[i].outcome.category, several[i].outcome.category) << i;
+  }
+  // And different trials really differ.
+  EXPECT_NE(one[0].outcome.p_F_rest.x(), one[1].outcome.p_F_rest.x());
+}
+
+}  // namespace
+}  // namespace foresight
