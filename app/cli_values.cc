@@ -39,8 +39,8 @@ std::uint64_t ParseSeed(const std::string& text) {
 double ParseNumber(const std::string& flag, const std::string& text, double lo, double hi) {
   double value = 0.0;
   if (!ParseWhole(text, value) || !(value >= lo && value <= hi)) {
-    throw InputError(flag + ": must be a number in [" + FormatNumber(lo) + ", " +
-                     FormatNumber(hi) + "], got '" + text + "'");
+    throw InputError(flag + ": must be a number in [" + FormatNumber(lo) + ", " + FormatNumber(hi) +
+                     "], got '" + text + "'");
   }
   return value;
 }

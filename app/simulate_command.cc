@@ -66,9 +66,8 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
   const Situation situation = LoadSituation(options.situation_file, models, overrides);
   const std::optional<int> kick = situation.kicks.Find(options.kick);
   if (!kick) {
-    throw InputError("--kick: no kick '" + options.kick + "' in " +
-                     situation.kicks_file.string() + " (one of: " + KickNames(situation.kicks) +
-                     ")");
+    throw InputError("--kick: no kick '" + options.kick + "' in " + situation.kicks_file.string() +
+                     " (one of: " + KickNames(situation.kicks) + ")");
   }
   const Robot robot = LoadRobot(situation.kicks.robot, models);
   if (!robot.FindMotion(options.kick)) {

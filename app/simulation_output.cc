@@ -12,17 +12,23 @@ namespace {
 
 constexpr Category kCategories[] = {Category::kInfield, Category::kOppGoal, Category::kOwnGoal,
                                     Category::kOut};
-constexpr Contact kContacts[] = {Contact::kNone, Contact::kPost, Contact::kNet,
-                                 Contact::kObstacle, Contact::kRobot};
+constexpr Contact kContacts[] = {Contact::kNone, Contact::kPost, Contact::kNet, Contact::kObstacle,
+                                 Contact::kRobot};
 
-double Share(int count, int total) { return total > 0 ? static_cast<double>(count) / total : 0.0; }
+double Share(int count, int total) {
+  return total > 0 ? static_cast<double>(count) / total : 0.0;
+}
 
 std::string CategoryColour(Category category) {
   switch (category) {
-    case Category::kOppGoal: return "#2ca02c";
-    case Category::kOwnGoal: return "#d62728";
-    case Category::kOut: return "#7f7f7f";
-    default: return "#1f77b4";
+    case Category::kOppGoal:
+      return "#2ca02c";
+    case Category::kOwnGoal:
+      return "#d62728";
+    case Category::kOut:
+      return "#7f7f7f";
+    default:
+      return "#1f77b4";
   }
 }
 
@@ -36,7 +42,8 @@ std::string SimulationText(const SimulationRun& run) {
                 s.trials, static_cast<unsigned long long>(run.seed), run.rotation_rad * kRadToDeg);
   out << Format("robot (%.3f, %.3f) m heading %.1f deg, ball (%.3f, %.3f) m\n\n",
                 run.state.robot.p_F.x(), run.state.robot.p_F.y(),
-                run.state.robot.theta_rad * kRadToDeg, run.state.p_F_ball.x(), run.state.p_F_ball.y());
+                run.state.robot.theta_rad * kRadToDeg, run.state.p_F_ball.x(),
+                run.state.p_F_ball.y());
   out << "category   share\n";
   for (Category c : kCategories) {
     out << Format("%-10s %.3f\n", std::string(CategoryName(c)).c_str(),
@@ -46,10 +53,11 @@ std::string SimulationText(const SimulationRun& run) {
   for (Contact c : kContacts) {
     out << " " << ContactName(c) << " " << s.first_contacts[static_cast<int>(c)];
   }
-  out << Format("\nlaunch: touched %d/%d, rolling freely %d; speed %.3f +- %.3f m/s, "
-                "direction %+.2f +- %.2f deg\n",
-                s.touched, s.trials, s.launched, s.launch_speed_mean_mps, s.launch_speed_sd_mps,
-                s.launch_direction_mean_rad * kRadToDeg, s.launch_direction_sd_rad * kRadToDeg);
+  out << Format(
+      "\nlaunch: touched %d/%d, rolling freely %d; speed %.3f +- %.3f m/s, "
+      "direction %+.2f +- %.2f deg\n",
+      s.touched, s.trials, s.launched, s.launch_speed_mean_mps, s.launch_speed_sd_mps,
+      s.launch_direction_mean_rad * kRadToDeg, s.launch_direction_sd_rad * kRadToDeg);
   out << Format("rest: mean (%.3f, %.3f) m, sd (%.3f, %.3f) m; mean time %.2f s; settled %d/%d\n",
                 s.rest_mean_F.x(), s.rest_mean_F.y(), s.rest_sd_F.x(), s.rest_sd_F.y(),
                 s.time_mean_s, s.settled, s.trials);
@@ -72,9 +80,11 @@ nlohmann::ordered_json SimulationJson(const SimulationRun& run) {
   j["seed"] = run.seed;
   j["trials"] = s.trials;
   nlohmann::ordered_json shares;
-  for (Category c : kCategories) shares[std::string(CategoryName(c))] = Share(s.categories[static_cast<int>(c)], s.trials);
+  for (Category c : kCategories)
+    shares[std::string(CategoryName(c))] = Share(s.categories[static_cast<int>(c)], s.trials);
   nlohmann::ordered_json contacts;
-  for (Contact c : kContacts) contacts[std::string(ContactName(c))] = s.first_contacts[static_cast<int>(c)];
+  for (Contact c : kContacts)
+    contacts[std::string(ContactName(c))] = s.first_contacts[static_cast<int>(c)];
   j["summary"] = {{"category_shares", shares},
                   {"first_contacts", contacts},
                   {"touched", s.touched},
@@ -117,11 +127,16 @@ std::string SimulationSvg(const SimulationRun& run) {
   for (const Obstacle& o : run.situation->obstacles) {
     canvas.DrawDot(o.p_F, canvas.Px(o.radius_m), "fill:#444;fill-opacity:0.85;stroke:#000");
   }
-  const Pose2 turned{run.state.robot.p_F, run.state.robot.theta_rad + run.rotation_rad};
-  canvas.DrawRobot(turned, 0.12, "#dddddd");
+  // The robot where the kick's motion stands it: the ball at the motion's nominal spot, after
+  // the turn around the ball.
+  const KickMotion& motion = run.robot->motions[*run.robot->FindMotion(run.kick)];
+  const double heading = run.state.robot.theta_rad + run.rotation_rad;
+  const Vec2 stand = run.state.p_F_ball - Eigen::Rotation2Dd(heading) * motion.p_R_ball;
+  canvas.DrawRobot(Pose2{stand, heading}, 0.12, "#dddddd");
   for (const TrialResult& r : run.results) {
     canvas.DrawDot(r.outcome.p_F_rest, 3.5,
-                   "fill:" + CategoryColour(r.outcome.category) + ";fill-opacity:0.7;stroke:#000;stroke-width:0.4");
+                   "fill:" + CategoryColour(r.outcome.category) +
+                       ";fill-opacity:0.7;stroke:#000;stroke-width:0.4");
   }
   canvas.DrawDot(run.state.p_F_ball, canvas.Px(field.ball.radius_m), "fill:#ff7f00;stroke:#000");
   canvas.DrawDot(run.summary.rest_mean_F, 6.0, "fill:none;stroke:#000;stroke-width:2");
@@ -130,19 +145,34 @@ std::string SimulationSvg(const SimulationRun& run) {
   double y = 34.0;
   svg.Text(x, y, run.situation->name, "font-size:17px;font-weight:bold");
   y += 22.0;
-  svg.Text(x, y, Format("physics: %s '%s', %d trials", run.robot->spec.name.c_str(), run.kick.c_str(), run.summary.trials), "font-size:13px");
+  svg.Text(x, y,
+           Format("physics: %s '%s', %d trials", run.robot->spec.name.c_str(), run.kick.c_str(),
+                  run.summary.trials),
+           "font-size:13px");
   y += 18.0;
-  svg.Text(x, y, Format("seed %llu, turn %+.1f deg", static_cast<unsigned long long>(run.seed), run.rotation_rad * kRadToDeg), "font-size:13px");
+  svg.Text(x, y,
+           Format("seed %llu, turn %+.1f deg", static_cast<unsigned long long>(run.seed),
+                  run.rotation_rad * kRadToDeg),
+           "font-size:13px");
   y += 28.0;
   for (Category c : kCategories) {
     svg.Circle(x + 7, y - 5, 6, "fill:" + CategoryColour(c) + ";stroke:#000");
-    svg.Text(x + 20, y, Format("%s %.3f", std::string(CategoryName(c)).c_str(), Share(run.summary.categories[static_cast<int>(c)], run.summary.trials)), "font-size:13px");
+    svg.Text(x + 20, y,
+             Format("%s %.3f", std::string(CategoryName(c)).c_str(),
+                    Share(run.summary.categories[static_cast<int>(c)], run.summary.trials)),
+             "font-size:13px");
     y += 20.0;
   }
   y += 8.0;
-  svg.Text(x, y, Format("launch %.2f +- %.2f m/s", run.summary.launch_speed_mean_mps, run.summary.launch_speed_sd_mps), "font-size:12px");
+  svg.Text(x, y,
+           Format("launch %.2f +- %.2f m/s", run.summary.launch_speed_mean_mps,
+                  run.summary.launch_speed_sd_mps),
+           "font-size:12px");
   y += 16.0;
-  svg.Text(x, y, Format("direction %+.1f +- %.1f deg", run.summary.launch_direction_mean_rad * kRadToDeg, run.summary.launch_direction_sd_rad * kRadToDeg), "font-size:12px");
+  svg.Text(x, y,
+           Format("direction %+.1f +- %.1f deg", run.summary.launch_direction_mean_rad * kRadToDeg,
+                  run.summary.launch_direction_sd_rad * kRadToDeg),
+           "font-size:12px");
   y += 16.0;
   svg.Text(x, y, "ring: mean rest position", "font-size:11px;fill:#555");
   return svg.Finish();

@@ -28,7 +28,6 @@ Category ClassifyPosition(const FieldLines& lines, const Vec2& p_F);
 // Category of a straight path from `start` along unit `dir` for `length_m`: the first line it
 // crosses outward decides; a path that crosses none is classified by where it ends, and one
 // that starts out or in a goal keeps that category.
-Category ClassifyPath(const FieldLines& lines, const Vec2& start, const Vec2& dir,
-                      double length_m);
+Category ClassifyPath(const FieldLines& lines, const Vec2& start, const Vec2& dir, double length_m);
 
 }  // namespace foresight

@@ -7,8 +7,7 @@
 namespace foresight {
 
 void PhysicsParams::Validate() const {
-  RequireInRange("carpet.rolling_deceleration_mps2", carpet.rolling_deceleration_mps2, 1e-3,
-                 10.0);
+  RequireInRange("carpet.rolling_deceleration_mps2", carpet.rolling_deceleration_mps2, 1e-3, 10.0);
   RequireInRange("carpet.deceleration_sigma_rel", carpet.deceleration_sigma_rel, 0.0, 0.3);
   RequireInRange("carpet.patch_size_m", carpet.patch_size_m, 0.05, 100.0);
   RequireInRange("carpet.patch_sigma_rel", carpet.patch_sigma_rel, 0.0, 0.3);
@@ -52,9 +51,8 @@ CarpetParams ReadCarpet(const JsonObject& o) {
 }
 
 MaterialParams ReadMaterials(const JsonObject& o) {
-  o.RejectUnknownKeys({"ball_restitution", "ball_friction", "post_restitution",
-                       "net_restitution", "net_friction", "robot_restitution", "robot_friction",
-                       "net_thickness_m"});
+  o.RejectUnknownKeys({"ball_restitution", "ball_friction", "post_restitution", "net_restitution",
+                       "net_friction", "robot_restitution", "robot_friction", "net_thickness_m"});
   MaterialParams m;
   m.ball_restitution = o.Number("ball_restitution");
   m.ball_friction = o.Number("ball_friction");

@@ -15,11 +15,11 @@ namespace foresight {
 
 struct CarpetParams {
   double rolling_deceleration_mps2 = 0.0;  // a of a freely rolling ball on a uniform carpet
-  double deceleration_sigma_rel = 0.0;  // per trial: relative std. dev. of a (wear, humidity)
-  double patch_size_m = 0.0;            // the carpet is laid in square patches ...
-  double patch_sigma_rel = 0.0;         // ... each with its own factor on a (fixed layout)
-  std::uint64_t patch_seed = 0;         // the layout of the patches
-  double friction = 0.0;                // Coulomb friction ball-carpet (sliding after a kick)
+  double deceleration_sigma_rel = 0.0;     // per trial: relative std. dev. of a (wear, humidity)
+  double patch_size_m = 0.0;               // the carpet is laid in square patches ...
+  double patch_sigma_rel = 0.0;            // ... each with its own factor on a (fixed layout)
+  std::uint64_t patch_seed = 0;            // the layout of the patches
+  double friction = 0.0;                   // Coulomb friction ball-carpet (sliding after a kick)
   double restitution = 0.0;
 };
 
@@ -35,12 +35,12 @@ struct MaterialParams {
 };
 
 struct StepParams {
-  double kick_time_step_s = 0.0;     // while the kicking robot is simulated
+  double kick_time_step_s = 0.0;  // while the kicking robot is simulated
   double near_time_step_s = 0.0;  // rolling near a post, net or obstacle
-  double free_time_step_s = 0.0;   // rolling on open carpet
-  double max_kick_time_s = 0.0;       // after that the kick phase ends, touched or not
-  double max_roll_time_s = 0.0;      // a ball still moving then is reported as not settled
-  double rest_speed_mps = 0.0;      // below this (and on the carpet) the ball rests
+  double free_time_step_s = 0.0;  // rolling on open carpet
+  double max_kick_time_s = 0.0;   // after that the kick phase ends, touched or not
+  double max_roll_time_s = 0.0;   // a ball still moving then is reported as not settled
+  double rest_speed_mps = 0.0;    // below this (and on the carpet) the ball rests
   int solver_iterations = 0;
 };
 

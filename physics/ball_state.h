@@ -15,9 +15,9 @@ class btCollisionObject;
 namespace foresight {
 
 struct BallState {
-  Eigen::Vector3d p_F = Eigen::Vector3d::Zero();   // centre, m
-  Eigen::Vector3d v_F = Eigen::Vector3d::Zero();   // m/s
-  Eigen::Vector3d w_F = Eigen::Vector3d::Zero();   // rad/s
+  Eigen::Vector3d p_F = Eigen::Vector3d::Zero();  // centre, m
+  Eigen::Vector3d v_F = Eigen::Vector3d::Zero();  // m/s
+  Eigen::Vector3d w_F = Eigen::Vector3d::Zero();  // rad/s
 
   Vec2 Planar() const { return p_F.head<2>(); }
   double PlanarSpeed() const { return v_F.head<2>().norm(); }

@@ -7,8 +7,12 @@
 
 namespace foresight {
 
-inline btVector3 ToBt(const Eigen::Vector3d& v) { return btVector3(v.x(), v.y(), v.z()); }
-inline Eigen::Vector3d ToEigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+inline btVector3 ToBt(const Eigen::Vector3d& v) {
+  return btVector3(v.x(), v.y(), v.z());
+}
+inline Eigen::Vector3d ToEigen(const btVector3& v) {
+  return {v.x(), v.y(), v.z()};
+}
 
 inline btMatrix3x3 ToBt(const Eigen::Matrix3d& m) {
   return btMatrix3x3(m(0, 0), m(0, 1), m(0, 2), m(1, 0), m(1, 1), m(1, 2), m(2, 0), m(2, 1),
@@ -16,7 +20,8 @@ inline btMatrix3x3 ToBt(const Eigen::Matrix3d& m) {
 }
 
 inline btTransform ToBt(const Eigen::Isometry3d& pose) {
-  return btTransform(ToBt(Eigen::Matrix3d(pose.linear())), ToBt(Eigen::Vector3d(pose.translation())));
+  return btTransform(ToBt(Eigen::Matrix3d(pose.linear())),
+                     ToBt(Eigen::Vector3d(pose.translation())));
 }
 
 inline Eigen::Isometry3d ToEigen(const btTransform& pose) {

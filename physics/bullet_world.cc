@@ -11,11 +11,16 @@ namespace foresight {
 
 Contact ContactOf(BodyTag tag) {
   switch (tag) {
-    case BodyTag::kPost: return Contact::kPost;
-    case BodyTag::kNet: return Contact::kNet;
-    case BodyTag::kObstacle: return Contact::kObstacle;
-    case BodyTag::kKicker: return Contact::kRobot;
-    default: return Contact::kNone;
+    case BodyTag::kPost:
+      return Contact::kPost;
+    case BodyTag::kNet:
+      return Contact::kNet;
+    case BodyTag::kObstacle:
+      return Contact::kObstacle;
+    case BodyTag::kKicker:
+      return Contact::kRobot;
+    default:
+      return Contact::kNone;
   }
 }
 
@@ -58,7 +63,8 @@ BulletWorld::BulletWorld(Kind kind, int solver_iterations)
 
 BulletWorld::~BulletWorld() {
   // Remove everything before the objects die; Bullet only holds raw pointers.
-  for (auto& constraint : constraints_) multibody_world_->removeMultiBodyConstraint(constraint.get());
+  for (auto& constraint : constraints_)
+    multibody_world_->removeMultiBodyConstraint(constraint.get());
   for (auto& body : multibodies_) multibody_world_->removeMultiBody(body.get());
   for (auto& object : objects_) {
     if (auto* body = btRigidBody::upcast(object.get())) {
@@ -69,8 +75,8 @@ BulletWorld::~BulletWorld() {
   }
 }
 
-btRigidBody* BulletWorld::AddStatic(btCollisionShape* shape, const btTransform& pose_F,
-                                    BodyTag tag, Material material) {
+btRigidBody* BulletWorld::AddStatic(btCollisionShape* shape, const btTransform& pose_F, BodyTag tag,
+                                    Material material) {
   btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, shape);
   info.m_startWorldTransform = pose_F;
   info.m_restitution = material.restitution;

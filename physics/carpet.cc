@@ -23,8 +23,8 @@ double Carpet::DecelerationAt(const Vec2& p_F) const {
   if (params_.patch_sigma_rel > 0.0) {
     const auto ix = static_cast<std::int64_t>(std::floor(p_F.x() / params_.patch_size_m));
     const auto iy = static_cast<std::int64_t>(std::floor(p_F.y() / params_.patch_size_m));
-    const std::uint64_t cell = (static_cast<std::uint64_t>(ix) << 32) ^
-                               static_cast<std::uint64_t>(iy & 0xffffffff);
+    const std::uint64_t cell =
+        (static_cast<std::uint64_t>(ix) << 32) ^ static_cast<std::uint64_t>(iy & 0xffffffff);
     RandomStream stream(StreamKey(params_.patch_seed, cell, kPatchDomain));
     factor *= std::clamp(1.0 + params_.patch_sigma_rel * stream.NextNormal(), 0.5, 1.5);
   }

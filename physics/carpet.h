@@ -34,6 +34,8 @@ class Carpet {
 };
 
 // Whether a ball of this radius whose centre is at height z_m touches the carpet.
-inline bool TouchesCarpet(double z_m, double radius_m) { return z_m < radius_m + 1e-3; }
+inline bool TouchesCarpet(double z_m, double radius_m) {
+  return z_m < radius_m + 1e-3;
+}
 
 }  // namespace foresight

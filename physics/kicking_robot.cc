@@ -22,8 +22,8 @@ btQuaternion ToBtQuaternion(const Eigen::Matrix3d& rotation) {
 }
 
 // Sets up multibody link `i` (model link i + 1) from its joint.
-void SetUpLink(btMultiBody& body, const RobotModel& model, const std::vector<PrincipalInertia>& inertias,
-               int link) {
+void SetUpLink(btMultiBody& body, const RobotModel& model,
+               const std::vector<PrincipalInertia>& inertias, int link) {
   const RobotLink& child = model.links[link];
   const RobotJoint& joint = model.joints[child.parent_joint];
   const Eigen::Isometry3d& pose_P_CP = inertias[joint.parent_link].pose_L_C;

@@ -9,7 +9,9 @@
 
 namespace foresight {
 
-int HardwareThreads() { return std::max(1u, std::thread::hardware_concurrency()); }
+int HardwareThreads() {
+  return std::max(1u, std::thread::hardware_concurrency());
+}
 
 void ParallelFor(int count, int threads, const std::function<void(int)>& body,
                  const std::function<void(int, int)>& progress) {

@@ -18,7 +18,8 @@ constexpr double kObstacleReachMarginM = 0.15;
 double ObstacleReach(const PhysicsScene& scene) {
   const std::vector<Eigen::Isometry3d> poses = LinkPoses(scene.robot->model, scene.standing_q_rad);
   double reach = 0.0;
-  for (const Eigen::Isometry3d& pose : poses) reach = std::max(reach, pose.translation().head<2>().norm());
+  for (const Eigen::Isometry3d& pose : poses)
+    reach = std::max(reach, pose.translation().head<2>().norm());
   return reach + kObstacleReachMarginM;
 }
 
@@ -29,29 +30,35 @@ void AddGoal(BulletWorld& world, const PhysicsScene& scene, double side) {
   const double h = g.net_height_m;
   const Material post{m.post_restitution, m.ball_friction};
   const Material net{m.net_restitution, m.net_friction};
-  auto* post_shape = world.Own(std::make_unique<btCylinderShapeZ>(
-      btVector3(g.post_radius_m, g.post_radius_m, 0.5 * h)));
+  auto* post_shape = world.Own(
+      std::make_unique<btCylinderShapeZ>(btVector3(g.post_radius_m, g.post_radius_m, 0.5 * h)));
   for (double y_side : {1.0, -1.0}) {
     const btVector3 p(side * g.post_centre_x_m, y_side * g.post_centre_y_m, 0.5 * h);
     world.AddStatic(post_shape, btTransform(btQuaternion::getIdentity(), p), BodyTag::kPost, post);
   }
-  auto* bar_shape = world.Own(
-      std::make_unique<btCylinderShape>(btVector3(g.post_radius_m, g.post_centre_y_m, g.post_radius_m)));
-  world.AddStatic(bar_shape,
-                  btTransform(btQuaternion::getIdentity(), btVector3(side * g.post_centre_x_m, 0, h)),
-                  BodyTag::kPost, post);
+  auto* bar_shape = world.Own(std::make_unique<btCylinderShape>(
+      btVector3(g.post_radius_m, g.post_centre_y_m, g.post_radius_m)));
+  world.AddStatic(
+      bar_shape,
+      btTransform(btQuaternion::getIdentity(), btVector3(side * g.post_centre_x_m, 0, h)),
+      BodyTag::kPost, post);
   const double x_mid = side * (g.post_centre_x_m + 0.5 * g.net_depth_m);
-  auto* side_shape = world.Own(std::make_unique<btBoxShape>(btVector3(0.5 * g.net_depth_m, 0.5 * t, 0.5 * h)));
+  auto* side_shape =
+      world.Own(std::make_unique<btBoxShape>(btVector3(0.5 * g.net_depth_m, 0.5 * t, 0.5 * h)));
   for (double y_side : {1.0, -1.0}) {
     const btVector3 p(x_mid, y_side * (g.post_centre_y_m + 0.5 * t), 0.5 * h);
     world.AddStatic(side_shape, btTransform(btQuaternion::getIdentity(), p), BodyTag::kNet, net);
   }
-  auto* back_shape = world.Own(std::make_unique<btBoxShape>(btVector3(0.5 * t, g.post_centre_y_m + t, 0.5 * h)));
+  auto* back_shape =
+      world.Own(std::make_unique<btBoxShape>(btVector3(0.5 * t, g.post_centre_y_m + t, 0.5 * h)));
   const double x_back = side * (g.post_centre_x_m + g.net_depth_m + 0.5 * t);
-  world.AddStatic(back_shape, btTransform(btQuaternion::getIdentity(), btVector3(x_back, 0, 0.5 * h)),
+  world.AddStatic(back_shape,
+                  btTransform(btQuaternion::getIdentity(), btVector3(x_back, 0, 0.5 * h)),
                   BodyTag::kNet, net);
-  auto* roof_shape = world.Own(std::make_unique<btBoxShape>(btVector3(0.5 * g.net_depth_m, g.post_centre_y_m, 0.5 * t)));
-  world.AddStatic(roof_shape, btTransform(btQuaternion::getIdentity(), btVector3(x_mid, 0, h + 0.5 * t)),
+  auto* roof_shape = world.Own(
+      std::make_unique<btBoxShape>(btVector3(0.5 * g.net_depth_m, g.post_centre_y_m, 0.5 * t)));
+  world.AddStatic(roof_shape,
+                  btTransform(btQuaternion::getIdentity(), btVector3(x_mid, 0, h + 0.5 * t)),
                   BodyTag::kNet, net);
 }
 
@@ -71,15 +78,17 @@ PhysicsScene MakePhysicsScene(const FieldSpec& field, const PhysicsParams& param
   const double t = params.materials.net_thickness_m;
   for (double side : {1.0, -1.0}) {
     const double half_depth = 0.5 * g.net_depth_m + g.post_radius_m + t;
-    scene.near_zones.push_back({Vec2(side * (g.post_centre_x_m + 0.5 * g.net_depth_m), 0.0),
-                                std::hypot(half_depth, g.post_centre_y_m + g.post_radius_m + t) + r});
+    scene.near_zones.push_back(
+        {Vec2(side * (g.post_centre_x_m + 0.5 * g.net_depth_m), 0.0),
+         std::hypot(half_depth, g.post_centre_y_m + g.post_radius_m + t) + r});
   }
   if (!obstacles.empty()) {
     assert(robot != nullptr);
     const double reach = ObstacleReach(scene);
     for (const Obstacle& o : obstacles) {
       const Vec2 to_ball = p_F_ball - o.p_F;
-      const double heading = to_ball.squaredNorm() > 0.0 ? std::atan2(to_ball.y(), to_ball.x()) : 0.0;
+      const double heading =
+          to_ball.squaredNorm() > 0.0 ? std::atan2(to_ball.y(), to_ball.x()) : 0.0;
       scene.obstacle_poses.push_back(Pose2{o.p_F, heading});
       scene.near_zones.push_back({o.p_F, reach + r});
     }
@@ -96,10 +105,11 @@ void AddStatics(BulletWorld& world, const PhysicsScene& scene) {
   if (scene.obstacle_poses.empty()) return;
   const std::vector<Eigen::Isometry3d> poses = LinkPoses(scene.robot->model, scene.standing_q_rad);
   btCompoundShape* shape = MakeRobotShape(world, scene.robot->model, poses);
-  const Material material{scene.params.materials.robot_restitution, scene.params.materials.robot_friction};
+  const Material material{scene.params.materials.robot_restitution,
+                          scene.params.materials.robot_friction};
   for (const Pose2& pose : scene.obstacle_poses) {
-    const Eigen::Isometry3d pose_F_root = PlanarPose(pose.p_F.x(), pose.p_F.y(),
-                                                     scene.robot->spec.base_height_m, pose.theta_rad);
+    const Eigen::Isometry3d pose_F_root =
+        PlanarPose(pose.p_F.x(), pose.p_F.y(), scene.robot->spec.base_height_m, pose.theta_rad);
     world.AddStatic(shape, ToBt(pose_F_root), BodyTag::kObstacle, material);
   }
 }

@@ -29,10 +29,10 @@ struct PhysicsScene {
   const FieldSpec* field = nullptr;
   PhysicsParams params;
   FieldLines lines;
-  const Robot* robot = nullptr;          // the kicking robot's type; obstacles are of it too
-  std::vector<Pose2> obstacle_poses;     // robots standing still, root frame on the carpet
-  std::vector<NearZone> near_zones;      // goals and obstacles, grown by the ball's radius
-  std::vector<double> standing_q_rad;    // the robot's standing joint positions
+  const Robot* robot = nullptr;        // the kicking robot's type; obstacles are of it too
+  std::vector<Pose2> obstacle_poses;   // robots standing still, root frame on the carpet
+  std::vector<NearZone> near_zones;    // goals and obstacles, grown by the ball's radius
+  std::vector<double> standing_q_rad;  // the robot's standing joint positions
 };
 
 // Builds the scene of a situation: the obstacles stand where the situation puts them, facing
@@ -46,7 +46,6 @@ void AddStatics(BulletWorld& world, const PhysicsScene& scene);
 
 // Time step for a ball at p_F moving at speed_mps: small near goals and obstacles (and in the
 // air), large on open carpet, so a fast ball never crosses a post or a net within one step.
-double RollTimeStep(const PhysicsScene& scene, const Vec2& p_F, double speed_mps,
-                    bool on_carpet);
+double RollTimeStep(const PhysicsScene& scene, const Vec2& p_F, double speed_mps, bool on_carpet);
 
 }  // namespace foresight

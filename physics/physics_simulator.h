@@ -26,8 +26,7 @@ class PhysicsSimulator final : public OutcomeSimulator {
   bool HasMotion(int kick_index) const;
 
   Outcome Simulate(const DrawnState& state, const ConcreteAction& action) const override;
-  TrialResult Run(const DrawnState& state, const ConcreteAction& action,
-                  bool record_trace) const;
+  TrialResult Run(const DrawnState& state, const ConcreteAction& action, bool record_trace) const;
 
   const PhysicsScene& scene() const { return scene_; }
 

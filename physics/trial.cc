@@ -12,7 +12,9 @@ namespace foresight {
 namespace {
 
 // Normal draws are clipped at 3 sigma: a robot never stands a metre off.
-double ClippedNormal(RandomStream& stream) { return std::clamp(stream.NextNormal(), -3.0, 3.0); }
+double ClippedNormal(RandomStream& stream) {
+  return std::clamp(stream.NextNormal(), -3.0, 3.0);
+}
 
 Outcome Finish(const BallMonitor& monitor, const PhaseEnd& end, double t_zero_s) {
   Outcome outcome;
@@ -57,7 +59,8 @@ TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request) 
   const double radius = scene.field->ball.radius_m;
   BallMonitor monitor(scene.lines, p_F_ball, request.record_trace);
   const BallState ball = RollingBall(p_F_ball, radius, 0.0, 0.0);
-  const PhaseEnd kick = RunKickPhase(scene, carpet, motion, pose_F_root, d.speed_factor, ball, monitor);
+  const PhaseEnd kick =
+      RunKickPhase(scene, carpet, motion, pose_F_root, d.speed_factor, ball, monitor);
   result.touched = kick.touched;
   result.launched = kick.launched;
   const double t_zero = kick.touched ? kick.t_first_touch_s : kick.t_s;

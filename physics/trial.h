@@ -15,11 +15,11 @@
 namespace foresight {
 
 struct TrialDraw {
-  double placement_dx_m = 0.0;      // ball offset error along R's x
-  double placement_dy_m = 0.0;      // ... along R's y
+  double placement_dx_m = 0.0;  // ball offset error along R's x
+  double placement_dy_m = 0.0;  // ... along R's y
   double placement_dtheta_rad = 0.0;
-  double speed_factor = 1.0;        // motion playback speed (1 = as written)
-  double carpet_factor = 1.0;       // factor on the carpet's deceleration
+  double speed_factor = 1.0;   // motion playback speed (1 = as written)
+  double carpet_factor = 1.0;  // factor on the carpet's deceleration
 };
 
 TrialDraw DrawTrial(const TrialVariation& variation, const CarpetParams& carpet,
@@ -38,7 +38,7 @@ struct TrialResult {
   double launch_speed_mps = 0.0;
   double launch_direction_rad = 0.0;
   Vec2 p_F_launch{0.0, 0.0};
-  double t_launch_s = 0.0;  // since the first touch
+  double t_launch_s = 0.0;        // since the first touch
   std::vector<TracePoint> trace;  // filled on request; times since the motion's start
 };
 

@@ -55,7 +55,8 @@ TrialSummary Summarize(std::span<const TrialResult> results) {
   }
   if (s.trials == 0) return s;
   s.rest_mean_F = sum / s.trials;
-  s.rest_sd_F = Vec2(SampleSd(sum.x(), sum_sq.x(), s.trials), SampleSd(sum.y(), sum_sq.y(), s.trials));
+  s.rest_sd_F =
+      Vec2(SampleSd(sum.x(), sum_sq.x(), s.trials), SampleSd(sum.y(), sum_sq.y(), s.trials));
   s.time_mean_s = time / s.trials;
   if (s.touched > 0) {
     s.launch_speed_mean_mps = speed / s.touched;

@@ -22,7 +22,7 @@ struct KickTrialsRequest {
   double rotation_rad = 0.0;  // turn around the ball before the kick
   int trials = 0;
   std::uint64_t seed = 0;
-  int threads = 0;            // <= 0: all cores
+  int threads = 0;  // <= 0: all cores
   bool record_trace = false;
   std::function<void(int, int)> progress;  // (done, total)
 };
@@ -38,7 +38,7 @@ struct TrialSummary {
   int launched = 0;
   int settled = 0;
   Vec2 rest_mean_F{0.0, 0.0};
-  Vec2 rest_sd_F{0.0, 0.0};        // per axis, sample standard deviation
+  Vec2 rest_sd_F{0.0, 0.0};            // per axis, sample standard deviation
   double launch_speed_mean_mps = 0.0;  // over the touched trials
   double launch_speed_sd_mps = 0.0;
   double launch_direction_mean_rad = 0.0;  // circular mean, intended robot frame

@@ -24,8 +24,9 @@ class SimulateCommandTest : public foresight::testing::ForesightRun {
     return Run(args);
   }
   std::vector<std::string> OpenGoal(const std::string& kick, int trials) const {
-    return {"--situation", ShippedSituation("open_goal").string(), "--kick", kick, "--trials",
-            std::to_string(trials)};
+    return {"--situation", ShippedSituation("open_goal").string(),
+            "--kick",      kick,
+            "--trials",    std::to_string(trials)};
   }
 };
 
@@ -39,7 +40,8 @@ TEST_F(SimulateCommandTest, JsonHasEveryTrialAndSharesThatAddUp) {
   EXPECT_EQ(j["robot"], "nao");
   EXPECT_EQ(j["trials_detail"].size(), 4u);
   double total = 0.0;
-  for (const auto& [name, share] : j["summary"]["category_shares"].items()) total += share.get<double>();
+  for (const auto& [name, share] : j["summary"]["category_shares"].items())
+    total += share.get<double>();
   EXPECT_DOUBLE_EQ(total, 1.0);
   EXPECT_EQ(j["summary"]["touched"], 4);
 }
@@ -68,7 +70,9 @@ struct BadSimulate {
   std::string message;
 };
 
-void PrintTo(const BadSimulate& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const BadSimulate& c, std::ostream* os) {
+  *os << c.name;
+}
 
 class SimulateErrorTest : public SimulateCommandTest,
                           public ::testing::WithParamInterface<BadSimulate> {};

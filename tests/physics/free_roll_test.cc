@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "models/geometry.h"
-#include "tests/physics/physics_test_scenes.h"
 #include "physics/trial.h"
+#include "tests/physics/physics_test_scenes.h"
 
 namespace foresight {
 namespace {

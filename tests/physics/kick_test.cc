@@ -27,14 +27,17 @@ struct KickCase {
   double max_speed_mps;
 };
 
-void PrintTo(const KickCase& c, std::ostream* os) { *os << c.robot << " " << c.kick; }
+void PrintTo(const KickCase& c, std::ostream* os) {
+  *os << c.robot << " " << c.kick;
+}
 
 class KickTest : public ::testing::TestWithParam<KickCase> {};
 
 TEST_P(KickTest, SendsTheBallTheWayTheKickShould) {
   const KickCase c = GetParam();
   const auto data = testing::LoadPhysicsFixture(c.field, false, c.robot);
-  const KickModel kicks = LoadKickModel(testing::ModelsDir() / "kicks" / (std::string(c.kicks) + ".json"));
+  const KickModel kicks =
+      LoadKickModel(testing::ModelsDir() / "kicks" / (std::string(c.kicks) + ".json"));
   // The robot at the centre circle, turned 30 degrees, so the kick does not run along an axis.
   const DrawnState state{Pose2{Vec2(-0.3, 0.2), 30.0 * kDegToRad}, Vec2(-0.3, 0.2)};
   const PhysicsSimulator simulator(testing::SceneOf(*data, {}, state.p_F_ball), kicks);
@@ -56,18 +59,21 @@ TEST_P(KickTest, SendsTheBallTheWayTheKickShould) {
   EXPECT_GT(summary.launch_direction_sd_rad, 0.0);
   // The ball rests where its launch direction points, in F.
   const Vec2 travel = summary.rest_mean_F - state.p_F_ball;
-  const double travel_deg = WrapAngle(std::atan2(travel.y(), travel.x()) - state.robot.theta_rad) * kRadToDeg;
+  const double travel_deg =
+      WrapAngle(std::atan2(travel.y(), travel.x()) - state.robot.theta_rad) * kRadToDeg;
   EXPECT_NEAR(travel_deg, c.direction_deg, c.tolerance_deg + 5.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Kicks, KickTest,
-    ::testing::Values(KickCase{"nao", "spl", "nao", "forward", 0.0, 10.0, 0.5, 3.0},
-                      KickCase{"nao", "spl", "nao", "side_kick_left", 90.0, 30.0, 0.2, 3.0},
-                      KickCase{"nao", "spl", "nao", "side_kick_right", -90.0, 30.0, 0.2, 3.0},
-                      KickCase{"aibo_ers7", "four_legged", "aibo_ers7", "forward", 0.0, 15.0, 0.3, 3.0},
-                      KickCase{"aibo_ers7", "four_legged", "aibo_ers7", "head_kick_left", 90.0, 35.0, 0.2, 3.0},
-                      KickCase{"aibo_ers7", "four_legged", "aibo_ers7", "head_kick_right", -90.0, 35.0, 0.2, 3.0}),
+    ::testing::Values(
+        KickCase{"nao", "spl", "nao", "forward", 0.0, 10.0, 0.5, 3.0},
+        KickCase{"nao", "spl", "nao", "side_kick_left", 90.0, 30.0, 0.2, 3.0},
+        KickCase{"nao", "spl", "nao", "side_kick_right", -90.0, 30.0, 0.2, 3.0},
+        KickCase{"aibo_ers7", "four_legged", "aibo_ers7", "forward", 0.0, 15.0, 0.3, 3.0},
+        KickCase{"aibo_ers7", "four_legged", "aibo_ers7", "head_kick_left", 90.0, 35.0, 0.2, 3.0},
+        KickCase{"aibo_ers7", "four_legged", "aibo_ers7", "head_kick_right", -90.0, 35.0, 0.2,
+                 3.0}),
     [](const ::testing::TestParamInfo<KickCase>& info) {
       return std::string(info.param.robot) + "_" + info.param.kick;
     });

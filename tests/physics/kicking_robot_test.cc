@@ -43,7 +43,8 @@ TEST_P(KickingRobotTest, LinkFramesMatchForwardKinematics) {
     KickingRobot kicker(world, robot, pose_F_root, q, data->params, 0.002);
     const std::vector<Eigen::Isometry3d> fk = LinkPoses(robot.model, q);
     for (std::size_t i = 1; i < robot.model.links.size(); ++i) {
-      const btMultiBodyLinkCollider* collider = kicker.body().getLink(static_cast<int>(i) - 1).m_collider;
+      const btMultiBodyLinkCollider* collider =
+          kicker.body().getLink(static_cast<int>(i) - 1).m_collider;
       if (collider == nullptr) continue;
       const Eigen::Isometry3d bullet = ToEigen(collider->getWorldTransform());
       const Eigen::Isometry3d expected =

@@ -14,7 +14,8 @@ std::unique_ptr<PhysicsFixtureData> LoadPhysicsFixture(const std::string& field_
     data->params.carpet.deceleration_sigma_rel = 0.0;
     data->params.carpet.patch_sigma_rel = 0.0;
   }
-  if (!robot_name.empty()) data->robot = std::make_unique<Robot>(LoadRobot(robot_name, ModelsDir()));
+  if (!robot_name.empty())
+    data->robot = std::make_unique<Robot>(LoadRobot(robot_name, ModelsDir()));
   return data;
 }
 
