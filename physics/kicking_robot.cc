@@ -8,7 +8,6 @@
 #include <cassert>
 
 #include "physics/bullet_convert.h"
-#include "physics/robot_kinematics.h"
 #include "physics/robot_shapes.h"
 
 namespace foresight {
@@ -21,41 +20,39 @@ btQuaternion ToBtQuaternion(const Eigen::Matrix3d& rotation) {
   return q;
 }
 
-// Sets up multibody link `i` (model link i + 1) from its joint.
-void SetUpLink(btMultiBody& body, const RobotModel& model,
-               const std::vector<PrincipalInertia>& inertias, int link) {
-  const RobotLink& child = model.links[link];
-  const RobotJoint& joint = model.joints[child.parent_joint];
-  const Eigen::Isometry3d& pose_P_CP = inertias[joint.parent_link].pose_L_C;
-  const Eigen::Isometry3d& pose_L_CL = inertias[link].pose_L_C;
-  const Eigen::Isometry3d pose_CP_J = pose_P_CP.inverse() * joint.pose_P_J;
+// Sets up multibody link g - 1 from rigid group g and its moving joint.
+void SetUpLink(btMultiBody& body, const RobotModel& model, const std::vector<RigidGroup>& groups,
+               int g) {
+  const RigidGroup& group = groups[g];
+  const RobotJoint& joint = model.joints[group.joint];
+  const Eigen::Isometry3d& pose_P_CP = groups[group.parent_group].inertia.pose_L_C;
+  const Eigen::Isometry3d& pose_L_CL = group.inertia.pose_L_C;
+  const Eigen::Isometry3d pose_CP_J = pose_P_CP.inverse() * group.pose_P_J;
   const Eigen::Matrix3d R_CL_L = pose_L_CL.linear().transpose();
   const Eigen::Matrix3d R_CL_CP = R_CL_L * pose_CP_J.linear().transpose();
-  const btQuaternion rot_parent_to_this = ToBtQuaternion(R_CL_CP);
-  const btVector3 parent_com_to_pivot = ToBt(Eigen::Vector3d(pose_CP_J.translation()));
-  const btVector3 pivot_to_com = ToBt(Eigen::Vector3d(R_CL_L * pose_L_CL.translation()));
-  const btVector3 inertia = ToBt(inertias[link].diagonal_kgm2);
-  const int parent = joint.parent_link - 1;  // multibody index; -1 is the base
-  if (joint.kind == RobotJoint::Kind::kRevolute) {
-    body.setupRevolute(link - 1, child.mass_kg, inertia, parent, rot_parent_to_this,
-                       ToBt(Eigen::Vector3d(R_CL_L * joint.axis_J)), parent_com_to_pivot,
-                       pivot_to_com, true);
-  } else {
-    body.setupFixed(link - 1, child.mass_kg, inertia, parent, rot_parent_to_this,
-                    parent_com_to_pivot, pivot_to_com, true);
-  }
+  body.setupRevolute(g - 1, group.mass_kg, ToBt(group.inertia.diagonal_kgm2),
+                     group.parent_group - 1, ToBtQuaternion(R_CL_CP),
+                     ToBt(Eigen::Vector3d(R_CL_L * joint.axis_J)),
+                     ToBt(Eigen::Vector3d(pose_CP_J.translation())),
+                     ToBt(Eigen::Vector3d(R_CL_L * pose_L_CL.translation())), true);
 }
 
 void AddColliders(BulletWorld& world, btMultiBody& body, const RobotModel& model,
-                  const std::vector<PrincipalInertia>& inertias, const PhysicsParams& params) {
-  for (std::size_t i = 0; i < model.links.size(); ++i) {
-    btCollisionShape* shape = MakeLinkShape(world, model.links[i], inertias[i].pose_L_C.inverse());
+                  const std::vector<RigidGroup>& groups, const PhysicsParams& params) {
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const RigidGroup& group = groups[g];
+    auto* compound = world.Own(std::make_unique<btCompoundShape>());
+    const Eigen::Isometry3d pose_C_L = group.inertia.pose_L_C.inverse();
+    for (const auto& [link, pose_L_M] : group.members) {
+      AddLinkShapes(world, model.links[link], pose_C_L * pose_L_M, *compound);
+    }
     // Bullet solves a joint motor only in the simulation island of its link's collider; a link
-    // without one leaves its motor unsolved (the joint swings freely). Links without collision
-    // geometry therefore get a tiny collider that collides with nothing.
-    const bool anchor_only = shape == nullptr;
+    // without one leaves its motor unsolved (the joint swings freely). A group without
+    // collision geometry therefore gets a tiny collider that collides with nothing.
+    const bool anchor_only = compound->getNumChildShapes() == 0;
+    btCollisionShape* shape = compound;
     if (anchor_only) shape = world.Own(std::make_unique<btSphereShape>(0.001));
-    const int index = static_cast<int>(i) - 1;
+    const int index = static_cast<int>(g) - 1;
     auto collider = std::make_unique<btMultiBodyLinkCollider>(&body, index);
     collider->setCollisionShape(shape);
     collider->setUserIndex(static_cast<int>(BodyTag::kKicker));
@@ -73,37 +70,45 @@ void AddColliders(BulletWorld& world, btMultiBody& body, const RobotModel& model
 
 }  // namespace
 
+std::vector<bool> MovingJoints(const RobotModel& model, std::span<const std::string> names) {
+  std::vector<bool> moving(model.joints.size(), names.empty());
+  for (const std::string& name : names) {
+    const std::optional<int> j = model.FindJoint(name);
+    assert(j.has_value());  // LoadRobot checked motions against the model
+    moving[*j] = true;
+  }
+  return moving;
+}
+
 KickingRobot::KickingRobot(BulletWorld& world, const Robot& robot,
                            const Eigen::Isometry3d& pose_F_root, std::span<const double> q_rad,
-                           const PhysicsParams& params, double dt_s)
-    : robot_(robot), motors_params_(params.motors), standing_q_(q_rad.begin(), q_rad.end()) {
+                           const std::vector<bool>& moving, const PhysicsParams& params,
+                           double dt_s)
+    : robot_(robot),
+      motors_params_(params.motors),
+      standing_q_(q_rad.begin(), q_rad.end()),
+      groups_(GroupRigidly(robot.model, q_rad, moving)) {
   const RobotModel& model = robot.model;
-  assert(q_rad.size() == model.joints.size());
-  std::vector<PrincipalInertia> inertias;
-  for (const RobotLink& link : model.links) inertias.push_back(PrincipalInertiaOf(link));
-  const int links = static_cast<int>(model.links.size()) - 1;
-  auto body = std::make_unique<btMultiBody>(links, model.links[0].mass_kg,
-                                            ToBt(inertias[0].diagonal_kgm2), true, false);
-  body->setBaseWorldTransform(ToBt(Eigen::Isometry3d(pose_F_root * inertias[0].pose_L_C)));
-  for (int i = 1; i <= links; ++i) SetUpLink(*body, model, inertias, i);
+  const int links = static_cast<int>(groups_.size()) - 1;
+  auto body = std::make_unique<btMultiBody>(links, groups_[0].mass_kg,
+                                            ToBt(groups_[0].inertia.diagonal_kgm2), true, false);
+  body->setBaseWorldTransform(ToBt(Eigen::Isometry3d(pose_F_root * groups_[0].inertia.pose_L_C)));
+  for (int g = 1; g <= links; ++g) SetUpLink(*body, model, groups_, g);
   body->finalizeMultiDof();
   body->setHasSelfCollision(false);
   body_ = world.AddMultiBody(std::move(body));
-  for (std::size_t j = 0; j < model.joints.size(); ++j) {
-    body_->setJointPos(model.joints[j].child_link - 1, q_rad[j]);
-  }
-  AddColliders(world, *body_, model, inertias, params);
+  for (int g = 1; g <= links; ++g) body_->setJointPos(g - 1, q_rad[groups_[g].joint]);
+  AddColliders(world, *body_, model, groups_, params);
   btAlignedObjectArray<btQuaternion> scratch_q;
   btAlignedObjectArray<btVector3> scratch_m;
   body_->forwardKinematics(scratch_q, scratch_m);
   body_->updateCollisionObjectWorldTransforms(scratch_q, scratch_m);
 
   motors_.assign(model.joints.size(), nullptr);
-  for (std::size_t j = 0; j < model.joints.size(); ++j) {
-    const RobotJoint& joint = model.joints[j];
-    if (joint.kind != RobotJoint::Kind::kRevolute) continue;
-    auto motor = std::make_unique<btMultiBodyJointMotor>(body_, joint.child_link - 1, 0.0,
-                                                         joint.effort_nm * dt_s);
+  for (int g = 1; g <= links; ++g) {
+    const int j = groups_[g].joint;
+    auto motor = std::make_unique<btMultiBodyJointMotor>(body_, g - 1, 0.0,
+                                                         model.joints[j].effort_nm * dt_s);
     motor->setPositionTarget(q_rad[j], params.motors.position_gain);
     motor->setVelocityTarget(0.0, params.motors.velocity_gain);
     motors_[j] = motor.get();
@@ -114,9 +119,7 @@ KickingRobot::KickingRobot(BulletWorld& world, const Robot& robot,
 void KickingRobot::FollowMotion(const KickMotion& motion, double t_s, double speed_factor) {
   if (motion_joint_index_.empty()) {
     for (const std::string& name : motion.joints) {
-      const std::optional<int> j = robot_.model.FindJoint(name);
-      assert(j.has_value());  // LoadRobot checked the motion against the model
-      motion_joint_index_.push_back(*j);
+      motion_joint_index_.push_back(*robot_.model.FindJoint(name));
     }
     q_scratch_.resize(motion.joints.size());
     qdot_scratch_.resize(motion.joints.size());
@@ -124,18 +127,16 @@ void KickingRobot::FollowMotion(const KickMotion& motion, double t_s, double spe
   motion.Sample(t_s * speed_factor, q_scratch_, qdot_scratch_);
   for (std::size_t k = 0; k < motion_joint_index_.size(); ++k) {
     btMultiBodyJointMotor* motor = motors_[motion_joint_index_[k]];
-    if (motor == nullptr) continue;
+    assert(motor != nullptr);  // the robot was built with the motion's joints moving
     motor->setPositionTarget(q_scratch_[k], motors_params_.position_gain);
     motor->setVelocityTarget(qdot_scratch_[k] * speed_factor, motors_params_.velocity_gain);
   }
 }
 
 std::vector<double> KickingRobot::JointPositions() const {
-  std::vector<double> q(robot_.model.joints.size(), 0.0);
-  for (std::size_t j = 0; j < q.size(); ++j) {
-    if (robot_.model.joints[j].kind == RobotJoint::Kind::kRevolute) {
-      q[j] = body_->getJointPos(robot_.model.joints[j].child_link - 1);
-    }
+  std::vector<double> q = standing_q_;
+  for (std::size_t g = 1; g < groups_.size(); ++g) {
+    q[groups_[g].joint] = body_->getJointPos(static_cast<int>(g) - 1);
   }
   return q;
 }

@@ -1,12 +1,13 @@
 // The kicking robot as a Bullet multibody (Featherstone) with a fixed base, built from the
-// URDF model, and joint motors that follow a kick motion.
+// URDF model, and joint motors that follow a kick motion. Only the joints the motion moves are
+// multibody joints; the links between them are welded into rigid groups (rigid_groups.h).
 //
 // Frames (Bullet's convention): a multibody link's frame sits at its centre of mass C with the
-// principal axes of its inertia. For a link L with parent P and joint J (URDF: L = J at q = 0):
+// principal axes of its inertia. For a group L with parent P and joint J (URDF: L = J at q = 0):
 //   rot_parent_to_this = R_CL_CP,          joint axis in CL = R_CL_L * axis_J,
 //   parent COM to pivot = t(pose_CP_J),    pivot to this COM (in CL) = R_CL_L * t_L_CL.
-// Motors: one btMultiBodyJointMotor per revolute joint, its impulse limited by the URDF effort
-// times the step; joints the motion does not name hold the standing pose.
+// Motors: one btMultiBodyJointMotor per moving joint, its impulse limited by the URDF effort
+// times the step.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -16,22 +17,28 @@
 #include "models/physics_params.h"
 #include "models/robot_spec.h"
 #include "physics/bullet_world.h"
+#include "physics/rigid_groups.h"
 
 class btMultiBody;
 class btMultiBodyJointMotor;
 
 namespace foresight {
 
+// Which model joints move: the named ones, or every revolute joint when `names` is empty.
+std::vector<bool> MovingJoints(const RobotModel& model, std::span<const std::string> names);
+
 class KickingRobot {
  public:
-  // Stands `robot` with its root link at pose_F_root and joints at q_rad (model.joints order).
+  // Stands `robot` with its root link at pose_F_root and joints at q_rad (model.joints order);
+  // the joints marked in `moving` get motors, the others are welded at q_rad.
   KickingRobot(BulletWorld& world, const Robot& robot, const Eigen::Isometry3d& pose_F_root,
-               std::span<const double> q_rad, const PhysicsParams& params, double dt_s);
+               std::span<const double> q_rad, const std::vector<bool>& moving,
+               const PhysicsParams& params, double dt_s);
 
   // Motor targets for `motion` played at speed_factor (> 1: faster) at simulated time t_s.
   void FollowMotion(const KickMotion& motion, double t_s, double speed_factor);
 
-  // Current joint positions (model.joints order; fixed joints read 0).
+  // Current joint positions (model.joints order; welded joints read their standing position).
   std::vector<double> JointPositions() const;
   btMultiBody& body() { return *body_; }
 
@@ -39,9 +46,10 @@ class KickingRobot {
   const Robot& robot_;
   MotorParams motors_params_;
   btMultiBody* body_ = nullptr;
-  std::vector<btMultiBodyJointMotor*> motors_;  // per model joint; null for fixed joints
   std::vector<double> standing_q_;
-  std::vector<int> motion_joint_index_;  // scratch: motion joint -> model joint
+  std::vector<RigidGroup> groups_;              // groups_[g] is multibody link g - 1
+  std::vector<btMultiBodyJointMotor*> motors_;  // per model joint; null for welded joints
+  std::vector<int> motion_joint_index_;         // scratch: motion joint -> model joint
   std::vector<double> q_scratch_, qdot_scratch_;
 };
 

@@ -47,7 +47,8 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
   BulletWorld world(BulletWorld::Kind::kMultiBody, steps.solver_iterations);
   AddStatics(world, scene);
   btRigidBody* ball = AddBall(world, scene, ball_start);
-  KickingRobot robot(world, *scene.robot, pose_F_root, scene.standing_q_rad, scene.params, dt);
+  KickingRobot robot(world, *scene.robot, pose_F_root, scene.standing_q_rad,
+                     MovingJoints(scene.robot->model, motion.joints), scene.params, dt);
   const double motion_end_s = motion.DurationS() / speed_factor;
   PhaseEnd end;
   end.ball = ball_start;

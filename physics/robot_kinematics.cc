@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <cassert>
+#include <cmath>
 
 namespace foresight {
 
@@ -23,7 +24,11 @@ std::vector<Eigen::Isometry3d> LinkPoses(const RobotModel& model, std::span<cons
 PrincipalInertia PrincipalInertiaOf(const RobotLink& link) {
   PrincipalInertia out;
   const Eigen::Matrix3d& inertia = link.inertia_C_kgm2;
-  const bool diagonal = inertia(0, 1) == 0.0 && inertia(0, 2) == 0.0 && inertia(1, 2) == 0.0;
+  // Off-diagonal terms at round-off level (composite inertias) count as zero, so the frame
+  // keeps its axes instead of being permuted by the eigen solver.
+  const double eps = 1e-12 * inertia.trace();
+  const bool diagonal = std::abs(inertia(0, 1)) <= eps && std::abs(inertia(0, 2)) <= eps &&
+                        std::abs(inertia(1, 2)) <= eps;
   out.pose_L_C = link.pose_L_C;
   if (diagonal) {
     out.diagonal_kgm2 = inertia.diagonal();

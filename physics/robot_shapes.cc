@@ -29,6 +29,8 @@ std::unique_ptr<btCollisionShape> MakePrimitive(const RobotShape& shape) {
   return nullptr;
 }
 
+}  // namespace
+
 void AddLinkShapes(BulletWorld& world, const RobotLink& link, const Eigen::Isometry3d& pose_X_L,
                    btCompoundShape& compound) {
   for (const RobotShape& shape : link.collisions) {
@@ -36,8 +38,6 @@ void AddLinkShapes(BulletWorld& world, const RobotLink& link, const Eigen::Isome
     compound.addChildShape(ToBt(Eigen::Isometry3d(pose_X_L * shape.pose_L_S)), child);
   }
 }
-
-}  // namespace
 
 btCompoundShape* MakeLinkShape(BulletWorld& world, const RobotLink& link,
                                const Eigen::Isometry3d& pose_X_L) {

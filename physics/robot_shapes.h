@@ -17,6 +17,10 @@ namespace foresight {
 btCompoundShape* MakeLinkShape(BulletWorld& world, const RobotLink& link,
                                const Eigen::Isometry3d& pose_X_L);
 
+// Adds the link's collision shapes to `compound`, placed relative to its frame X.
+void AddLinkShapes(BulletWorld& world, const RobotLink& link, const Eigen::Isometry3d& pose_X_L,
+                   btCompoundShape& compound);
+
 // Adds the shapes of every link of a robot standing with the given link poses (in the root
 // frame) to one compound in frame X = root; used for static obstacle robots.
 btCompoundShape* MakeRobotShape(BulletWorld& world, const RobotModel& model,

@@ -40,7 +40,8 @@ TEST_P(KickingRobotTest, LinkFramesMatchForwardKinematics) {
     const std::vector<double> q = RandomPose(robot.model, seed);
     const Eigen::Isometry3d pose_F_root = PlanarPose(0.5, -1.0, 0.4, 0.7);
     BulletWorld world(BulletWorld::Kind::kMultiBody, 10);
-    KickingRobot kicker(world, robot, pose_F_root, q, data->params, 0.002);
+    KickingRobot kicker(world, robot, pose_F_root, q, MovingJoints(robot.model, {}), data->params,
+                        0.002);
     const std::vector<Eigen::Isometry3d> fk = LinkPoses(robot.model, q);
     for (std::size_t i = 1; i < robot.model.links.size(); ++i) {
       const btMultiBodyLinkCollider* collider =
@@ -64,7 +65,8 @@ TEST_P(KickingRobotTest, MotorsHoldTheStandingPoseAgainstGravity) {
   for (std::size_t j = 0; j < q.size(); ++j) q[j] *= 0.5;  // away from the limits
   BulletWorld world(BulletWorld::Kind::kMultiBody, data->params.steps.solver_iterations);
   const double dt = data->params.steps.kick_time_step_s;
-  KickingRobot kicker(world, robot, PlanarPose(0, 0, 0.6, 0), q, data->params, dt);
+  KickingRobot kicker(world, robot, PlanarPose(0, 0, 0.6, 0), q, MovingJoints(robot.model, {}),
+                      data->params, dt);
   // Half a second hanging from the fixed base. Links without collision geometry are the trap
   // here: Bullet leaves their motors unsolved unless they get a collider (kicking_robot.cc).
   for (int step = 0; step < 250; ++step) world.world().stepSimulation(dt, 0, dt);
