@@ -3,6 +3,7 @@
 #include <string>
 
 #include "app/decision_output.h"
+#include "app/report_text.h"
 
 namespace foresight {
 
@@ -12,14 +13,6 @@ std::string KickName(const DecisionRun& run, int kick_index) {
 }
 
 namespace {
-
-std::string Format(const char* format, auto... args) {
-  const int length = std::snprintf(nullptr, 0, format, args...);
-  std::string text(static_cast<std::size_t>(length > 0 ? length : 0) + 1, '\0');
-  std::snprintf(text.data(), text.size(), format, args...);
-  text.pop_back();
-  return text;
-}
 
 std::string TurnText(double rotation_rad) {
   const double deg = rotation_rad * kRadToDeg;

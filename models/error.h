@@ -15,4 +15,15 @@ class InputError : public std::runtime_error {
   explicit InputError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// Runs `check` (a Validate() or a check from models/checks.h, whose messages say "field: ...")
+// and prefixes `file` to the message of any InputError it throws: "FILE: field: ...".
+template <typename Check>
+void WithFile(const std::string& file, Check&& check) {
+  try {
+    check();
+  } catch (const InputError& e) {
+    throw InputError(file + ": " + e.what());
+  }
+}
+
 }  // namespace foresight

@@ -61,11 +61,7 @@ EvaluationParams LoadEvaluationParams(const std::filesystem::path& file) {
   params.rotation_search.refine_levels = search.Integer("refine_levels");
   params.rotation_search.refine_candidates = search.Integer("refine_candidates");
 
-  try {
-    params.Validate();
-  } catch (const InputError& e) {
-    throw InputError(file.string() + ": " + e.what());
-  }
+  WithFile(file.string(), [&] { params.Validate(); });
   return params;
 }
 

@@ -53,11 +53,7 @@ FieldSpec LoadFieldSpec(const std::filesystem::path& file) {
   spec.ball.radius_m = ball.Number("radius_m");
   spec.ball.mass_kg = ball.Number("mass_kg");
 
-  try {
-    spec.Validate();
-  } catch (const InputError& e) {
-    throw InputError(file.string() + ": " + e.what());
-  }
+  WithFile(file.string(), [&] { spec.Validate(); });
   return spec;
 }
 

@@ -52,11 +52,7 @@ KickModel LoadKickModel(const std::filesystem::path& file) {
     kick.sigma_direction_rad = item.Number("sigma_direction_deg") * kDegToRad;
     model.kicks.push_back(kick);
   }
-  try {
-    model.Validate();
-  } catch (const InputError& e) {
-    throw InputError(file.string() + ": " + e.what());
-  }
+  WithFile(file.string(), [&] { model.Validate(); });
   return model;
 }
 

@@ -99,11 +99,7 @@ PhysicsParams LoadPhysicsParams(const std::filesystem::path& file) {
   params.motors = ReadMotors(root.Object("motors"));
   params.materials = ReadMaterials(root.Object("materials"));
   params.steps = ReadSteps(root.Object("steps"));
-  try {
-    params.Validate();
-  } catch (const InputError& e) {
-    throw InputError(file.string() + ": " + e.what());
-  }
+  WithFile(file.string(), [&] { params.Validate(); });
   return params;
 }
 

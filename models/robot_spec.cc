@@ -16,16 +16,6 @@ namespace {
 // Joint targets within this much of a limit count as within it (degrees in files, radians here).
 constexpr double kLimitToleranceRad = 1e-9;
 
-// Runs a check from models/checks.h and prefixes the file to its "field: ..." message.
-template <typename Check>
-void WithFile(const std::string& file, Check&& check) {
-  try {
-    check();
-  } catch (const InputError& e) {
-    throw InputError(file + ": " + e.what());
-  }
-}
-
 std::filesystem::path Resolve(const std::filesystem::path& dir, const std::string& reference) {
   const std::filesystem::path path(reference);
   return path.is_absolute() ? path : (dir / path).lexically_normal();

@@ -127,11 +127,7 @@ Situation LoadSituation(const std::filesystem::path& file, const std::filesystem
         {Vec2(item.Number("x_m"), item.Number("y_m")),
          item.NumberOr("radius_m", situation.field.default_obstacle_radius_m)});
   }
-  try {
-    situation.Validate();
-  } catch (const InputError& e) {
-    throw InputError(file.string() + ": " + e.what());
-  }
+  WithFile(file.string(), [&] { situation.Validate(); });
   return situation;
 }
 
