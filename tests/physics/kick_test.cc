@@ -105,5 +105,30 @@ TEST(KickDeterminismTest, SameSeedSameTrialsWithOneThreadOrSeveral) {
   EXPECT_NE(one[0].outcome.p_F_rest.x(), one[1].outcome.p_F_rest.x());
 }
 
+TEST(KickNoiseTest, PhysicsNeverSamplesTheKickModelsSigmas) {
+  // Calibration measures sigma_v and sigma_alpha from physics, so physics must not use them:
+  // trials with the sigmas multiplied by ten are bit-identical.
+  const auto data = testing::LoadPhysicsFixture("spl", false, "nao");
+  const KickModel kicks = LoadKickModel(testing::ModelsDir() / "kicks" / "nao.json");
+  KickModel noisy = kicks;
+  for (KickSpec& k : noisy.kicks) {
+    k.sigma_speed_mps *= 10.0;
+    k.sigma_direction_rad *= 10.0;
+  }
+  const DrawnState state{Pose2{Vec2(0.0, 0.0), 0.0}, Vec2(0.18, -0.05)};
+  const PhysicsSimulator plain(testing::SceneOf(*data, {}, state.p_F_ball), kicks);
+  const PhysicsSimulator wide(testing::SceneOf(*data, {}, state.p_F_ball), noisy);
+  KickTrialsRequest request;
+  request.state = state;
+  request.trials = 3;
+  request.seed = 5;
+  const std::vector<TrialResult> a = RunKickTrials(plain, request);
+  const std::vector<TrialResult> b = RunKickTrials(wide, request);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].launch_speed_mps, b[i].launch_speed_mps) << i;
+    EXPECT_EQ(a[i].outcome.p_F_rest.x(), b[i].outcome.p_F_rest.x()) << i;
+  }
+}
+
 }  // namespace
 }  // namespace foresight
