@@ -1,6 +1,10 @@
 #include "app/cli_values.h"
 
+#include <unistd.h>
+
 #include <charconv>
+#include <cstdio>
+#include <filesystem>
 
 #include "app/report_text.h"
 #include "models/checks.h"
@@ -52,6 +56,23 @@ std::string DisplayPath(const std::filesystem::path& file,
           std::filesystem::absolute(models_dir).lexically_normal());
   if (!relative.empty() && *relative.begin() != "..") return relative.generic_string();
   return file.generic_string();
+}
+
+std::function<void(int, int)> TerminalProgress(const std::string& label) {
+  if (!isatty(STDERR_FILENO)) return {};
+  return [label](int done, int total) {
+    std::fprintf(stderr, "\r%s %d / %d trials", label.c_str(), done, total);
+    if (done == total) std::fprintf(stderr, "\n");
+  };
+}
+
+void CreateReportDir(const std::string& dir, const std::string& flag) {
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  if (error || !std::filesystem::is_directory(dir)) {
+    throw InputError(flag + ": cannot create the folder '" + dir + "': " +
+                     (error ? error.message() : "a file of that name is in the way"));
+  }
 }
 
 }  // namespace foresight

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 namespace foresight {
@@ -11,5 +12,11 @@ namespace foresight {
 int ParseCount(const std::string& flag, const std::string& text, int lo, int hi);
 std::uint64_t ParseSeed(const std::string& text);  // for --seed: 0 .. 2^64 - 1
 double ParseNumber(const std::string& flag, const std::string& text, double lo, double hi);
+
+// Progress "LABEL done / total" on stderr, only when stderr is a terminal (DESIGN.md, "Output").
+std::function<void(int, int)> TerminalProgress(const std::string& label);
+
+// Creates a report folder (and its parents); InputError naming the flag and folder if it fails.
+void CreateReportDir(const std::string& dir, const std::string& flag);
 
 }  // namespace foresight

@@ -3,7 +3,9 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "app/calibrate_command.h"
 #include "app/decide_command.h"
+#include "app/fidelity_command.h"
 #include "app/simulate_command.h"
 #include "models/error.h"
 
@@ -29,6 +31,10 @@ int main(int argc, char** argv) {
   foresight::AddDecideCommand(app, decide);
   foresight::SimulateOptions simulate;
   foresight::AddSimulateCommand(app, simulate);
+  foresight::CalibrateOptions calibrate;
+  foresight::AddCalibrateCommand(app, calibrate);
+  foresight::FidelityOptions fidelity;
+  foresight::AddFidelityCommand(app, fidelity);
 
   try {
     app.parse(argc, argv);
@@ -45,6 +51,10 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("decide")) return foresight::RunDecide(decide, models_dir);
     if (app.got_subcommand("simulate")) return foresight::RunSimulate(simulate, models_dir);
+    if (app.got_subcommand("calibrate")) return foresight::RunCalibrate(calibrate, models_dir);
+    if (app.got_subcommand("fidelity")) {
+      return foresight::RunFidelityCommand(fidelity, models_dir);
+    }
   } catch (const foresight::InputError& e) {
     return Fail(e.what());
   } catch (const std::exception& e) {

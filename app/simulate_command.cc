@@ -1,8 +1,5 @@
 #include "app/simulate_command.h"
 
-#include <unistd.h>
-
-#include <cstdio>
 #include <iostream>
 
 #include "app/cli_values.h"
@@ -22,15 +19,6 @@ std::string KickNames(const KickModel& kicks) {
   std::string names;
   for (const KickSpec& k : kicks.kicks) names += (names.empty() ? "" : ", ") + k.name;
   return names;
-}
-
-// Progress on stderr, only when it is a terminal (DESIGN.md, "Output").
-std::function<void(int, int)> TerminalProgress() {
-  if (!isatty(STDERR_FILENO)) return {};
-  return [](int done, int total) {
-    std::fprintf(stderr, "\rsimulate: %d / %d trials", done, total);
-    if (done == total) std::fprintf(stderr, "\n");
-  };
 }
 
 }  // namespace
@@ -101,7 +89,7 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
   request.seed = seed;
   request.threads = threads;
   request.record_trace = !options.trace_file.empty();
-  request.progress = TerminalProgress();
+  request.progress = TerminalProgress("simulate:");
   run.results = RunKickTrials(simulator, request);
   run.summary = Summarize(run.results);
 

@@ -1,5 +1,9 @@
 #include "models/kick_model.h"
 
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
 #include "models/checks.h"
 #include "models/error.h"
 #include "models/geometry.h"
@@ -54,6 +58,39 @@ KickModel LoadKickModel(const std::filesystem::path& file) {
   }
   WithFile(file.string(), [&] { model.Validate(); });
   return model;
+}
+
+namespace {
+
+std::string Rounded(double value, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  std::string s = buffer;
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+  }
+  return s == "-0" ? "0" : s;
+}
+
+std::string Quoted(std::string_view text) { return nlohmann::json(std::string(text)).dump(); }
+
+}  // namespace
+
+std::string KickModelJson(const KickModel& model, std::string_view notes) {
+  std::string out = "{\n  \"robot\": " + Quoted(model.robot) + ",\n";
+  if (!notes.empty()) out += "  \"notes\": " + Quoted(notes) + ",\n";
+  out += "  \"rolling_deceleration_mps2\": " + Rounded(model.rolling_deceleration_mps2, 4) + ",\n";
+  out += "  \"kicks\": [\n";
+  for (std::size_t i = 0; i < model.kicks.size(); ++i) {
+    const KickSpec& k = model.kicks[i];
+    out += "    {\"name\": " + Quoted(k.name) + ", \"speed_mps\": " + Rounded(k.speed_mps, 4) +
+           ", \"sigma_speed_mps\": " + Rounded(k.sigma_speed_mps, 4) +
+           ", \"direction_deg\": " + Rounded(k.direction_rad * kRadToDeg, 2) +
+           ", \"sigma_direction_deg\": " + Rounded(k.sigma_direction_rad * kRadToDeg, 2) + "}";
+    out += i + 1 < model.kicks.size() ? ",\n" : "\n";
+  }
+  return out + "  ]\n}\n";
 }
 
 }  // namespace foresight

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace foresight {
@@ -30,5 +31,9 @@ struct KickModel {
 };
 
 KickModel LoadKickModel(const std::filesystem::path& file);
+
+// The model as a kick-model file that LoadKickModel reads back: speeds rounded to 0.1 mm/s,
+// angles to 0.01 degree, the deceleration to 0.1 mm/s^2 (so files diff cleanly).
+std::string KickModelJson(const KickModel& model, std::string_view notes);
 
 }  // namespace foresight

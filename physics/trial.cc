@@ -64,6 +64,7 @@ TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request) 
   result.touched = kick.touched;
   result.launched = kick.launched;
   const double t_zero = kick.touched ? kick.t_first_touch_s : kick.t_s;
+  result.t_first_touch_s = t_zero;
   if (kick.touched) {
     const Vec2 v = kick.ball.v_F.head<2>();
     result.launch_speed_mps = v.norm();

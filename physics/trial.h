@@ -39,6 +39,7 @@ struct TrialResult {
   double launch_direction_rad = 0.0;
   Vec2 p_F_launch{0.0, 0.0};
   double t_launch_s = 0.0;        // since the first touch
+  double t_first_touch_s = 0.0;   // since the motion's start (the trace's clock)
   std::vector<TracePoint> trace;  // filled on request; times since the motion's start
 };
 

@@ -18,6 +18,8 @@
 
 namespace foresight {
 
+inline constexpr std::uint64_t kActionStreamDomain = 0x616374696f6e7331ULL;
+
 struct DrawnSample {
   DrawnState state;
   double z_speed = 0.0;
@@ -32,6 +34,8 @@ void DrawSamples(const StateEstimate& estimate, std::uint64_t seed, int count,
                  std::vector<DrawnSample>& out);
 
 // The concrete action of `kick` (or none, kick_index < 0) turned by rotation_rad, for one sample.
+// Its stream is derived from the sample's, the same for every candidate (common random numbers
+// for simulators that draw more, like physics).
 ConcreteAction MakeAction(const KickModel& kicks, int kick_index, double rotation_rad,
                           const DrawnSample& sample);
 

@@ -60,6 +60,10 @@ void SvgWriter::Text(double x, double y, std::string_view text, std::string_view
         << Escape(text) << "</text>\n";
 }
 
+void SvgWriter::Path(std::string_view d, std::string_view style) {
+  body_ << "<path d=\"" << Escape(d) << "\" style=\"" << style << "\"/>\n";
+}
+
 void SvgWriter::OpenGroup(std::string_view attributes) {
   body_ << "<g " << attributes << ">\n";
 }

@@ -16,6 +16,8 @@ class SvgWriter {
   void Circle(double cx, double cy, double r, std::string_view style);
   void Line(double x1, double y1, double x2, double y2, std::string_view style);
   void Text(double x, double y, std::string_view text, std::string_view style);
+  // `d` is SVG path data (M, L, A, Z ...), numbers formatted with Num.
+  void Path(std::string_view d, std::string_view style);
   void OpenGroup(std::string_view attributes);
   void CloseGroup();
   void Title(std::string_view text);  // a tooltip for the enclosing group

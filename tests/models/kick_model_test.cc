@@ -156,5 +156,37 @@ TEST(KickModelTest, InfiniteSigmaCannotEnter) {
   EXPECT_THAT(message, HasSubstr("sigma_speed_mps"));
 }
 
+
+TEST(KickModelJsonTest, WrittenModelLoadsBackWithRoundedNumbers) {
+  KickModel model;
+  model.robot = "nao";
+  model.rolling_deceleration_mps2 = 0.271234;
+  model.kicks.push_back({"forward", 0.781249, 0.0612, 1.23456 * kDegToRad, 4.5 * kDegToRad});
+  model.kicks.push_back({"side \"left\"", 0.5, 0.02, 90.0 * kDegToRad, 3.0 * kDegToRad});
+  const std::string text = KickModelJson(model, "calibrated: seed 7");
+  const KickModel back = LoadKickModel(testing::WriteTempFile("kick_model_json_round.json", text));
+  EXPECT_EQ(back.robot, "nao");
+  EXPECT_DOUBLE_EQ(back.rolling_deceleration_mps2, 0.2712);
+  ASSERT_EQ(back.kicks.size(), 2u);
+  EXPECT_DOUBLE_EQ(back.kicks[0].speed_mps, 0.7812);
+  EXPECT_DOUBLE_EQ(back.kicks[0].sigma_speed_mps, 0.0612);
+  EXPECT_NEAR(back.kicks[0].direction_rad * kRadToDeg, 1.23, 1e-12);
+  EXPECT_EQ(back.kicks[1].name, "side \"left\"");
+  EXPECT_NEAR(back.kicks[1].direction_rad * kRadToDeg, 90.0, 1e-12);
+  EXPECT_NE(text.find("\"notes\": \"calibrated: seed 7\""), std::string::npos);
+}
+
+TEST(KickModelJsonTest, ShippedModelSurvivesARoundTrip) {
+  const KickModel shipped = ShippedNao();
+  const KickModel back = LoadKickModel(
+      testing::WriteTempFile("kick_model_json_shipped.json", KickModelJson(shipped, "")));
+  ASSERT_EQ(back.kicks.size(), shipped.kicks.size());
+  for (std::size_t i = 0; i < shipped.kicks.size(); ++i) {
+    EXPECT_EQ(back.kicks[i].name, shipped.kicks[i].name);
+    EXPECT_NEAR(back.kicks[i].speed_mps, shipped.kicks[i].speed_mps, 1e-12);
+    EXPECT_NEAR(back.kicks[i].sigma_direction_rad, shipped.kicks[i].sigma_direction_rad, 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace foresight

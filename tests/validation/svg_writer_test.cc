@@ -31,5 +31,13 @@ TEST(SvgWriterTest, DocumentHasHeaderBodyAndEnd) {
   EXPECT_EQ(doc.substr(doc.size() - 7), "</svg>\n");
 }
 
+TEST(SvgWriterTest, PathKeepsItsDataAndStyle) {
+  SvgWriter svg(100, 50);
+  svg.Path("M 1 2 L 3 4 A 5 5 0 0 0 6 7 Z", "fill:none;stroke:#000");
+  const std::string doc = svg.Finish();
+  EXPECT_NE(doc.find("<path d=\"M 1 2 L 3 4 A 5 5 0 0 0 6 7 Z\" style=\"fill:none;stroke:#000\"/>"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace foresight

@@ -1,0 +1,200 @@
+#include "app/calibrate_command.h"
+
+#include <chrono>
+#include <iostream>
+
+#include "app/cli_values.h"
+#include "app/report_text.h"
+#include "models/error.h"
+#include "models/model_paths.h"
+#include "models/random.h"
+#include "validation/atomic_file.h"
+#include "validation/calibration_report.h"
+#include "validation/observed_kicks.h"
+#include "validation/physics_runs.h"
+#include "validation/physics_setup.h"
+
+namespace foresight {
+
+namespace {
+
+constexpr int kMaxTrials = 1000000;
+constexpr int kMaxThreads = 1024;
+
+// The kicks to calibrate: --kick, or every kick of `available` with --all.
+std::vector<std::string> ChosenKicks(const CalibrateOptions& options,
+                                     const std::vector<std::string>& available,
+                                     const std::string& where) {
+  if (options.all || options.kick.empty()) return available;
+  for (const std::string& name : available) {
+    if (name == options.kick) return {name};
+  }
+  std::string names;
+  for (const std::string& name : available) names += (names.empty() ? "" : ", ") + name;
+  throw InputError("--kick: no kick '" + options.kick + "' in " + where + " (one of: " + names + ")");
+}
+
+void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem::path& models,
+                          CalibrationRun& run, const KickModel& base) {
+  const std::filesystem::path situation_file =
+      options.situation_file.empty() ? models / "calibration" / (options.robot + ".json")
+                                     : std::filesystem::path(options.situation_file);
+  SituationOverrides overrides;
+  overrides.kicks_file = options.kicks_file;
+  auto setup = LoadPhysicsSetup(LoadSituation(situation_file, models, overrides), models,
+                                options.physics_file);
+  if (setup->situation.kicks.robot != options.robot) {
+    throw InputError(situation_file.string() + ": kicks: the kick model is for robot '" +
+                     setup->situation.kicks.robot + "', not '" + options.robot + "'");
+  }
+  std::vector<std::string> available;
+  for (const KickSpec& k : base.kicks) {
+    if (setup->robot.FindMotion(k.name)) available.push_back(k.name);
+  }
+  const std::vector<std::string> kicks =
+      ChosenKicks(options, available, "the motions of robot '" + options.robot + "'");
+  run.source = "physics";
+  run.situation_file = DisplayPath(situation_file, models);
+  run.physics_file = DisplayPath(setup->physics_file, models);
+  run.carpet_deceleration_mps2 = setup->params.carpet.rolling_deceleration_mps2;
+  run.trials_per_kick = ParseCount("--trials", options.trials, 8, kMaxTrials);
+  const double radius = setup->situation.field.ball.radius_m;
+  for (std::size_t k = 0; k < kicks.size(); ++k) {
+    KickTrialsRequest request;
+    request.state = setup->state;
+    request.kick_index = *setup->situation.kicks.Find(kicks[k]);
+    request.trials = run.trials_per_kick;
+    // Each kick its own seed stream, so calibrating one kick alone gives the same numbers.
+    request.seed = StreamKey(run.seed, static_cast<std::uint64_t>(request.kick_index));
+    request.threads = ParseCount("--threads", options.threads, 0, kMaxThreads);
+    request.record_trace = true;
+    request.progress = TerminalProgress("calibrate " + kicks[k] + ":");
+    CalibratedKick kick;
+    for (TrialResult& trial : RunKickTrials(*setup->simulator, request)) {
+      if (!trial.touched) {
+        ++kick.missed;
+        continue;
+      }
+      kick.observations.push_back(ObservationOf(trial, radius));
+      kick.draws.push_back(trial.draw);
+    }
+    run.kicks.push_back(std::move(kick));
+    run.kicks.back().fit.kick = kicks[k];
+  }
+}
+
+void CalibrateFromCsv(const CalibrateOptions& options, CalibrationRun& run, const KickModel& base) {
+  const ObservedKicks observed = ReadObservedKicks(options.from_csv, base.rolling_deceleration_mps2);
+  run.source = options.from_csv;
+  run.speeds_from_rest = observed.speeds_from_rest;
+  for (const std::string& name : ChosenKicks(options, observed.kick_names, options.from_csv)) {
+    if (!base.Find(name)) {
+      throw InputError(options.from_csv + ": kick: '" + name + "' is not a kick of " +
+                       run.base_kicks_file);
+    }
+    CalibratedKick kick;
+    kick.observations = observed.by_kick.at(name);
+    kick.fit.kick = name;
+    run.kicks.push_back(std::move(kick));
+  }
+}
+
+void Fit(CalibrationRun& run) {
+  std::vector<KickObservation> all;
+  std::vector<KickCalibration> fits;
+  for (CalibratedKick& kick : run.kicks) {
+    kick.fit = CalibrateKick(kick.fit.kick, kick.observations, run.settings);
+    fits.push_back(kick.fit);
+    all.insert(all.end(), kick.observations.begin(), kick.observations.end());
+  }
+  run.deceleration = FitPooledDeceleration(all, run.settings);
+  run.fitted = ApplyCalibration(run.base, fits, run.deceleration);
+}
+
+std::string ModelNotes(const CalibrationRun& run) {
+  std::string kicks;
+  for (const CalibratedKick& k : run.kicks) kicks += (kicks.empty() ? "" : ", ") + k.fit.kick;
+  return "Calibrated by foresight calibrate " + run.version + " from " + run.source +
+         (run.trials_per_kick > 0 ? " (" + std::to_string(run.trials_per_kick) + " trials per kick)" : "") +
+         ", seed " + std::to_string(run.seed) + ", kicks: " + kicks + "; other values from " +
+         run.base_kicks_file + ".";
+}
+
+}  // namespace
+
+void AddCalibrateCommand(CLI::App& app, CalibrateOptions& options) {
+  CLI::App* cmd = app.add_subcommand(
+      "calibrate", "Fit a robot's kick noise model from physics trials or observed kicks");
+  cmd->add_option("--robot", options.robot, "Robot (nao, aibo_ers7)")->required();
+  auto* kick = cmd->add_option("--kick", options.kick, "The kick to calibrate");
+  cmd->add_flag("--all", options.all, "Calibrate every kick of the robot")->excludes(kick);
+  cmd->add_option("--trials", options.trials, "Physics trials per kick")->capture_default_str();
+  cmd->add_option("--seed", options.seed, "Random seed")->capture_default_str();
+  cmd->add_option("--threads", options.threads, "Worker threads (0: all cores)")
+      ->capture_default_str();
+  cmd->add_option("--out", options.out_file, "Kick-model file to write")->required();
+  cmd->add_option("--report", options.report_dir, "Folder for the JSON, CSV and HTML report");
+  cmd->add_option("--situation", options.situation_file,
+                  "Where the robot kicks (default: MODELS/calibration/<robot>.json)");
+  cmd->add_option("--kicks", options.kicks_file,
+                  "Kick model to start from (default: MODELS/kicks/<robot>.json)");
+  cmd->add_option("--physics", options.physics_file,
+                  "Physics file (default: MODELS/physics/<field>.json)");
+  cmd->add_option("--from-csv", options.from_csv,
+                  "Fit observed kicks from this CSV instead of running physics");
+  cmd->add_option("--confidence", options.confidence, "Interval level")->capture_default_str();
+  cmd->add_option("--resamples", options.resamples, "Bootstrap resamples")->capture_default_str();
+}
+
+int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::filesystem::path models =
+      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+  CalibrationRun run;
+  run.version = FORESIGHT_VERSION;
+  run.robot = options.robot;
+  run.seed = ParseSeed(options.seed);
+  run.settings.seed = run.seed;
+  run.settings.confidence = ParseNumber("--confidence", options.confidence, 0.5, 0.999);
+  run.settings.resamples = ParseCount("--resamples", options.resamples, 100, 100000);
+  const std::filesystem::path base_file =
+      options.kicks_file.empty() ? models / "kicks" / (options.robot + ".json")
+                                 : std::filesystem::path(options.kicks_file);
+  run.base = LoadKickModel(base_file);
+  run.base_kicks_file = DisplayPath(base_file, models);
+  run.out_file = options.out_file;
+  if (options.from_csv.empty()) {
+    if (options.kick.empty() && !options.all) throw InputError("--kick or --all: say which kicks");
+    CalibrateFromPhysics(options, models, run, run.base);
+  } else {
+    CalibrateFromCsv(options, run, run.base);
+  }
+  Fit(run);
+  run.run_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  // Everything is made before anything is written.
+  const std::string model = KickModelJson(run.fitted, ModelNotes(run));
+  std::vector<std::pair<std::filesystem::path, std::string>> files;
+  if (!options.report_dir.empty()) {
+    const std::filesystem::path dir(options.report_dir);
+    files.push_back({dir / "calibration.json", CalibrationJson(run).dump(2) + "\n"});
+    files.push_back({dir / "calibration_kicks.csv", CalibrationObservationsCsv(run)});
+    files.push_back({dir / "calibration_summary.csv", CalibrationSummaryCsv(run)});
+    files.push_back({dir / "calibration.html", CalibrationHtml(run)});
+  }
+  files.push_back({options.out_file, model});
+  const std::string text = CalibrationText(run);
+  if (!options.report_dir.empty()) CreateReportDir(options.report_dir, "--report");
+  for (const auto& [file, content] : files) WriteFileAtomically(file, content);
+  std::cout << text << "wrote the calibrated kick model to " << options.out_file << "\n";
+  if (!options.report_dir.empty()) {
+    std::cout << "report: " << (std::filesystem::path(options.report_dir) / "calibration.html").string()
+              << "\n";
+  }
+  std::cout << std::flush;
+  if (!std::cout) throw InputError("cannot write to standard output");
+  return 0;
+}
+
+}  // namespace foresight

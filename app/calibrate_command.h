@@ -1,0 +1,30 @@
+// `foresight calibrate`: fits a robot's kick noise model from physics trials (or from a CSV of
+// real kicks) and writes it as a kick-model file the planner reads.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace foresight {
+
+struct CalibrateOptions {
+  std::string robot;
+  std::string kick;  // one kick, or --all
+  bool all = false;
+  std::string trials = "1000";
+  std::string seed = "1";
+  std::string threads = "0";
+  std::string out_file;
+  std::string report_dir;
+  std::string situation_file;  // default: MODELS/calibration/<robot>.json
+  std::string kicks_file;      // the committed model to start from (default: the situation's)
+  std::string physics_file;
+  std::string from_csv;
+  std::string confidence = "0.95";
+  std::string resamples = "2000";
+};
+
+void AddCalibrateCommand(CLI::App& app, CalibrateOptions& options);
+int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir);
+
+}  // namespace foresight

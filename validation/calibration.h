@@ -1,0 +1,79 @@
+// Calibrating a kick's noise model (models/kick_model.h) from observed kicks: physics trials or
+// a robot's real kicks.
+//
+// The model (Mellmann & Schlotter, sec. III-B): launch speed v0 ~ N(mu_v, sigma_v^2) and
+// direction alpha ~ N(mu_alpha, sigma_alpha^2) in the robot frame. Speeds get the normal fit
+// with exact intervals and an Anderson-Darling test that is valid with estimated parameters;
+// directions get the circular mean and circular standard deviation sqrt(-2 ln R) with bootstrap
+// intervals, and the same test on the directions unwrapped around their mean (the model treats
+// alpha as a normal). The rolling deceleration comes from the balls' speed over time
+// (validation/deceleration_fit.h) or, for observed kicks, from launch speeds and roll distances.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "models/kick_model.h"
+#include "physics/trial.h"
+#include "validation/deceleration_fit.h"
+#include "validation/statistics.h"
+
+namespace foresight {
+
+// One observed kick. `rolling` (speed over time while the ball rolls freely) may be empty;
+// roll_distance_m is the straight distance from the launch to the rest, when known and the
+// ball touched nothing (else NaN).
+struct KickObservation {
+  double launch_speed_mps = 0.0;
+  double launch_direction_rad = 0.0;  // robot frame
+  std::vector<SpeedSample> rolling;
+  double roll_distance_m = 0.0;
+  bool has_roll_distance = false;
+};
+
+struct CalibrationSettings {
+  double confidence = 0.95;
+  int resamples = 2000;  // bootstrap resamples
+  std::uint64_t seed = 1;
+  double normality_level = 0.05;  // below this p-value the report says the normal model fails
+};
+
+struct KickCalibration {
+  std::string kick;
+  int observations = 0;
+  NormalFit speed;
+  NormalityTest speed_normality;
+  std::vector<QqPoint> speed_qq;
+  CircularFit direction;
+  std::vector<double> direction_unwrapped_rad;  // around the circular mean
+  NormalityTest direction_normality;
+  std::vector<QqPoint> direction_qq;  // radians
+  std::optional<DecelerationFit> deceleration;  // this kick's balls alone
+};
+
+// Throws InputError when there are fewer than 8 observations (too few for the test).
+KickCalibration CalibrateKick(const std::string& kick, std::span<const KickObservation> kicks,
+                              const CalibrationSettings& settings);
+
+// The deceleration of all given kicks' balls together: from trajectories when any observation
+// has them, else from roll distances (d = v0^2 / 2a, least squares through the origin with a
+// bootstrap interval); nothing when neither is known.
+std::optional<DecelerationFit> FitPooledDeceleration(std::span<const KickObservation> kicks,
+                                                     const CalibrationSettings& settings);
+
+// What a physics trial shows of its kick. The rolling samples run from the launch until the ball
+// leaves the carpet (bounces), slows below min_speed_mps (below about 0.2 m/s the
+// contact jitters and the rest tail begins; both bias the slope low) or the
+// trace ends; a trial whose ball touched a post, net or robot gives no rolling samples.
+KickObservation ObservationOf(const TrialResult& trial, double ball_radius_m,
+                              double min_speed_mps = 0.2);
+
+// `base` with the calibrated kicks' speed, direction and sigmas replaced, and the deceleration
+// when one is given. Kicks not in `calibrated` keep their values.
+KickModel ApplyCalibration(const KickModel& base, std::span<const KickCalibration> calibrated,
+                           const std::optional<DecelerationFit>& deceleration);
+
+}  // namespace foresight

@@ -1,0 +1,219 @@
+#include "validation/calibration_report.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "models/geometry.h"
+
+namespace foresight {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string Fixed(double value, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
+}
+
+Json IntervalJson(const Interval& interval, double scale = 1.0) {
+  return Json::array({interval.low * scale, interval.high * scale});
+}
+
+Json NormalityJson(const NormalityTest& test, double level) {
+  return Json{{"anderson_darling_a2", test.anderson_darling},
+              {"anderson_darling_p", test.anderson_darling_p},
+              {"lilliefors_d", test.lilliefors_d},
+              {"lilliefors_p", test.lilliefors_p},
+              {"normal_model_fits", !test.Rejected(level)}};
+}
+
+Json DecelerationJson(const DecelerationFit& fit) {
+  return Json{{"deceleration_mps2", fit.deceleration_mps2},
+              {"ci_mps2", IntervalJson(fit.ci_mps2)},
+              {"trials", fit.trials},
+              {"samples", fit.samples},
+              {"residual_sd_mps", fit.residual_sd_mps}};
+}
+
+Json KickSpecJson(const KickSpec& k) {
+  return Json{{"speed_mps", k.speed_mps},
+              {"sigma_speed_mps", k.sigma_speed_mps},
+              {"direction_deg", k.direction_rad * kRadToDeg},
+              {"sigma_direction_deg", k.sigma_direction_rad * kRadToDeg}};
+}
+
+Json KickJson(const CalibrationRun& run, const CalibratedKick& kick) {
+  const KickCalibration& c = kick.fit;
+  const double level = run.settings.normality_level;
+  Json j{{"name", c.kick}, {"observations", c.observations}, {"missed", kick.missed}};
+  if (const auto i = run.base.Find(c.kick)) j["committed"] = KickSpecJson(run.base.kicks[*i]);
+  j["speed"] = Json{{"mean_mps", c.speed.mean},
+                    {"mean_ci_mps", IntervalJson(c.speed.mean_ci)},
+                    {"sd_mps", c.speed.sd},
+                    {"sd_ci_mps", IntervalJson(c.speed.sd_ci)},
+                    {"skewness", c.speed.skewness},
+                    {"excess_kurtosis", c.speed.excess_kurtosis},
+                    {"normality", NormalityJson(c.speed_normality, level)}};
+  j["direction"] = Json{{"mean_deg", c.direction.mean_rad * kRadToDeg},
+                        {"mean_ci_deg", IntervalJson(c.direction.mean_ci_rad, kRadToDeg)},
+                        {"circular_sd_deg", c.direction.sd_rad * kRadToDeg},
+                        {"circular_sd_ci_deg", IntervalJson(c.direction.sd_ci_rad, kRadToDeg)},
+                        {"resultant_length", c.direction.resultant_length},
+                        {"normality", NormalityJson(c.direction_normality, level)}};
+  j["deceleration"] = c.deceleration ? DecelerationJson(*c.deceleration) : Json(nullptr);
+  return j;
+}
+
+}  // namespace
+
+std::vector<std::string> CalibrationWarnings(const CalibrationRun& run) {
+  std::vector<std::string> warnings;
+  const double level = run.settings.normality_level;
+  for (const CalibratedKick& kick : run.kicks) {
+    const KickCalibration& c = kick.fit;
+    if (c.speed_normality.Rejected(level)) {
+      warnings.push_back(
+          c.kick + ": the normal model does not fit the launch speeds (Anderson-Darling A*2 = " +
+          Fixed(c.speed_normality.anderson_darling, 3) +
+          ", p = " + Fixed(c.speed_normality.anderson_darling_p, 4) +
+          ", skewness " + Fixed(c.speed.skewness, 2) + ", excess kurtosis " +
+          Fixed(c.speed.excess_kurtosis, 2) + "); sigma_v summarises the spread only roughly");
+    }
+    if (c.direction_normality.Rejected(level)) {
+      warnings.push_back(
+          c.kick + ": the normal model does not fit the launch directions (Anderson-Darling p = " +
+          Fixed(c.direction_normality.anderson_darling_p, 4) + ")");
+    }
+    if (kick.missed > 0) {
+      warnings.push_back(c.kick + ": the robot missed the ball in " + std::to_string(kick.missed) +
+                         " trials; they are not in the fit");
+    }
+  }
+  if (run.speeds_from_rest > 0) {
+    warnings.push_back(std::to_string(run.speeds_from_rest) +
+                       " rows had no launch speed; it was derived from the rest position with "
+                       "the assumed deceleration " +
+                       Fixed(run.base.rolling_deceleration_mps2, 4) + " m/s^2");
+  }
+  if (!run.deceleration) {
+    warnings.push_back("the rolling deceleration could not be fitted (no trajectories and no "
+                       "rows with both launch and rest); the model keeps " +
+                       Fixed(run.base.rolling_deceleration_mps2, 4) + " m/s^2");
+  }
+  return warnings;
+}
+
+std::string CalibrationText(const CalibrationRun& run) {
+  const int pct = static_cast<int>(std::lround(run.settings.confidence * 100.0));
+  std::string out = "calibration of " + run.robot + " from " + run.source + " (" +
+                    std::to_string(pct) + " % intervals)\n";
+  for (const CalibratedKick& kick : run.kicks) {
+    const KickCalibration& c = kick.fit;
+    out += "  " + c.kick + " (" + std::to_string(c.observations) + " kicks): v0 " +
+           Fixed(c.speed.mean, 3) + " m/s [" + Fixed(c.speed.mean_ci.low, 3) + ", " +
+           Fixed(c.speed.mean_ci.high, 3) + "], sigma_v " + Fixed(c.speed.sd, 3) + " [" +
+           Fixed(c.speed.sd_ci.low, 3) + ", " + Fixed(c.speed.sd_ci.high, 3) + "]; alpha " +
+           Fixed(c.direction.mean_rad * kRadToDeg, 1) + " deg [" +
+           Fixed(c.direction.mean_ci_rad.low * kRadToDeg, 1) + ", " +
+           Fixed(c.direction.mean_ci_rad.high * kRadToDeg, 1) + "], sigma_alpha " +
+           Fixed(c.direction.sd_rad * kRadToDeg, 1) + " deg [" +
+           Fixed(c.direction.sd_ci_rad.low * kRadToDeg, 1) + ", " +
+           Fixed(c.direction.sd_ci_rad.high * kRadToDeg, 1) + "]; normal speeds: " +
+           (c.speed_normality.Rejected(run.settings.normality_level) ? "no" : "yes") +
+           " (AD p = " + Fixed(c.speed_normality.anderson_darling_p, 3) + ")\n";
+  }
+  if (run.deceleration) {
+    out += "  rolling deceleration " + Fixed(run.deceleration->deceleration_mps2, 4) + " m/s^2 [" +
+           Fixed(run.deceleration->ci_mps2.low, 4) + ", " +
+           Fixed(run.deceleration->ci_mps2.high, 4) + "]";
+    if (run.carpet_deceleration_mps2) {
+      out += " (carpet set to " + Fixed(*run.carpet_deceleration_mps2, 4) + ")";
+    }
+    out += "\n";
+  }
+  for (const std::string& w : CalibrationWarnings(run)) out += "  warning: " + w + "\n";
+  return out;
+}
+
+Json CalibrationJson(const CalibrationRun& run) {
+  Json j{{"tool", "foresight calibrate"},
+         {"version", run.version},
+         {"robot", run.robot},
+         {"source", run.source},
+         {"seed", run.seed},
+         {"trials_per_kick", run.trials_per_kick},
+         {"confidence", run.settings.confidence},
+         {"bootstrap_resamples", run.settings.resamples},
+         {"normality_level", run.settings.normality_level},
+         {"files", Json{{"situation", run.situation_file},
+                        {"physics", run.physics_file},
+                        {"base_kicks", run.base_kicks_file},
+                        {"out", run.out_file}}},
+         {"run_time_s", run.run_time_s}};
+  j["kicks"] = Json::array();
+  for (const CalibratedKick& kick : run.kicks) j["kicks"].push_back(KickJson(run, kick));
+  j["deceleration"] = run.deceleration ? DecelerationJson(*run.deceleration) : Json(nullptr);
+  j["carpet_deceleration_mps2"] =
+      run.carpet_deceleration_mps2 ? Json(*run.carpet_deceleration_mps2) : Json(nullptr);
+  j["warnings"] = CalibrationWarnings(run);
+  Json fitted = Json::array();
+  for (const KickSpec& k : run.fitted.kicks) {
+    Json spec{{"name", k.name}};
+    spec.update(KickSpecJson(k));
+    fitted.push_back(spec);
+  }
+  j["fitted_model"] = Json{{"robot", run.fitted.robot},
+                           {"rolling_deceleration_mps2", run.fitted.rolling_deceleration_mps2},
+                           {"kicks", fitted}};
+  return j;
+}
+
+std::string CalibrationObservationsCsv(const CalibrationRun& run) {
+  std::string out =
+      "kick,index,launch_speed_mps,launch_direction_deg,roll_distance_m,rolling_samples,"
+      "placement_dx_m,placement_dy_m,placement_dtheta_deg,speed_factor,carpet_factor\n";
+  for (const CalibratedKick& kick : run.kicks) {
+    for (std::size_t i = 0; i < kick.observations.size(); ++i) {
+      const KickObservation& o = kick.observations[i];
+      out += kick.fit.kick + "," + std::to_string(i) + "," + Fixed(o.launch_speed_mps, 6) + "," +
+             Fixed(o.launch_direction_rad * kRadToDeg, 4) + "," +
+             (o.has_roll_distance ? Fixed(o.roll_distance_m, 6) : "") + "," +
+             std::to_string(o.rolling.size()) + ",";
+      if (i < kick.draws.size()) {
+        const TrialDraw& d = kick.draws[i];
+        out += Fixed(d.placement_dx_m, 6) + "," + Fixed(d.placement_dy_m, 6) + "," +
+               Fixed(d.placement_dtheta_rad * kRadToDeg, 4) + "," + Fixed(d.speed_factor, 6) +
+               "," + Fixed(d.carpet_factor, 6) + "\n";
+      } else {
+        out += ",,,,\n";
+      }
+    }
+  }
+  return out;
+}
+
+std::string CalibrationSummaryCsv(const CalibrationRun& run) {
+  std::string out =
+      "kick,observations,speed_mps,speed_ci_low,speed_ci_high,sigma_speed_mps,sigma_ci_low,"
+      "sigma_ci_high,direction_deg,direction_ci_low,direction_ci_high,sigma_direction_deg,"
+      "sigma_direction_ci_low,sigma_direction_ci_high,speed_ad_p,direction_ad_p\n";
+  for (const CalibratedKick& kick : run.kicks) {
+    const KickCalibration& c = kick.fit;
+    const double d = kRadToDeg;
+    out += c.kick + "," + std::to_string(c.observations) + "," + Fixed(c.speed.mean, 6) + "," +
+           Fixed(c.speed.mean_ci.low, 6) + "," + Fixed(c.speed.mean_ci.high, 6) + "," +
+           Fixed(c.speed.sd, 6) + "," + Fixed(c.speed.sd_ci.low, 6) + "," +
+           Fixed(c.speed.sd_ci.high, 6) + "," + Fixed(c.direction.mean_rad * d, 4) + "," +
+           Fixed(c.direction.mean_ci_rad.low * d, 4) + "," +
+           Fixed(c.direction.mean_ci_rad.high * d, 4) + "," + Fixed(c.direction.sd_rad * d, 4) +
+           "," + Fixed(c.direction.sd_ci_rad.low * d, 4) + "," +
+           Fixed(c.direction.sd_ci_rad.high * d, 4) + "," +
+           Fixed(c.speed_normality.anderson_darling_p, 6) + "," +
+           Fixed(c.direction_normality.anderson_darling_p, 6) + "\n";
+  }
+  return out;
+}
+
+}  // namespace foresight

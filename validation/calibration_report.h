@@ -1,0 +1,53 @@
+// What a calibration run writes: JSON (the contract), CSV (one row per observed kick, and one
+// per fitted kick), a self-contained HTML page, and a short text for the terminal.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "models/kick_model.h"
+#include "physics/trial.h"
+#include "validation/calibration.h"
+
+namespace foresight {
+
+// The observations behind one fitted kick; `draws` (physics only) are the physical causes each
+// trial drew, in the same order.
+struct CalibratedKick {
+  KickCalibration fit;
+  std::vector<KickObservation> observations;
+  std::vector<TrialDraw> draws;
+  int missed = 0;  // physics trials in which the robot did not touch the ball
+};
+
+struct CalibrationRun {
+  std::string version;
+  std::string robot;
+  std::string source;  // "physics" or the CSV file
+  std::string situation_file, physics_file, base_kicks_file, out_file;
+  int trials_per_kick = 0;  // physics only
+  std::uint64_t seed = 0;
+  CalibrationSettings settings;
+  std::optional<double> carpet_deceleration_mps2;  // physics: the carpet's truth
+  int speeds_from_rest = 0;                         // CSV: speeds derived from rest positions
+  KickModel base;
+  KickModel fitted;
+  std::vector<CalibratedKick> kicks;
+  std::optional<DecelerationFit> deceleration;  // pooled over all kicks
+  double run_time_s = 0.0;
+};
+
+// Plain statements of what does not fit (for text and HTML): an empty list means none.
+std::vector<std::string> CalibrationWarnings(const CalibrationRun& run);
+
+std::string CalibrationText(const CalibrationRun& run);
+nlohmann::ordered_json CalibrationJson(const CalibrationRun& run);
+std::string CalibrationObservationsCsv(const CalibrationRun& run);
+std::string CalibrationSummaryCsv(const CalibrationRun& run);
+std::string CalibrationHtml(const CalibrationRun& run);
+
+}  // namespace foresight

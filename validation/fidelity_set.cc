@@ -1,0 +1,56 @@
+#include "validation/fidelity_set.h"
+
+#include <cmath>
+
+#include "models/error.h"
+#include "models/geometry.h"
+#include "models/json_reader.h"
+
+namespace foresight {
+
+namespace {
+
+std::filesystem::path SetFile(const std::string& set, const std::filesystem::path& models_dir) {
+  if (set.size() > 5 && set.ends_with(".json")) return set;
+  return models_dir / "fidelity" / (set + ".json");
+}
+
+}  // namespace
+
+FidelitySet LoadFidelitySet(const std::string& set, const std::filesystem::path& models_dir,
+                            const std::filesystem::path& kicks_override) {
+  FidelitySet result;
+  result.file = SetFile(set, models_dir);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(result.file, ec)) {
+    throw InputError("--situations: " + result.file.string() + " does not exist");
+  }
+  JsonDocument doc = JsonDocument::Load(result.file);
+  JsonObject root = doc.Root();
+  root.RejectUnknownKeys({"name", "rotations_deg", "situations"});
+  result.name = root.StringOr("name", result.file.stem().string());
+  for (double deg : root.NumberArray("rotations_deg")) {
+    if (deg < -180.0 || deg > 180.0) {
+      root.Fail("rotations_deg", "must lie in [-180, 180], got " + std::to_string(deg));
+    }
+    result.rotations_rad.push_back(deg * kDegToRad);
+  }
+  if (result.rotations_rad.empty()) root.Fail("rotations_deg", "must list at least one rotation");
+  SituationOverrides overrides;
+  overrides.kicks_file = kicks_override;
+  for (const JsonObject& item : root.ObjectArray("situations")) {
+    item.RejectUnknownKeys({"file", "class"});
+    FidelityCase c;
+    c.situation_class = item.String("class");
+    c.file = result.file.parent_path() / item.String("file");
+    if (!std::filesystem::is_regular_file(c.file, ec)) {
+      item.Fail("file", "refers to " + c.file.string() + ", which does not exist");
+    }
+    c.situation = LoadSituation(c.file, models_dir, overrides);
+    result.cases.push_back(std::move(c));
+  }
+  if (result.cases.empty()) root.Fail("situations", "must list at least one situation");
+  return result;
+}
+
+}  // namespace foresight

@@ -1,0 +1,37 @@
+// A set of situations for the fidelity comparison (models/fidelity/*.json):
+//   {
+//     "name": "default",
+//     "rotations_deg": [-180, -150, ..., 150],   // candidate turns around the ball, every kick
+//     "situations": [{"file": "situations/open_centre.json", "class": "open_field"}, ...]
+//   }
+// Situation files are named relative to the set file. "class" groups the aggregates (open
+// field, near the opponent goal, ...).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "models/situation.h"
+
+namespace foresight {
+
+struct FidelityCase {
+  std::string situation_class;
+  std::filesystem::path file;
+  Situation situation;
+};
+
+struct FidelitySet {
+  std::string name;
+  std::filesystem::path file;
+  std::vector<double> rotations_rad;
+  std::vector<FidelityCase> cases;
+};
+
+// `set` is a file, or a bare name found as MODELS/fidelity/<name>.json. `kicks_override`, when
+// not empty, replaces every situation's kick model. Throws InputError on bad input.
+FidelitySet LoadFidelitySet(const std::string& set, const std::filesystem::path& models_dir,
+                            const std::filesystem::path& kicks_override = {});
+
+}  // namespace foresight

@@ -1,0 +1,61 @@
+#include "validation/physics_evaluator.h"
+
+#include "physics/parallel_for.h"
+
+namespace foresight {
+
+PhysicsActionEvaluator::PhysicsActionEvaluator(const Situation& situation,
+                                               const PhysicsSimulator& simulator,
+                                               const PositionValue& value, int trials,
+                                               std::uint64_t seed, int threads)
+    : ActionEvaluator(situation), simulator_(simulator), value_(value), threads_(threads) {
+  DrawSamples(situation.state, seed, trials, samples_);
+}
+
+PhysicsHypothesis PhysicsActionEvaluator::Run(int kick_index, double rotation_rad) const {
+  PhysicsHypothesis h;
+  h.outcomes.resize(samples_.size());
+  const auto run_trial = [&](int i) {
+    const DrawnSample& sample = samples_[static_cast<std::size_t>(i)];
+    if (kick_index < 0) {  // `none`: the ball stays where it lies
+      h.outcomes[i].p_F_rest = sample.state.p_F_ball;
+      return;
+    }
+    const ConcreteAction action = MakeAction(situation_.kicks, kick_index, rotation_rad, sample);
+    h.outcomes[i] = simulator_.Simulate(sample.state, action);
+  };
+  ParallelFor(static_cast<int>(samples_.size()), kick_index < 0 ? 1 : threads_, run_trial);
+  HypothesisAccumulator hypothesis;
+  for (const Outcome& outcome : h.outcomes) {
+    AddOutcome(hypothesis, outcome, value_);
+    double utility = 0.0;
+    if (outcome.category == Category::kInfield) utility = value_.Value(outcome.p_F_rest);
+    if (outcome.category == Category::kOppGoal) utility = situation_.evaluation.goal_value;
+    h.utilities.push_back(utility);
+  }
+  h.evaluation = hypothesis.Finish(situation_.evaluation);
+  return h;
+}
+
+const PhysicsHypothesis& PhysicsActionEvaluator::Hypothesis(int kick_index, double rotation_rad) {
+  const std::pair<int, double> key{kick_index < 0 ? -1 : kick_index,
+                                   kick_index < 0 ? 0.0 : rotation_rad};
+  auto it = done_.find(key);
+  if (it == done_.end()) {
+    it = done_.emplace(key, Run(key.first, key.second)).first;
+    if (key.first >= 0) trials_run_ += static_cast<long long>(samples_.size());
+  }
+  return it->second;
+}
+
+ActionEvaluation PhysicsActionEvaluator::Evaluate(int kick_index, double rotation_rad) {
+  ++evaluations_;
+  return Hypothesis(kick_index, rotation_rad).evaluation;
+}
+
+std::vector<Outcome> PhysicsActionEvaluator::Outcomes(int kick_index, double rotation_rad) const {
+  const auto it = done_.find({kick_index < 0 ? -1 : kick_index, kick_index < 0 ? 0.0 : rotation_rad});
+  return it != done_.end() ? it->second.outcomes : Run(kick_index, rotation_rad).outcomes;
+}
+
+}  // namespace foresight

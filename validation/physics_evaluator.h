@@ -1,0 +1,52 @@
+// Scoring candidate actions with physics: the hypothesis of an action is M physics trials
+// instead of N coarse samples (the same evaluation, planner/hypothesis.h).
+//
+// Trial i of every candidate draws the same state from the situation's state estimate and the
+// same physical perturbations (common random numbers, as the coarse samples do), so candidates
+// differ by their action only. Trials run in parallel; results are the same with any thread
+// count. Evaluations are remembered by (kick, rotation), so several strategies deciding on the
+// same evaluator (validation/candidate_grid.h) pay for each hypothesis once.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "physics/physics_simulator.h"
+#include "planner/action_evaluator.h"
+#include "planner/position_value.h"
+
+namespace foresight {
+
+// One candidate's physics hypothesis: per-trial outcomes and utilities (eq. 5 per trial: the
+// rest position's value when infield, the goal value for a goal, 0 else), and its evaluation.
+struct PhysicsHypothesis {
+  ActionEvaluation evaluation;
+  std::vector<Outcome> outcomes;
+  std::vector<double> utilities;
+};
+
+class PhysicsActionEvaluator final : public ActionEvaluator {
+ public:
+  PhysicsActionEvaluator(const Situation& situation, const PhysicsSimulator& simulator,
+                         const PositionValue& value, int trials, std::uint64_t seed, int threads);
+
+  ActionEvaluation Evaluate(int kick_index, double rotation_rad) override;
+  std::vector<Outcome> Outcomes(int kick_index, double rotation_rad) const override;
+  // Runs the trials if they have not run yet.
+  const PhysicsHypothesis& Hypothesis(int kick_index, double rotation_rad);
+  long long trials_run() const { return trials_run_; }
+
+ private:
+  PhysicsHypothesis Run(int kick_index, double rotation_rad) const;
+
+  const PhysicsSimulator& simulator_;
+  const PositionValue& value_;
+  int threads_;
+  std::vector<DrawnSample> samples_;
+  std::map<std::pair<int, double>, PhysicsHypothesis> done_;
+  long long trials_run_ = 0;
+};
+
+}  // namespace foresight

@@ -1,0 +1,22 @@
+#include "validation/physics_setup.h"
+
+namespace foresight {
+
+std::unique_ptr<PhysicsSetup> LoadPhysicsSetup(Situation situation,
+                                               const std::filesystem::path& models_dir,
+                                               const std::filesystem::path& physics_file) {
+  auto setup = std::make_unique<PhysicsSetup>();
+  setup->situation = std::move(situation);
+  const Situation& s = setup->situation;
+  setup->robot = LoadRobot(s.kicks.robot, models_dir);
+  setup->physics_file =
+      physics_file.empty() ? models_dir / "physics" / (s.field.name + ".json") : physics_file;
+  setup->params = LoadPhysicsParams(setup->physics_file);
+  setup->state = DrawnState{s.state.robot, s.state.MeanBallInField()};
+  setup->simulator.emplace(MakePhysicsScene(s.field, setup->params, &setup->robot, s.obstacles,
+                                            setup->state.p_F_ball),
+                           s.kicks);
+  return setup;
+}
+
+}  // namespace foresight

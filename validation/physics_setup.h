@@ -1,0 +1,35 @@
+// A situation's physics world, loaded from the shipped data: the robot of the situation's kick
+// model, the physics parameters of its field (or a given file), the scene and the simulator.
+// Physics plays the world as it is, so the state is the situation's mean, not a draw.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "models/physics_params.h"
+#include "models/robot_spec.h"
+#include "models/situation.h"
+#include "physics/physics_simulator.h"
+
+namespace foresight {
+
+struct PhysicsSetup {
+  Situation situation;
+  Robot robot;
+  std::filesystem::path physics_file;
+  PhysicsParams params;
+  DrawnState state;  // the situation's mean state
+  std::optional<PhysicsSimulator> simulator;
+
+  PhysicsSetup() = default;
+  PhysicsSetup(const PhysicsSetup&) = delete;  // the scene points into it
+  PhysicsSetup& operator=(const PhysicsSetup&) = delete;
+};
+
+// `physics_file` empty: MODELS/physics/<field>.json. Throws InputError on bad files.
+std::unique_ptr<PhysicsSetup> LoadPhysicsSetup(Situation situation,
+                                               const std::filesystem::path& models_dir,
+                                               const std::filesystem::path& physics_file = {});
+
+}  // namespace foresight
