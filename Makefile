@@ -6,7 +6,7 @@ JOBS ?= $(shell nproc)
 SITUATION ?= models/situations/near_goal_corner.json
 STRATEGY ?= optimal_all
 
-.PHONY: setup build test demo bench sanitize clean
+.PHONY: setup build test main demo bench sanitize clean
 
 setup:
 	@bash scripts/setup.sh
@@ -15,11 +15,25 @@ build: setup
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS)
 
-# The test command (CI runs exactly this through .ci/run).
+# The test command (CI runs exactly this through .ci/run): the GoogleTest suite, then the
+# physics checks of models/check_specs/default.json (JUnit XML in $(BUILD)/check-junit.xml).
 test: build
 	@ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+	@$(BUILD)/app/foresight check --junit $(BUILD)/check-junit.xml
 
-# The main job on the shipped defaults: a decision on a shipped situation, printed and drawn.
+# The main job on the shipped defaults: calibrate the NAO's kicks from physics, write the
+# calibrated kick model, compare the coarse model (with that model) against physics on the
+# quick situation set, and write both reports.
+main: build
+	@mkdir -p out
+	@$(BUILD)/app/foresight calibrate --robot nao --all --trials 1000 --out out/nao_calibrated.json --report out/calibration
+	@echo
+	@$(BUILD)/app/foresight fidelity --situations quick --kicks out/nao_calibrated.json --trials 30 --out out/fidelity
+	@echo
+	@echo "calibrated kick model: out/nao_calibrated.json"
+	@echo "reports: out/calibration/calibration.html and out/fidelity/fidelity.html"
+
+# A decision on a shipped situation, printed and drawn.
 demo: build
 	@mkdir -p out
 	@$(BUILD)/app/foresight decide --situation $(SITUATION) --strategy $(STRATEGY) --svg out/decision.svg

@@ -7,7 +7,6 @@
 #include "app/report_text.h"
 #include "models/error.h"
 #include "models/model_paths.h"
-#include "models/random.h"
 #include "validation/atomic_file.h"
 #include "validation/calibration_report.h"
 #include "validation/observed_kicks.h"
@@ -64,8 +63,7 @@ void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem
     request.state = setup->state;
     request.kick_index = *setup->situation.kicks.Find(kicks[k]);
     request.trials = run.trials_per_kick;
-    // Each kick its own seed stream, so calibrating one kick alone gives the same numbers.
-    request.seed = StreamKey(run.seed, static_cast<std::uint64_t>(request.kick_index));
+    request.seed = CalibrationSeed(run.seed, request.kick_index);
     request.threads = ParseCount("--threads", options.threads, 0, kMaxThreads);
     request.record_trace = true;
     request.progress = TerminalProgress("calibrate " + kicks[k] + ":");

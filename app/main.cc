@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/calibrate_command.h"
+#include "app/check_command.h"
 #include "app/decide_command.h"
 #include "app/fidelity_command.h"
 #include "app/simulate_command.h"
@@ -33,6 +34,8 @@ int main(int argc, char** argv) {
   foresight::AddSimulateCommand(app, simulate);
   foresight::CalibrateOptions calibrate;
   foresight::AddCalibrateCommand(app, calibrate);
+  foresight::CheckOptions check;
+  foresight::AddCheckCommand(app, check);
   foresight::FidelityOptions fidelity;
   foresight::AddFidelityCommand(app, fidelity);
 
@@ -52,6 +55,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("decide")) return foresight::RunDecide(decide, models_dir);
     if (app.got_subcommand("simulate")) return foresight::RunSimulate(simulate, models_dir);
     if (app.got_subcommand("calibrate")) return foresight::RunCalibrate(calibrate, models_dir);
+    if (app.got_subcommand("check")) return foresight::RunCheckCommand(check, models_dir);
     if (app.got_subcommand("fidelity")) {
       return foresight::RunFidelityCommand(fidelity, models_dir);
     }

@@ -51,7 +51,10 @@ StepContacts ContactsOf(btDispatcher& dispatcher, const btCollisionObject& ball)
     if (a != &ball && b != &ball) continue;
     bool touching = false;
     for (int k = 0; k < manifold->getNumContacts() && !touching; ++k) {
-      touching = manifold->getContactPoint(k).getDistance() <= 1e-3;
+      // A fast ball is often stopped by a speculative contact: the solver pushes it back while
+      // the point is still a little apart, so an applied impulse counts as a touch too.
+      const btManifoldPoint& point = manifold->getContactPoint(k);
+      touching = point.getDistance() <= 1e-3 || point.getAppliedImpulse() > 0.0;
     }
     if (!touching) continue;
     const BodyTag tag = TagOf(a == &ball ? *b : *a);

@@ -17,11 +17,18 @@
 #include <vector>
 
 #include "models/kick_model.h"
+#include "models/random.h"
 #include "physics/trial.h"
 #include "validation/deceleration_fit.h"
 #include "validation/statistics.h"
 
 namespace foresight {
+
+// The seed of kick `kick_index`'s physics trials in a calibration seeded with `seed`: each kick
+// has its own, so calibrating one kick alone gives the same numbers as calibrating all.
+inline std::uint64_t CalibrationSeed(std::uint64_t seed, int kick_index) {
+  return StreamKey(seed, static_cast<std::uint64_t>(kick_index));
+}
 
 // One observed kick. `rolling` (speed over time while the ball rolls freely) may be empty;
 // roll_distance_m is the straight distance from the launch to the rest, when known and the

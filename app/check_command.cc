@@ -1,0 +1,48 @@
+#include "app/check_command.h"
+
+#include <iostream>
+
+#include "app/cli_values.h"
+#include "models/error.h"
+#include "models/model_paths.h"
+#include "validation/atomic_file.h"
+#include "validation/physics_checks.h"
+
+namespace foresight {
+
+void AddCheckCommand(CLI::App& app, CheckOptions& options) {
+  CLI::App* cmd = app.add_subcommand("check", "Run physics expectations from a spec file (CI)");
+  cmd->add_option("--spec", options.spec_file,
+                  "Spec file (default: MODELS/check_specs/default.json)");
+  cmd->add_option("--junit", options.junit_file, "Write the results as JUnit XML");
+  cmd->add_option("--threads", options.threads, "Worker threads (0: all cores)")
+      ->capture_default_str();
+}
+
+int RunCheckCommand(const CheckOptions& options, const std::string& models_dir) {
+  const std::filesystem::path models =
+      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+  const int threads = ParseCount("--threads", options.threads, 0, 1024);
+  const std::filesystem::path spec_file = options.spec_file.empty()
+                                              ? models / "check_specs" / "default.json"
+                                              : std::filesystem::path(options.spec_file);
+  const CheckSuite suite = LoadCheckSuite(spec_file, models);
+  int failed = 0;
+  const std::vector<CheckResult> results =
+      RunChecks(suite, models, threads, [&](const CheckResult& r) {
+        failed += !r.passed;
+        std::cout << (r.passed ? "PASS " : "FAIL ") << r.name << " (" << r.kind << ", "
+                  << static_cast<int>(r.time_s * 10.0 + 0.5) / 10.0 << " s): " << r.detail
+                  << "\n"
+                  << std::flush;
+      });
+  if (!options.junit_file.empty()) {
+    WriteFileAtomically(options.junit_file, JUnitXml("foresight check " + suite.name, results));
+  }
+  std::cout << results.size() - failed << " of " << results.size() << " checks passed\n"
+            << std::flush;
+  if (!std::cout) throw InputError("cannot write to standard output");
+  return failed == 0 ? 0 : 1;
+}
+
+}  // namespace foresight

@@ -1,0 +1,221 @@
+// The kinds of `foresight check` (validation/physics_checks.h says what each expects).
+#include <cmath>
+#include <cstdio>
+
+#include "models/error.h"
+#include "models/field_spec.h"
+#include "models/geometry.h"
+#include "models/model_paths.h"
+#include "physics/physics_scene.h"
+#include "physics/trial.h"
+#include "validation/calibration.h"
+#include "validation/fidelity.h"
+#include "validation/physics_checks.h"
+#include "validation/physics_runs.h"
+#include "validation/physics_setup.h"
+
+namespace foresight {
+
+namespace {
+
+std::string Fixed(double value, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
+}
+
+CheckResult Result(bool passed, std::string detail) {
+  CheckResult r;
+  r.passed = passed;
+  r.detail = std::move(detail);
+  return r;
+}
+
+// The field and its physics with the carpet made uniform: checks of the engine, not the carpet.
+struct UniformWorld {
+  FieldSpec field;
+  PhysicsParams params;
+};
+
+UniformWorld LoadUniformWorld(const CheckSpec& spec, const std::filesystem::path& models) {
+  const std::string& name = spec.text.at("field");
+  UniformWorld w;
+  w.field = LoadFieldSpec(ResolveModelFile(name, "fields", spec.dir, models));
+  w.params = LoadPhysicsParams(models / "physics" / (w.field.name + ".json"));
+  w.params.carpet.deceleration_sigma_rel = 0.0;
+  w.params.carpet.patch_sigma_rel = 0.0;
+  return w;
+}
+
+CheckResult FreeRoll(const CheckSpec& spec, const std::filesystem::path& models) {
+  const UniformWorld w = LoadUniformWorld(spec, models);
+  const PhysicsScene scene = MakePhysicsScene(w.field, w.params, nullptr, {}, Vec2(0, 0));
+  const double v = spec.number.at("speed_mps");
+  const double a = w.params.carpet.rolling_deceleration_mps2;
+  const double expected = v * v / (2.0 * a);
+  const Vec2 dir = UnitVector(spec.number.at("heading_deg") * kDegToRad);
+  const Vec2 start = -0.5 * expected * dir;
+  const double r = w.field.ball.radius_m;
+  const TrialResult trial = RunRollTrial(scene, RollingBall(start, r, v, std::atan2(dir.y(), dir.x())), 1, true);
+  const Vec2 travel = trial.outcome.p_F_rest - start;
+  const double error_rel = std::abs(travel.norm() - expected) / expected;
+  double lateral = 0.0;
+  for (const TracePoint& p : trial.trace) {
+    const Vec2 q = p.p_F.head<2>() - start;
+    lateral = std::max(lateral, std::abs(dir.x() * q.y() - dir.y() * q.x()));
+  }
+  const bool ok = trial.settled && error_rel <= spec.number.at("max_error_rel") &&
+                  lateral <= spec.number.at("max_lateral_m");
+  return Result(ok, "rolled " + Fixed(travel.norm(), 4) + " m, v^2/2a = " + Fixed(expected, 4) +
+                        " m (error " + Fixed(error_rel * 100.0, 2) + " %, limit " +
+                        Fixed(spec.number.at("max_error_rel") * 100.0, 2) + " %), off the line " +
+                        Fixed(lateral * 1000.0, 1) + " mm (limit " +
+                        Fixed(spec.number.at("max_lateral_m") * 1000.0, 1) + " mm)" +
+                        (trial.settled ? "" : ", did not settle"));
+}
+
+CheckResult NoTunnelling(const CheckSpec& spec, const std::filesystem::path& models) {
+  const UniformWorld w = LoadUniformWorld(spec, models);
+  const PhysicsScene scene = MakePhysicsScene(w.field, w.params, nullptr, {}, Vec2(0, 0));
+  const GoalSpec& g = w.field.goal;
+  const double r = w.field.ball.radius_m;
+  const std::string& target = spec.text.at("target");
+  Vec2 start;
+  double heading = 0.0;
+  // clearance(p): how far the ball's surface is from the target's surface (negative: inside).
+  std::function<double(const Vec2&)> clearance;
+  if (target == "post") {
+    const Vec2 post(g.post_centre_x_m, g.post_centre_y_m);
+    start = post - Vec2(1.0, 0.0);
+    clearance = [=](const Vec2& p) { return (p - post).norm() - g.post_radius_m - r; };
+  } else if (target == "back_net") {
+    const double back_x = g.post_centre_x_m + g.net_depth_m;
+    start = Vec2(g.post_centre_x_m - 1.0, 0.1 * g.post_centre_y_m);
+    clearance = [=](const Vec2& p) { return back_x - p.x() - r; };
+  } else {
+    const double outer_y = g.post_centre_y_m + w.params.materials.net_thickness_m;
+    start = Vec2(g.post_centre_x_m + 0.5 * g.net_depth_m, outer_y + 1.0);
+    heading = -0.5 * kPi;
+    clearance = [=](const Vec2& p) { return p.y() - outer_y - r; };
+  }
+  const double v = spec.number.at("speed_mps");
+  const TrialResult trial = RunRollTrial(scene, RollingBall(start, r, v, heading), 1, true);
+  double penetration = 0.0;
+  for (const TracePoint& p : trial.trace) {
+    if (p.p_F.z() > g.net_height_m) continue;  // over the goal: nothing to hit
+    penetration = std::max(penetration, -clearance(p.p_F.head<2>()));
+  }
+  const bool touched = trial.outcome.first_contact != Contact::kNone;
+  const bool ok = touched && penetration <= spec.number.at("max_penetration_m");
+  return Result(ok, "ball at " + Fixed(v, 1) + " m/s into the " + target + ": deepest " +
+                        Fixed(penetration * 1000.0, 1) + " mm into it (limit " +
+                        Fixed(spec.number.at("max_penetration_m") * 1000.0, 1) + " mm), first contact " +
+                        std::string(ContactName(trial.outcome.first_contact)));
+}
+
+std::unique_ptr<PhysicsSetup> CalibrationSetup(const CheckSpec& spec,
+                                               const std::filesystem::path& models) {
+  SituationOverrides overrides;
+  overrides.kicks_file = ResolveModelFile(spec.text.at("kicks"), "kicks", spec.dir, models);
+  const std::filesystem::path situation =
+      models / "calibration" / (spec.text.at("robot") + ".json");
+  return LoadPhysicsSetup(LoadSituation(situation, models, overrides), models);
+}
+
+std::vector<TrialResult> KickTrials(const PhysicsSetup& setup, int kick, int trials, int threads,
+                                   std::uint64_t seed) {
+  KickTrialsRequest request;
+  request.state = setup.state;
+  request.kick_index = kick;
+  request.trials = trials;
+  request.seed = CalibrationSeed(seed, kick);
+  request.threads = threads;
+  request.record_trace = true;
+  return RunKickTrials(*setup.simulator, request);
+}
+
+CheckResult KickDirection(const CheckSpec& spec, const std::filesystem::path& models, int threads) {
+  const auto setup = CalibrationSetup(spec, models);
+  const std::optional<int> kick = setup->situation.kicks.Find(spec.text.at("kick"));
+  if (!kick || !setup->simulator->HasMotion(*kick)) {
+    throw InputError(spec.where + ": kick: no kick '" + spec.text.at("kick") + "' with a motion");
+  }
+  const auto results =
+      KickTrials(*setup, *kick, static_cast<int>(spec.number.at("trials")), threads, 1);
+  const TrialSummary s = Summarize(results);
+  const double expected = setup->situation.kicks.kicks[*kick].direction_rad;
+  const double error_deg = std::abs(WrapAngle(s.launch_direction_mean_rad - expected)) * kRadToDeg;
+  const bool ok = s.touched == s.trials && error_deg <= spec.number.at("max_error_deg");
+  return Result(ok, std::to_string(s.touched) + " of " + std::to_string(s.trials) +
+                        " trials touched the ball; mean direction " +
+                        Fixed(s.launch_direction_mean_rad * kRadToDeg, 1) + " deg, model " +
+                        Fixed(expected * kRadToDeg, 1) + " deg (off by " + Fixed(error_deg, 1) +
+                        ", limit " + Fixed(spec.number.at("max_error_deg"), 1) + ")");
+}
+
+CheckResult CalibrationBand(const CheckSpec& spec, const std::filesystem::path& models,
+                            int threads) {
+  const auto setup = CalibrationSetup(spec, models);
+  const KickModel& model = setup->situation.kicks;
+  const double band = spec.number.at("band_rel");
+  bool ok = true;
+  std::string detail;
+  for (int k = 0; k < static_cast<int>(model.kicks.size()); ++k) {
+    if (!setup->simulator->HasMotion(k)) continue;
+    std::vector<KickObservation> observed;
+    for (const TrialResult& t :
+         KickTrials(*setup, k, static_cast<int>(spec.number.at("trials")), threads,
+                    static_cast<std::uint64_t>(spec.number.at("seed")))) {
+      if (t.touched) observed.push_back(ObservationOf(t, setup->situation.field.ball.radius_m));
+    }
+    const KickSpec& m = model.kicks[k];
+    const KickCalibration c = CalibrateKick(m.name, observed, CalibrationSettings{});
+    const auto within = [&](double fitted, double committed) {
+      return std::abs(fitted - committed) <= band * std::abs(committed);
+    };
+    const bool kick_ok =
+        within(c.speed.mean, m.speed_mps) && within(c.speed.sd, m.sigma_speed_mps) &&
+        within(c.direction.sd_rad, m.sigma_direction_rad) &&
+        std::abs(WrapAngle(c.direction.mean_rad - m.direction_rad)) * kRadToDeg <=
+            spec.number.at("band_deg");
+    ok = ok && kick_ok;
+    detail += (detail.empty() ? "" : "; ") + m.name + (kick_ok ? " ok" : " OUT") + " (v0 " +
+              Fixed(c.speed.mean, 3) + "/" + Fixed(m.speed_mps, 3) + ", sigma_v " +
+              Fixed(c.speed.sd, 3) + "/" + Fixed(m.sigma_speed_mps, 3) + ", alpha " +
+              Fixed(c.direction.mean_rad * kRadToDeg, 1) + "/" + Fixed(m.direction_rad * kRadToDeg, 1) +
+              ", sigma_alpha " + Fixed(c.direction.sd_rad * kRadToDeg, 2) + "/" +
+              Fixed(m.sigma_direction_rad * kRadToDeg, 2) + ")";
+  }
+  return Result(ok, "fitted/committed: " + detail);
+}
+
+CheckResult FidelityFloor(const CheckSpec& spec, const std::filesystem::path& models, int threads) {
+  const std::filesystem::path kicks =
+      ResolveModelFile(spec.text.at("kicks"), "kicks", spec.dir, models);
+  const FidelitySet set = LoadFidelitySet(spec.text.at("situations"), models, kicks);
+  FidelitySettings settings;
+  settings.physics_trials = static_cast<int>(spec.number.at("trials"));
+  settings.converged_samples = 500;
+  settings.threads = threads;
+  const FidelityResult r = RunFidelity(set, models, settings);
+  const ClassSummary& all = r.classes.front();
+  const bool ok = all.tau_coarse.mean >= spec.number.at("min_tau_b") &&
+                  all.regret_coarse.mean <= spec.number.at("max_regret");
+  return Result(ok, std::to_string(all.situations) + " situations: mean tau-b " +
+                        Fixed(all.tau_coarse.mean, 3) + " (floor " +
+                        Fixed(spec.number.at("min_tau_b"), 3) + "), mean regret " +
+                        Fixed(all.regret_coarse.mean, 4) + " (ceiling " +
+                        Fixed(spec.number.at("max_regret"), 4) + ")");
+}
+
+}  // namespace
+
+CheckResult RunCheck(const CheckSpec& spec, const std::filesystem::path& models_dir, int threads) {
+  if (spec.kind == "free_roll") return FreeRoll(spec, models_dir);
+  if (spec.kind == "no_tunnelling") return NoTunnelling(spec, models_dir);
+  if (spec.kind == "kick_direction") return KickDirection(spec, models_dir, threads);
+  if (spec.kind == "calibration_band") return CalibrationBand(spec, models_dir, threads);
+  return FidelityFloor(spec, models_dir, threads);
+}
+
+}  // namespace foresight
