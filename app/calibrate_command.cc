@@ -126,7 +126,8 @@ void AddCalibrateCommand(CLI::App& app, CalibrateOptions& options) {
   cmd->add_option("--robot", options.robot, "Robot (nao, aibo_ers7)")->required();
   auto* kick = cmd->add_option("--kick", options.kick, "The kick to calibrate");
   cmd->add_flag("--all", options.all, "Calibrate every kick of the robot")->excludes(kick);
-  cmd->add_option("--trials", options.trials, "Physics trials per kick")->capture_default_str();
+  auto* trials =
+      cmd->add_option("--trials", options.trials, "Physics trials per kick")->capture_default_str();
   cmd->add_option("--seed", options.seed, "Random seed")->capture_default_str();
   cmd->add_option("--threads", options.threads, "Worker threads (0: all cores)")
       ->capture_default_str();
@@ -139,7 +140,8 @@ void AddCalibrateCommand(CLI::App& app, CalibrateOptions& options) {
   cmd->add_option("--physics", options.physics_file,
                   "Physics file (default: MODELS/physics/<field>.json)");
   cmd->add_option("--from-csv", options.from_csv,
-                  "Fit observed kicks from this CSV instead of running physics");
+                  "Fit observed kicks from this CSV instead of running physics")
+      ->excludes(trials);
   cmd->add_option("--confidence", options.confidence, "Interval level")->capture_default_str();
   cmd->add_option("--resamples", options.resamples, "Bootstrap resamples")->capture_default_str();
 }
@@ -183,6 +185,15 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
   }
   files.push_back({options.out_file, model});
   const std::string text = CalibrationText(run);
+  // The kick model first: if it cannot be written, no report is left behind either.
+  const std::filesystem::path out_dir = std::filesystem::path(options.out_file).parent_path();
+  std::error_code ec;
+  if (!out_dir.empty() && !std::filesystem::is_directory(out_dir, ec)) {
+    throw InputError("--out: " + options.out_file + ": the folder " + out_dir.string() +
+                     " does not exist");
+  }
+  WriteFileAtomically(files.back().first, files.back().second);
+  files.pop_back();
   if (!options.report_dir.empty()) CreateReportDir(options.report_dir, "--report");
   for (const auto& [file, content] : files) WriteFileAtomically(file, content);
   std::cout << text << "wrote the calibrated kick model to " << options.out_file << "\n";

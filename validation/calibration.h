@@ -31,8 +31,8 @@ inline std::uint64_t CalibrationSeed(std::uint64_t seed, int kick_index) {
 }
 
 // One observed kick. `rolling` (speed over time while the ball rolls freely) may be empty;
-// roll_distance_m is the straight distance from the launch to the rest, when known and the
-// ball touched nothing (else NaN).
+// roll_distance_m is the straight distance from the launch to the rest, meaningful only when
+// has_roll_distance (the ball came to rest without touching anything).
 struct KickObservation {
   double launch_speed_mps = 0.0;
   double launch_direction_rad = 0.0;  // robot frame

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "models/error.h"
@@ -106,12 +107,15 @@ SituationFidelity RunOne(const FidelityCase& fc, const std::vector<double>& rota
   return s;
 }
 
-MeanWithInterval MeanOf(const std::vector<double>& values, double confidence) {
+// The mean with a t interval, clipped to the range the quantity can take.
+MeanWithInterval MeanOf(const std::vector<double>& values, double confidence, double lo,
+                        double hi) {
   MeanWithInterval m;
   m.n = static_cast<int>(values.size());
   if (values.empty()) return m;
   m.mean = std::accumulate(values.begin(), values.end(), 0.0) / m.n;
   m.ci = values.size() >= 2 ? MeanTInterval(values, confidence) : Interval{m.mean, m.mean};
+  m.ci = {std::clamp(m.ci.low, lo, hi), std::clamp(m.ci.high, lo, hi)};
   return m;
 }
 
@@ -140,10 +144,11 @@ ClassSummary Summarize(const std::string& name, const std::vector<const Situatio
   ClassSummary c;
   c.situation_class = name;
   c.situations = static_cast<int>(in.size());
-  c.tau_coarse = MeanOf(tau_c, confidence);
-  c.tau_converged = MeanOf(tau_v, confidence);
-  c.regret_coarse = MeanOf(reg_c, confidence);
-  c.regret_converged = MeanOf(reg_v, confidence);
+  constexpr double kHuge = std::numeric_limits<double>::max();
+  c.tau_coarse = MeanOf(tau_c, confidence, -1.0, 1.0);
+  c.tau_converged = MeanOf(tau_v, confidence, -1.0, 1.0);
+  c.regret_coarse = MeanOf(reg_c, confidence, 0.0, kHuge);  // >= 0 by construction
+  c.regret_converged = MeanOf(reg_v, confidence, 0.0, kHuge);
   c.top1_coarse = ShareOf(top_c, confidence);
   c.top1_converged = ShareOf(top_v, confidence);
   return c;
@@ -174,7 +179,10 @@ void Aggregate(FidelityResult& r, double confidence) {
       agree.push_back(s.decisions[i].agree);
       regret.push_back(s.decisions[i].regret);
     }
-    r.strategies.push_back({strategies[i], ShareOf(agree, confidence), MeanOf(regret, confidence)});
+    // A strategy's physics decision need not have the best utility, so this may be negative.
+    r.strategies.push_back({strategies[i], ShareOf(agree, confidence),
+                            MeanOf(regret, confidence, -std::numeric_limits<double>::max(),
+                                   std::numeric_limits<double>::max())});
   }
 }
 

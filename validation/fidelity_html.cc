@@ -16,7 +16,8 @@ namespace {
 std::string Fixed(double value, int decimals) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  return buffer;
+  const std::string text = buffer;
+  return text.find_first_not_of("-0.") == std::string::npos ? text.substr(text[0] == '-') : text;
 }
 
 std::string MeanText(const MeanWithInterval& m, int decimals) {
@@ -32,13 +33,13 @@ std::string ActionText(const Situation& s, int kick, double rotation_rad) {
 void SummaryTables(HtmlReport& html, const FidelityResult& r) {
   std::vector<std::vector<std::string>> rows;
   for (const ClassSummary& c : r.classes) {
-    rows.push_back({c.situation_class, std::to_string(c.situations), MeanText(c.tau_coarse, 3),
-                    MeanText(c.tau_converged, 3), MeanText(c.top1_coarse, 2),
+    rows.push_back({c.situation_class, std::to_string(c.situations), MeanText(c.tau_coarse, 2),
+                    MeanText(c.tau_converged, 2), MeanText(c.top1_coarse, 2),
                     MeanText(c.top1_converged, 2), MeanText(c.regret_coarse, 3),
                     MeanText(c.regret_converged, 3)});
   }
-  html.Table({"class", "situations", "tau-b coarse", "tau-b converged", "top-1 coarse",
-              "top-1 converged", "regret coarse", "regret converged"},
+  html.Table({"class", "n", "tau-b coarse", "tau-b conv.", "top-1 coarse", "top-1 conv.",
+              "regret coarse", "regret conv."},
              rows);
   html.Paragraph("Means with 95 % intervals (t intervals for tau and regret, Wilson intervals "
                  "for the top-1 shares). 'coarse' is the coarse model with the robot's N "

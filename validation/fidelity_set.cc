@@ -33,6 +33,11 @@ FidelitySet LoadFidelitySet(const std::string& set, const std::filesystem::path&
     if (deg < -180.0 || deg > 180.0) {
       root.Fail("rotations_deg", "must lie in [-180, 180], got " + std::to_string(deg));
     }
+    for (double earlier : result.rotations_rad) {
+      if (std::abs(WrapAngle(earlier - deg * kDegToRad)) < 1e-9) {
+        root.Fail("rotations_deg", "lists the turn " + std::to_string(deg) + " deg twice");
+      }
+    }
     result.rotations_rad.push_back(deg * kDegToRad);
   }
   if (result.rotations_rad.empty()) root.Fail("rotations_deg", "must list at least one rotation");

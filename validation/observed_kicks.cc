@@ -131,8 +131,11 @@ KickObservation ObservationOfRow(const Row& row, double deceleration, bool& spee
 
 ObservedKicks ReadObservedKicks(const std::filesystem::path& file,
                                 double assumed_deceleration_mps2) {
+  std::error_code ec;
   std::ifstream in(file);
-  if (!in) throw InputError(file.string() + ": cannot read the file");
+  if (!std::filesystem::is_regular_file(file, ec) || !in) {
+    throw InputError(file.string() + ": cannot read the file");
+  }
   std::string line;
   if (!std::getline(in, line)) throw InputError(file.string() + ": empty file, no header line");
   const std::map<std::string, int> columns = ReadHeader(line, file.string());

@@ -1,0 +1,248 @@
+// `foresight calibrate` against the real binary: the written kick model and report, the same
+// bytes whatever the thread count, observed kicks from CSV, and one-line errors that write
+// nothing.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "models/geometry.h"
+#include "models/kick_model.h"
+#include "tests/app/run_foresight.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using foresight::KickModel;
+using foresight::KickSpec;
+using foresight::LoadKickModel;
+using foresight::testing::CountOf;
+using foresight::testing::ReadFile;
+using foresight::testing::RunResult;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+KickModel ShippedNao() {
+  return LoadKickModel(std::filesystem::path(FORESIGHT_TEST_MODELS_DIR) / "kicks" / "nao.json");
+}
+
+class CalibrateCommandTest : public foresight::testing::ForesightRun {
+ protected:
+  RunResult Calibrate(std::vector<std::string> args) const {
+    args.insert(args.begin(), "calibrate");
+    return Run(args);
+  }
+  static std::vector<std::string> SideKick(const std::string& threads) {
+    return {"--robot", "nao",   "--kick",      "side_kick_left", "--trials", "40",        "--seed",
+            "3",       "--out", "fitted.json", "--report",       "report",   "--threads", threads};
+  }
+};
+
+TEST_F(CalibrateCommandTest, PhysicsCalibrationWritesModelAndReport) {
+  const RunResult r = Calibrate(SideKick("2"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("report/calibration.html"));
+  EXPECT_THAT(r.out, HasSubstr("fitted.json"));
+  EXPECT_THAT(r.out, HasSubstr("side_kick_left"));
+
+  const KickModel base = ShippedNao();
+  const KickModel fitted = LoadKickModel(work() / "fitted.json");
+  EXPECT_EQ(fitted.robot, "nao");
+  EXPECT_NE(fitted.rolling_deceleration_mps2, base.rolling_deceleration_mps2);
+  // The fitted deceleration is the carpet's (physics/spl.json), within a few per cent.
+  EXPECT_NEAR(fitted.rolling_deceleration_mps2, base.rolling_deceleration_mps2,
+              0.05 * base.rolling_deceleration_mps2);
+  ASSERT_EQ(fitted.kicks.size(), base.kicks.size());
+  for (std::size_t i = 0; i < base.kicks.size(); ++i) {
+    const KickSpec& got = fitted.kicks[i];
+    const KickSpec& was = base.kicks[i];
+    ASSERT_EQ(got.name, was.name);
+    if (was.name == "side_kick_left") {
+      EXPECT_NE(got.speed_mps, was.speed_mps);
+      EXPECT_NE(got.sigma_direction_rad, was.sigma_direction_rad);
+      EXPECT_GT(got.speed_mps, 0.0);
+      EXPECT_GT(got.sigma_speed_mps, 0.0);
+      EXPECT_NEAR(got.direction_rad, 90.0 * foresight::kDegToRad, 10.0 * foresight::kDegToRad);
+    } else {
+      EXPECT_NEAR(got.speed_mps, was.speed_mps, 1e-12) << was.name;
+      EXPECT_NEAR(got.sigma_speed_mps, was.sigma_speed_mps, 1e-12) << was.name;
+      EXPECT_NEAR(got.direction_rad, was.direction_rad, 1e-12) << was.name;
+      EXPECT_NEAR(got.sigma_direction_rad, was.sigma_direction_rad, 1e-12) << was.name;
+    }
+  }
+
+  const fs::path report = work() / "report";
+  const nlohmann::json j = nlohmann::json::parse(ReadFile(report / "calibration.json"));
+  EXPECT_EQ(j["robot"], "nao");
+  EXPECT_EQ(j["trials_per_kick"], 40);
+  ASSERT_EQ(j["kicks"].size(), 1u);
+  EXPECT_EQ(j["kicks"][0]["name"], "side_kick_left");
+  EXPECT_EQ(j["kicks"][0]["observations"].get<int>() + j["kicks"][0]["missed"].get<int>(), 40);
+  const std::string kicks_csv = ReadFile(report / "calibration_kicks.csv");
+  EXPECT_EQ(CountOf(kicks_csv, "\n"), 41) << kicks_csv.substr(0, 300);
+  EXPECT_THAT(kicks_csv, StartsWith("kick,"));
+  EXPECT_EQ(CountOf(kicks_csv, "\nside_kick_left,"), 40);
+  const std::string summary = ReadFile(report / "calibration_summary.csv");
+  EXPECT_EQ(CountOf(summary, "\n"), 2) << summary;
+  EXPECT_THAT(summary, HasSubstr("\nside_kick_left,"));
+  const std::string html = ReadFile(report / "calibration.html");
+  EXPECT_THAT(html, HasSubstr("<svg"));
+  EXPECT_THAT(html, ::testing::Not(HasSubstr("<script")));
+}
+
+TEST_F(CalibrateCommandTest, SameBytesWithOneThreadOrTwo) {
+  const RunResult one = Calibrate(SideKick("1"));
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  const std::string model_one = ReadFile(work() / "fitted.json");
+  nlohmann::json json_one = nlohmann::json::parse(ReadFile(work() / "report" / "calibration.json"));
+  const std::string csv_one = ReadFile(work() / "report" / "calibration_kicks.csv");
+  const RunResult two = Calibrate(SideKick("2"));
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  nlohmann::json json_two = nlohmann::json::parse(ReadFile(work() / "report" / "calibration.json"));
+  EXPECT_FALSE(model_one.empty());
+  EXPECT_EQ(model_one, ReadFile(work() / "fitted.json"));
+  EXPECT_EQ(csv_one, ReadFile(work() / "report" / "calibration_kicks.csv"));
+  ASSERT_TRUE(json_one.contains("run_time_s"));
+  json_one.erase("run_time_s");
+  json_two.erase("run_time_s");
+  EXPECT_EQ(json_one, json_two);
+
+  // A different seed draws different trials.
+  std::vector<std::string> other = SideKick("2");
+  other[7] = "4";
+  ASSERT_EQ(other[6], "--seed");
+  ASSERT_EQ(Calibrate(other).exit_code, 0);
+  EXPECT_NE(model_one, ReadFile(work() / "fitted.json"));
+}
+
+TEST_F(CalibrateCommandTest, OneKickAloneFitsAsInAllKicks) {
+  ASSERT_EQ(Calibrate(SideKick("2")).exit_code, 0);
+  const nlohmann::json alone =
+      nlohmann::json::parse(ReadFile(work() / "report" / "calibration.json"));
+  const RunResult r = Calibrate({"--robot", "nao", "--all", "--trials", "40", "--seed", "3",
+                                 "--out", "all.json", "--report", "all_report"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json all =
+      nlohmann::json::parse(ReadFile(work() / "all_report" / "calibration.json"));
+  ASSERT_EQ(all["kicks"].size(), 3u);
+  bool found = false;
+  for (const nlohmann::json& kick : all["kicks"]) {
+    if (kick["name"] != "side_kick_left") continue;
+    found = true;
+    EXPECT_EQ(kick["speed"], alone["kicks"][0]["speed"]);
+    EXPECT_EQ(kick["direction"], alone["kicks"][0]["direction"]);
+  }
+  EXPECT_TRUE(found);
+  EXPECT_EQ(CountOf(ReadFile(work() / "all_report" / "calibration_kicks.csv"), "\n"), 1 + 3 * 40);
+}
+
+TEST_F(CalibrateCommandTest, FromCsvFitsObservedKicks) {
+  // 12 side kicks: speeds symmetric around 0.6, directions 90 +- d in pairs; every rest at
+  // d = v0^2 / (2 * 0.3) straight along the launch (the robot faces +x from the origin).
+  const double speeds[] = {0.50, 0.70, 0.55, 0.65, 0.58, 0.62, 0.52, 0.68, 0.60, 0.60, 0.57, 0.63};
+  const double offsets[] = {0, 0, 2, -2, 4, -4, 6, -6, 1, -1, 3, -3};
+  std::string csv =
+      "kick,robot_x_m,robot_y_m,robot_theta_deg,ball_x_m,ball_y_m,launch_speed_mps,"
+      "launch_direction_deg,rest_x_m,rest_y_m\n";
+  for (int i = 0; i < 12; ++i) {
+    const double direction = (90.0 + offsets[i]) * foresight::kDegToRad;
+    const double d = speeds[i] * speeds[i] / (2.0 * 0.3);
+    csv += "side_kick_left,0,0,0,0,0," + std::to_string(speeds[i]) + "," +
+           std::to_string(90.0 + offsets[i]) + "," + std::to_string(d * std::cos(direction)) + "," +
+           std::to_string(d * std::sin(direction)) + "\n";
+  }
+  Write("kicks.csv", csv);
+  const RunResult r = Calibrate({"--robot", "nao", "--from-csv", "kicks.csv", "--out", "model.json",
+                                 "--report", "csv_report"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("model.json"));
+  const KickModel base = ShippedNao();
+  const KickModel fitted = LoadKickModel(work() / "model.json");
+  const KickSpec& left = fitted.kicks[*fitted.Find("side_kick_left")];
+  EXPECT_NEAR(left.speed_mps, 0.6, 1e-4);
+  EXPECT_NEAR(left.direction_rad, 90.0 * foresight::kDegToRad, 0.01 * foresight::kDegToRad);
+  EXPECT_GT(left.sigma_speed_mps, 0.04);
+  EXPECT_LT(left.sigma_speed_mps, 0.07);
+  EXPECT_NEAR(fitted.rolling_deceleration_mps2, 0.3, 2e-4);  // from the roll distances
+  const KickSpec& forward = fitted.kicks[*fitted.Find("forward")];
+  EXPECT_NEAR(forward.speed_mps, base.kicks[*base.Find("forward")].speed_mps, 1e-12);
+  const nlohmann::json j =
+      nlohmann::json::parse(ReadFile(work() / "csv_report" / "calibration.json"));
+  EXPECT_EQ(j["kicks"][0]["observations"], 12);
+  EXPECT_EQ(CountOf(ReadFile(work() / "csv_report" / "calibration_kicks.csv"), "\n"), 13);
+}
+
+TEST_F(CalibrateCommandTest, UnwritableModelLeavesNoReportBehind) {
+  const RunResult r = Calibrate({"--robot", "nao", "--kick", "forward", "--trials", "10", "--out",
+                                 "no_such_folder/model.json", "--report", "report"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, StartsWith("foresight: error: --out: no_such_folder/model.json"));
+  EXPECT_EQ(CountOf(r.err, "\n"), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(work() / "report"));
+}
+
+struct BadCalibrate {
+  std::string name;
+  std::vector<std::string> args;  // besides --out model.json --report report
+  std::string message;
+};
+
+void PrintTo(const BadCalibrate& c, std::ostream* os) {
+  *os << c.name;
+}
+
+class CalibrateErrorTest : public CalibrateCommandTest,
+                           public ::testing::WithParamInterface<BadCalibrate> {};
+
+TEST_P(CalibrateErrorTest, OneLineExitTwoNothingWritten) {
+  Write("bad.csv",
+        "kick,robot_x_m,robot_y_m,robot_theta_deg,ball_x_m,ball_y_m,launch_speed_mps,launch_"
+        "direction_deg\n"
+        "forward,0,0,0,0.15,0,1.0,0\n"
+        "forward,0,0,0,0.15,0,fast,0\n");
+  Write("short.csv",
+        "kick,robot_x_m,robot_y_m,robot_theta_deg,ball_x_m,ball_y_m,launch_speed_mps,launch_"
+        "direction_deg\n"
+        "forward,0,0,0,0.15,0,1.0,0\n");
+  Write("bicycle.csv",
+        "kick,robot_x_m,robot_y_m,robot_theta_deg,ball_x_m,ball_y_m,rest_x_m,rest_y_m\n"
+        "bicycle,0,0,0,0.15,0,-1,0\n");
+  std::vector<std::string> args = GetParam().args;
+  args.insert(args.end(), {"--out", "model.json", "--report", "report"});
+  const std::set<std::string> before = Listing();
+  const RunResult r = Calibrate(args);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_EQ(r.out, "");
+  EXPECT_THAT(r.err, StartsWith("foresight: error: "));
+  EXPECT_EQ(CountOf(r.err, "\n"), 1) << r.err;
+  EXPECT_THAT(r.err, HasSubstr(GetParam().message));
+  EXPECT_FALSE(fs::exists(work() / "model.json"));
+  EXPECT_FALSE(fs::exists(work() / "report"));
+  EXPECT_EQ(Listing(), before);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, CalibrateErrorTest,
+    ::testing::Values(
+        BadCalibrate{
+            "UnknownRobot", {"--robot", "robocup_bot", "--kick", "forward"}, "robocup_bot"},
+        BadCalibrate{"UnknownKick", {"--robot", "nao", "--kick", "bicycle"}, "bicycle"},
+        BadCalibrate{
+            "ThreeTrials", {"--robot", "nao", "--kick", "forward", "--trials", "3"}, "--trials"},
+        BadCalibrate{"MissingCsv", {"--robot", "nao", "--from-csv", "absent.csv"}, "absent.csv"},
+        BadCalibrate{"BadCsvCell", {"--robot", "nao", "--from-csv", "bad.csv"}, "line 3"},
+        BadCalibrate{"TooFewCsvKicks", {"--robot", "nao", "--from-csv", "short.csv"}, "forward"},
+        BadCalibrate{"CsvKickNotInModel",
+                     {"--robot", "nao", "--from-csv", "bicycle.csv"},
+                     "'bicycle' is not a kick"},
+        BadCalibrate{"NoKickNorAll", {"--robot", "nao"}, "--kick"},
+        BadCalibrate{"LowConfidence",
+                     {"--robot", "nao", "--kick", "forward", "--confidence", "0.1"},
+                     "--confidence"}),
+    [](const ::testing::TestParamInfo<BadCalibrate>& info) { return info.param.name; });
+
+}  // namespace

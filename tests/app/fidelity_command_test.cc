@@ -1,0 +1,88 @@
+// `foresight fidelity` against the real binary: a one-situation set writes the JSON, the two CSV
+// files and the HTML page; a bad flag is one line, exit code 2, and no folder.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tests/app/run_foresight.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using foresight::testing::CountOf;
+using foresight::testing::ReadFile;
+using foresight::testing::RunResult;
+using foresight::testing::ShippedSituation;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+class FidelityCommandTest : public foresight::testing::ForesightRun {
+ protected:
+  // A set with one situation (the shipped open goal), each kick at 0 and 90 deg.
+  fs::path OneSituationSet() const {
+    return Write("set.json", R"({"name": "one", "rotations_deg": [0, 90], "situations": [
+        {"class": "near_opp_goal", "file": ")" +
+                                 ShippedSituation("open_goal").string() + R"("}]})");
+  }
+  RunResult Fidelity(std::vector<std::string> args) const {
+    args.insert(args.begin(), "fidelity");
+    return Run(args);
+  }
+};
+
+TEST_F(FidelityCommandTest, OneSituationWritesJsonCsvAndHtml) {
+  const fs::path set = OneSituationSet();
+  const RunResult r = Fidelity(
+      {"--situations", set.string(), "--trials", "3", "--converged", "100", "--out", "report"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("report/fidelity.html"));
+  const fs::path dir = work() / "report";
+  const nlohmann::json j = nlohmann::json::parse(ReadFile(dir / "fidelity.json"));
+  ASSERT_TRUE(j.contains("classes"));
+  ASSERT_TRUE(j.contains("strategies"));
+  ASSERT_TRUE(j.contains("situations"));
+  EXPECT_EQ(j["situations"].size(), 1u);
+  EXPECT_EQ(j["strategies"].size(), 5u);
+  ASSERT_GE(j["classes"].size(), 1u);
+  EXPECT_EQ(j["classes"][0]["class"], "all");
+  EXPECT_EQ(j["classes"][0]["situations"], 1);
+  EXPECT_EQ(j["physics_trials"], 3);
+  EXPECT_EQ(j["converged_samples"], 100);
+  // Three NAO kicks at two rotations, three trials each; the decisions reuse them.
+  EXPECT_EQ(j["physics_trials_run"], 18);
+  const std::string candidates = ReadFile(dir / "fidelity_candidates.csv");
+  EXPECT_EQ(CountOf(candidates, "\n"), 1 + 3 * 2) << candidates;
+  const std::string situations = ReadFile(dir / "fidelity_situations.csv");
+  EXPECT_EQ(CountOf(situations, "\n"), 2) << situations;
+  const std::string html = ReadFile(dir / "fidelity.html");
+  EXPECT_THAT(html, HasSubstr("<svg"));
+  EXPECT_THAT(html, ::testing::Not(HasSubstr("<script")));
+  EXPECT_EQ(CountOf(html, "</html>"), 1);
+}
+
+TEST_F(FidelityCommandTest, OneTrialIsOneLineExitTwoAndNoFolder) {
+  const fs::path set = OneSituationSet();
+  const RunResult r = Fidelity({"--situations", set.string(), "--trials", "1", "--out", "report"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_THAT(r.err, StartsWith("foresight: error: "));
+  EXPECT_THAT(r.err, HasSubstr("--trials"));
+  EXPECT_EQ(CountOf(r.err, "\n"), 1) << r.err;
+  EXPECT_FALSE(fs::exists(work() / "report"));
+}
+
+TEST_F(FidelityCommandTest, BadSetIsOneLineExitTwoAndNoFolder) {
+  Write("bad_set.json", R"({"rotations_deg": [0, 200], "situations": []})");
+  const RunResult r =
+      Fidelity({"--situations", "bad_set.json", "--trials", "3", "--out", "report"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, StartsWith("foresight: error: "));
+  EXPECT_THAT(r.err, HasSubstr("bad_set.json"));
+  EXPECT_EQ(CountOf(r.err, "\n"), 1) << r.err;
+  EXPECT_FALSE(fs::exists(work() / "report"));
+}
+
+}  // namespace
