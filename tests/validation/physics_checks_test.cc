@@ -1,0 +1,107 @@
+// foresight check's spec loader, two check kinds that can pass and fail, and the JUnit XML.
+#include "validation/physics_checks.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <string>
+
+#include "models/error.h"
+#include "tests/support/test_situations.h"
+
+namespace foresight {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::filesystem::path Spec(const std::string& name, const std::string& checks) {
+  return testing::WriteTempFile("physics_checks_" + std::to_string(::getpid()) + "_" + name,
+                                R"({"name": "t", "checks": [)" + checks + "]}");
+}
+
+std::string LoadError(const std::filesystem::path& file) {
+  try {
+    LoadCheckSuite(file, testing::ModelsDir());
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+constexpr const char* kRoll =
+    R"({"name": "roll", "kind": "free_roll", "field": "spl", "speed_mps": 1.0, "heading_deg": 30, "max_error_rel": MAX, "max_lateral_m": 0.01})";
+
+std::string Roll(const std::string& max_error) {
+  std::string text = kRoll;
+  text.replace(text.find("MAX"), 3, max_error);
+  return text;
+}
+
+TEST(PhysicsChecksTest, ShippedSpecLoads) {
+  const CheckSuite suite =
+      LoadCheckSuite(testing::ModelsDir() / "check_specs" / "default.json", testing::ModelsDir());
+  EXPECT_EQ(suite.name, "default");
+  EXPECT_EQ(suite.checks.size(), 14u);
+}
+
+TEST(PhysicsChecksTest, BadSpecsNameFileAndField) {
+  const struct {
+    const char* name;
+    std::string checks;
+    const char* expected;
+  } cases[] = {
+      {"kind.json", R"({"name": "a", "kind": "levitate"})", "unknown kind 'levitate'"},
+      {"key.json", R"({"name": "a", "kind": "no_tunnelling", "field": "spl", "target": "post", "speed_mps": 5, "max_penetration_m": 0.01, "colour": "red"})", "colour"},
+      {"target.json", R"({"name": "a", "kind": "no_tunnelling", "field": "spl", "target": "goalie", "speed_mps": 5, "max_penetration_m": 0.01})", "goalie"},
+      {"trials.json", R"({"name": "a", "kind": "kick_direction", "robot": "nao", "kick": "forward", "kicks": "nao", "trials": 2.5, "max_error_deg": 5})", "trials"},
+      {"missing.json", R"({"name": "a", "kind": "free_roll", "field": "spl"})", "speed_mps"},
+      {"twice.json", Roll("0.02") + "," + Roll("0.02"), "duplicate check name 'roll'"},
+      {"empty.json", "", "checks"},
+  };
+  for (const auto& c : cases) {
+    const auto file = Spec(c.name, c.checks);
+    const std::string message = LoadError(file);
+    EXPECT_THAT(message, HasSubstr(file.string())) << c.name;
+    EXPECT_THAT(message, HasSubstr(c.expected)) << c.name;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << c.name;
+  }
+}
+
+TEST(PhysicsChecksTest, FreeRollPassesWithinItsToleranceAndFailsWithoutOne) {
+  const CheckSuite suite =
+      LoadCheckSuite(Spec("roll.json", Roll("0.02")), testing::ModelsDir());
+  const std::vector<CheckResult> pass = RunChecks(suite, testing::ModelsDir(), 1, {});
+  ASSERT_EQ(pass.size(), 1u);
+  EXPECT_TRUE(pass[0].passed) << pass[0].detail;
+  EXPECT_THAT(pass[0].detail, HasSubstr("v^2/2a"));
+  // No physics engine rolls exactly v^2/2a: a zero tolerance must fail.
+  const CheckSuite strict =
+      LoadCheckSuite(Spec("strict.json", Roll("0")), testing::ModelsDir());
+  EXPECT_FALSE(RunChecks(strict, testing::ModelsDir(), 1, {})[0].passed);
+}
+
+TEST(PhysicsChecksTest, FastBallDoesNotTunnelThroughThePost) {
+  const CheckSuite suite = LoadCheckSuite(
+      Spec("post.json",
+           R"({"name": "post", "kind": "no_tunnelling", "field": "spl", "target": "post", "speed_mps": 10, "max_penetration_m": 0.01})"),
+      testing::ModelsDir());
+  const CheckResult r = RunChecks(suite, testing::ModelsDir(), 1, {})[0];
+  EXPECT_TRUE(r.passed) << r.detail;
+  EXPECT_THAT(r.detail, HasSubstr("first contact post"));
+}
+
+TEST(PhysicsChecksTest, JUnitXmlCountsFailuresAndEscapes) {
+  std::vector<CheckResult> results(2);
+  results[0] = {"a<b", "free_roll", true, "rolled \"far\"", 0.5};
+  results[1] = {"c", "kick_direction", false, "off by 9 & more", 1.25};
+  const std::string xml = JUnitXml("suite", results);
+  EXPECT_THAT(xml, HasSubstr(R"(tests="2" failures="1")"));
+  EXPECT_THAT(xml, HasSubstr(R"(name="a&lt;b")"));
+  EXPECT_THAT(xml, HasSubstr(R"(<failure message="off by 9 &amp; more"/>)"));
+  EXPECT_THAT(xml, HasSubstr(R"(<system-out>rolled &quot;far&quot;</system-out>)"));
+  EXPECT_THAT(xml, HasSubstr(R"(time="1.750")"));
+}
+
+}  // namespace
+}  // namespace foresight
