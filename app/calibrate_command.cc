@@ -58,15 +58,16 @@ void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem
   run.carpet_deceleration_mps2 = setup->params.carpet.rolling_deceleration_mps2;
   run.trials_per_kick = ParseCount("--trials", options.trials, 8, kMaxTrials);
   const double radius = setup->situation.field.ball.radius_m;
+  const int threads = ParseCount("--threads", options.threads, 0, kMaxThreads);
   for (std::size_t k = 0; k < kicks.size(); ++k) {
     KickTrialsRequest request;
     request.state = setup->state;
     request.kick_index = *setup->situation.kicks.Find(kicks[k]);
     request.trials = run.trials_per_kick;
     request.seed = CalibrationSeed(run.seed, request.kick_index);
-    request.threads = ParseCount("--threads", options.threads, 0, kMaxThreads);
+    request.threads = threads;
     request.record_trace = true;
-    request.progress = TerminalProgress("calibrate " + kicks[k] + ":");
+    request.progress = TerminalProgress("calibrate " + kicks[k] + ":", "trials");
     CalibratedKick kick;
     for (TrialResult& trial : RunKickTrials(*setup->simulator, request)) {
       if (!trial.touched) {

@@ -26,7 +26,7 @@ int RunCheckCommand(const CheckOptions& options, const std::string& models_dir) 
   const std::filesystem::path spec_file = options.spec_file.empty()
                                               ? models / "check_specs" / "default.json"
                                               : std::filesystem::path(options.spec_file);
-  const CheckSuite suite = LoadCheckSuite(spec_file, models);
+  const CheckSuite suite = LoadCheckSuite(spec_file);
   int failed = 0;
   const std::vector<CheckResult> results =
       RunChecks(suite, models, threads, [&](const CheckResult& r) {

@@ -58,10 +58,10 @@ std::string DisplayPath(const std::filesystem::path& file,
   return file.generic_string();
 }
 
-std::function<void(int, int)> TerminalProgress(const std::string& label) {
+std::function<void(int, int)> TerminalProgress(const std::string& label, const std::string& unit) {
   if (!isatty(STDERR_FILENO)) return {};
-  return [label](int done, int total) {
-    std::fprintf(stderr, "\r%s %d / %d trials", label.c_str(), done, total);
+  return [label, unit](int done, int total) {
+    std::fprintf(stderr, "\r%s %d / %d %s", label.c_str(), done, total, unit.c_str());
     if (done == total) std::fprintf(stderr, "\n");
   };
 }

@@ -44,7 +44,7 @@ int RunFidelityCommand(const FidelityOptions& options, const std::string& models
   run.settings.seed = ParseSeed(options.seed);
   run.settings.threads = ParseCount("--threads", options.threads, 0, 1024);
   run.settings.physics_file = options.physics_file;
-  run.settings.progress = TerminalProgress("fidelity: situations");
+  run.settings.progress = TerminalProgress("fidelity:", "situations");
   const FidelitySet set = LoadFidelitySet(options.situations, models, options.kicks_file);
   run.set_name = set.name;
   run.set_file = DisplayPath(set.file, models);

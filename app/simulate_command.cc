@@ -7,6 +7,7 @@
 #include "models/error.h"
 #include "models/model_paths.h"
 #include "validation/atomic_file.h"
+#include "validation/physics_setup.h"
 
 namespace foresight {
 
@@ -51,36 +52,29 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
   SituationOverrides overrides;
   overrides.kicks_file = options.kicks_file;
-  const Situation situation = LoadSituation(options.situation_file, models, overrides);
+  Situation situation = LoadSituation(options.situation_file, models, overrides);
   const std::optional<int> kick = situation.kicks.Find(options.kick);
   if (!kick) {
     throw InputError("--kick: no kick '" + options.kick + "' in " + situation.kicks_file.string() +
                      " (one of: " + KickNames(situation.kicks) + ")");
   }
-  const Robot robot = LoadRobot(situation.kicks.robot, models);
-  if (!robot.FindMotion(options.kick)) {
-    throw InputError("--kick: robot '" + robot.spec.name + "' has no motion for kick '" +
+  const auto setup = LoadPhysicsSetup(std::move(situation), models, options.physics_file);
+  if (!setup->robot.FindMotion(options.kick)) {
+    throw InputError("--kick: robot '" + setup->robot.spec.name + "' has no motion for kick '" +
                      options.kick + "'");
   }
-  const std::filesystem::path physics_file =
-      options.physics_file.empty() ? models / "physics" / (situation.field.name + ".json")
-                                   : std::filesystem::path(options.physics_file);
-  const PhysicsParams params = LoadPhysicsParams(physics_file);
 
   SimulationRun run;
   run.situation_file = options.situation_file;
-  run.situation = &situation;
-  run.robot = &robot;
-  run.physics_file = physics_file;
+  run.situation = &setup->situation;
+  run.robot = &setup->robot;
+  run.physics_file = setup->physics_file;
   run.models_dir = models;
   run.kick = options.kick;
   run.rotation_rad = rotation_deg * kDegToRad;
   run.seed = seed;
-  // Physics plays the world as it is: the state estimate's mean, no belief noise.
-  run.state = DrawnState{situation.state.robot, situation.state.MeanBallInField()};
-  const PhysicsSimulator simulator(
-      MakePhysicsScene(situation.field, params, &robot, situation.obstacles, run.state.p_F_ball),
-      situation.kicks);
+  run.state = setup->state;  // physics plays the world as it is: the mean state
+  const PhysicsSimulator& simulator = *setup->simulator;
   KickTrialsRequest request;
   request.state = run.state;
   request.kick_index = *kick;
@@ -89,7 +83,7 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
   request.seed = seed;
   request.threads = threads;
   request.record_trace = !options.trace_file.empty();
-  request.progress = TerminalProgress("simulate:");
+  request.progress = TerminalProgress("simulate:", "trials");
   run.results = RunKickTrials(simulator, request);
   run.summary = Summarize(run.results);
 

@@ -2,22 +2,16 @@
 // model, the speed histogram with the fitted normal, its QQ plot, the direction rose and the
 // direction histogram; then the rolling deceleration.
 #include <cmath>
-#include <cstdio>
 
 #include "models/geometry.h"
 #include "validation/calibration_report.h"
 #include "validation/charts.h"
 #include "validation/html_report.h"
+#include "validation/report_format.h"
 
 namespace foresight {
 
 namespace {
-
-std::string Fixed(double value, int decimals) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  return buffer;
-}
 
 std::string WithInterval(double value, const Interval& ci, int decimals, double scale = 1.0) {
   return Fixed(value * scale, decimals) + " [" + Fixed(ci.low * scale, decimals) + ", " +

@@ -1,21 +1,15 @@
 #include "validation/calibration_report.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "models/geometry.h"
+#include "validation/report_format.h"
 
 namespace foresight {
 
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-std::string Fixed(double value, int decimals) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  return buffer;
-}
 
 Json IntervalJson(const Interval& interval, double scale = 1.0) {
   return Json::array({interval.low * scale, interval.high * scale});

@@ -1,6 +1,5 @@
 // The kinds of `foresight check` (validation/physics_checks.h says what each expects).
 #include <cmath>
-#include <cstdio>
 
 #include "models/error.h"
 #include "models/field_spec.h"
@@ -13,16 +12,11 @@
 #include "validation/physics_checks.h"
 #include "validation/physics_runs.h"
 #include "validation/physics_setup.h"
+#include "validation/report_format.h"
 
 namespace foresight {
 
 namespace {
-
-std::string Fixed(double value, int decimals) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  return buffer;
-}
 
 CheckResult Result(bool passed, std::string detail) {
   CheckResult r;
@@ -53,10 +47,11 @@ CheckResult FreeRoll(const CheckSpec& spec, const std::filesystem::path& models)
   const double v = spec.number.at("speed_mps");
   const double a = w.params.carpet.rolling_deceleration_mps2;
   const double expected = v * v / (2.0 * a);
-  const Vec2 dir = UnitVector(spec.number.at("heading_deg") * kDegToRad);
+  const double heading = spec.number.at("heading_deg") * kDegToRad;
+  const Vec2 dir = UnitVector(heading);
   const Vec2 start = -0.5 * expected * dir;
   const double r = w.field.ball.radius_m;
-  const TrialResult trial = RunRollTrial(scene, RollingBall(start, r, v, std::atan2(dir.y(), dir.x())), 1, true);
+  const TrialResult trial = RunRollTrial(scene, RollingBall(start, r, v, heading), 1, true);
   const Vec2 travel = trial.outcome.p_F_rest - start;
   const double error_rel = std::abs(travel.norm() - expected) / expected;
   double lateral = 0.0;

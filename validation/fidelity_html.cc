@@ -1,24 +1,17 @@
 // The fidelity report as one HTML page: aggregates per situation class with intervals, the
 // strategies' decision agreement, the coarse-vs-physics utility scatter, the distributions of
 // tau and regret, and the worst ten situations drawn on the field.
-#include <cstdio>
 
 #include "models/geometry.h"
 #include "validation/charts.h"
 #include "validation/field_svg.h"
 #include "validation/fidelity_report.h"
 #include "validation/html_report.h"
+#include "validation/report_format.h"
 
 namespace foresight {
 
 namespace {
-
-std::string Fixed(double value, int decimals) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  const std::string text = buffer;
-  return text.find_first_not_of("-0.") == std::string::npos ? text.substr(text[0] == '-') : text;
-}
 
 std::string MeanText(const MeanWithInterval& m, int decimals) {
   return Fixed(m.mean, decimals) + " [" + Fixed(m.ci.low, decimals) + ", " +

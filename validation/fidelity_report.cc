@@ -1,20 +1,14 @@
 #include "validation/fidelity_report.h"
 
-#include <cstdio>
 
 #include "models/geometry.h"
+#include "validation/report_format.h"
 
 namespace foresight {
 
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-std::string Fixed(double value, int decimals) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  return buffer;
-}
 
 std::string KickName(const Situation& s, int kick) {
   return kick < 0 ? "none" : s.kicks.kicks[kick].name;

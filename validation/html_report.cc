@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "validation/svg_writer.h"
+
 namespace foresight {
 namespace {
 
@@ -94,32 +96,7 @@ std::string FigureHtml(std::string_view svg, std::string_view caption) {
 
 HtmlReport::HtmlReport(std::string title) : title_(std::move(title)) {}
 
-std::string HtmlReport::Escape(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
+std::string HtmlReport::Escape(std::string_view text) { return SvgWriter::Escape(text); }
 
 void HtmlReport::Heading(int level, std::string_view text) {
   const std::string tag = std::string("h") + std::to_string(std::clamp(level, 2, 4));

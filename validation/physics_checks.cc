@@ -6,6 +6,7 @@
 
 #include "models/error.h"
 #include "models/json_reader.h"
+#include "validation/svg_writer.h"
 
 namespace foresight {
 
@@ -74,20 +75,6 @@ CheckSpec ReadCheck(const JsonObject& item, const std::string& where) {
   return spec;
 }
 
-std::string XmlEscape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string Seconds(double s) {
   char buffer[32];
@@ -97,9 +84,7 @@ std::string Seconds(double s) {
 
 }  // namespace
 
-CheckSuite LoadCheckSuite(const std::filesystem::path& file,
-                          const std::filesystem::path& models_dir) {
-  (void)models_dir;
+CheckSuite LoadCheckSuite(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) {
     throw InputError("--spec: " + file.string() + " does not exist");
@@ -149,16 +134,16 @@ std::string JUnitXml(const std::string& suite_name, const std::vector<CheckResul
     time += r.time_s;
   }
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites>\n";
-  out += "  <testsuite name=\"" + XmlEscape(suite_name) + "\" tests=\"" +
+  out += "  <testsuite name=\"" + SvgWriter::Escape(suite_name) + "\" tests=\"" +
          std::to_string(results.size()) + "\" failures=\"" + std::to_string(failures) +
          "\" errors=\"0\" time=\"" + Seconds(time) + "\">\n";
   for (const CheckResult& r : results) {
-    out += "    <testcase classname=\"foresight.check." + XmlEscape(r.kind) + "\" name=\"" +
-           XmlEscape(r.name) + "\" time=\"" + Seconds(r.time_s) + "\">\n";
+    out += "    <testcase classname=\"foresight.check." + SvgWriter::Escape(r.kind) + "\" name=\"" +
+           SvgWriter::Escape(r.name) + "\" time=\"" + Seconds(r.time_s) + "\">\n";
     if (r.passed) {
-      out += "      <system-out>" + XmlEscape(r.detail) + "</system-out>\n";
+      out += "      <system-out>" + SvgWriter::Escape(r.detail) + "</system-out>\n";
     } else {
-      out += "      <failure message=\"" + XmlEscape(r.detail) + "\"/>\n";
+      out += "      <failure message=\"" + SvgWriter::Escape(r.detail) + "\"/>\n";
     }
     out += "    </testcase>\n";
   }

@@ -61,7 +61,7 @@ struct CheckSuite {
 CheckResult RunCheck(const CheckSpec& spec, const std::filesystem::path& models_dir, int threads);
 
 // Reads and validates the whole spec before anything runs; InputError on bad input.
-CheckSuite LoadCheckSuite(const std::filesystem::path& file, const std::filesystem::path& models_dir);
+CheckSuite LoadCheckSuite(const std::filesystem::path& file);
 
 // Runs every check in order (threads: for the physics trials). `on_result` sees each result as
 // soon as it is known.

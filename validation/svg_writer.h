@@ -24,6 +24,7 @@ class SvgWriter {
 
   std::string Finish();  // the whole document
 
+  // &, <, >, " and ' as entities: safe in XML and HTML text and attribute values.
   static std::string Escape(std::string_view text);
   static std::string Num(double value);  // compact, locale-independent, 3 decimals
 

@@ -22,7 +22,7 @@ std::filesystem::path Spec(const std::string& name, const std::string& checks) {
 
 std::string LoadError(const std::filesystem::path& file) {
   try {
-    LoadCheckSuite(file, testing::ModelsDir());
+    LoadCheckSuite(file);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -40,7 +40,7 @@ std::string Roll(const std::string& max_error) {
 
 TEST(PhysicsChecksTest, ShippedSpecLoads) {
   const CheckSuite suite =
-      LoadCheckSuite(testing::ModelsDir() / "check_specs" / "default.json", testing::ModelsDir());
+      LoadCheckSuite(testing::ModelsDir() / "check_specs" / "default.json");
   EXPECT_EQ(suite.name, "default");
   EXPECT_EQ(suite.checks.size(), 14u);
 }
@@ -70,22 +70,21 @@ TEST(PhysicsChecksTest, BadSpecsNameFileAndField) {
 
 TEST(PhysicsChecksTest, FreeRollPassesWithinItsToleranceAndFailsWithoutOne) {
   const CheckSuite suite =
-      LoadCheckSuite(Spec("roll.json", Roll("0.02")), testing::ModelsDir());
+      LoadCheckSuite(Spec("roll.json", Roll("0.02")));
   const std::vector<CheckResult> pass = RunChecks(suite, testing::ModelsDir(), 1, {});
   ASSERT_EQ(pass.size(), 1u);
   EXPECT_TRUE(pass[0].passed) << pass[0].detail;
   EXPECT_THAT(pass[0].detail, HasSubstr("v^2/2a"));
   // No physics engine rolls exactly v^2/2a: a zero tolerance must fail.
   const CheckSuite strict =
-      LoadCheckSuite(Spec("strict.json", Roll("0")), testing::ModelsDir());
+      LoadCheckSuite(Spec("strict.json", Roll("0")));
   EXPECT_FALSE(RunChecks(strict, testing::ModelsDir(), 1, {})[0].passed);
 }
 
 TEST(PhysicsChecksTest, FastBallDoesNotTunnelThroughThePost) {
   const CheckSuite suite = LoadCheckSuite(
       Spec("post.json",
-           R"({"name": "post", "kind": "no_tunnelling", "field": "spl", "target": "post", "speed_mps": 10, "max_penetration_m": 0.01})"),
-      testing::ModelsDir());
+           R"({"name": "post", "kind": "no_tunnelling", "field": "spl", "target": "post", "speed_mps": 10, "max_penetration_m": 0.01})"));
   const CheckResult r = RunChecks(suite, testing::ModelsDir(), 1, {})[0];
   EXPECT_TRUE(r.passed) << r.detail;
   EXPECT_THAT(r.detail, HasSubstr("first contact post"));
