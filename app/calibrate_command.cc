@@ -162,6 +162,10 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
       options.kicks_file.empty() ? models / "kicks" / (options.robot + ".json")
                                  : std::filesystem::path(options.kicks_file);
   run.base = LoadKickModel(base_file);
+  if (run.base.robot != options.robot) {
+    throw InputError(base_file.string() + ": robot: the kick model is for '" + run.base.robot +
+                     "', not --robot '" + options.robot + "'");
+  }
   run.base_kicks_file = DisplayPath(base_file, models);
   run.out_file = options.out_file;
   if (options.from_csv.empty()) {
