@@ -7,7 +7,7 @@ SeamActionEvaluator::SeamActionEvaluator(const Situation& situation,
                                          const PositionValue& value, int samples,
                                          std::uint64_t seed)
     : ActionEvaluator(situation), simulator_(simulator), value_(value) {
-  DrawSamples(situation.state, seed, samples, samples_);
+  DrawSamples(state_, seed, samples, samples_);
 }
 
 ActionEvaluation SeamActionEvaluator::Evaluate(int kick_index, double rotation_rad) {

@@ -19,9 +19,14 @@
 
 namespace foresight {
 
+// The situation gives the static parts (field, kicks, evaluation, obstacles); the state estimate
+// is the evaluator's own, so one planner can decide for any pose (CoarsePlanner::Decide).
 class ActionEvaluator {
  public:
-  explicit ActionEvaluator(const Situation& situation) : situation_(situation) {}
+  explicit ActionEvaluator(const Situation& situation)
+      : ActionEvaluator(situation, situation.state) {}
+  ActionEvaluator(const Situation& situation, const StateEstimate& state)
+      : situation_(situation), state_(state) {}
   virtual ~ActionEvaluator() = default;
 
   // kick_index < 0: the `none` action (the ball stays where it is).
@@ -36,10 +41,12 @@ class ActionEvaluator {
 
   int kick_count() const { return static_cast<int>(situation_.kicks.kicks.size()); }
   const Situation& situation() const { return situation_; }
+  const StateEstimate& state() const { return state_; }
   long long evaluations() const { return evaluations_; }
 
  protected:
   const Situation& situation_;
+  StateEstimate state_;
   long long evaluations_ = 0;
 };
 

@@ -6,12 +6,13 @@
 
 namespace foresight {
 
-CoarseActionEvaluator::CoarseActionEvaluator(const Situation& situation, const CoarseWorld& world,
+CoarseActionEvaluator::CoarseActionEvaluator(const Situation& situation,
+                                             const StateEstimate& state, const CoarseWorld& world,
                                              const PositionValue& value, int samples,
                                              std::uint64_t seed)
-    : ActionEvaluator(situation), world_(world), value_(value), sample_count_(samples) {
+    : ActionEvaluator(situation, state), world_(world), value_(value), sample_count_(samples) {
   std::vector<DrawnSample> drawn;
-  DrawSamples(situation.state, seed, samples, drawn);
+  DrawSamples(state, seed, samples, drawn);
   p_F_ball_.reserve(drawn.size());
   for (const DrawnSample& d : drawn) p_F_ball_.push_back(d.state.p_F_ball);
   launches_.resize(static_cast<std::size_t>(kick_count()) * drawn.size());

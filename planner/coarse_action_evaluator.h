@@ -17,8 +17,10 @@ namespace foresight {
 
 class CoarseActionEvaluator final : public ActionEvaluator {
  public:
-  CoarseActionEvaluator(const Situation& situation, const CoarseWorld& world,
-                        const PositionValue& value, int samples, std::uint64_t seed);
+  // Samples are drawn from `state` (the situation's static parts apply).
+  CoarseActionEvaluator(const Situation& situation, const StateEstimate& state,
+                        const CoarseWorld& world, const PositionValue& value, int samples,
+                        std::uint64_t seed);
 
   ActionEvaluation Evaluate(int kick_index, double rotation_rad) override {
     return Run(kick_index, rotation_rad, false);

@@ -12,7 +12,12 @@ CoarsePlanner::CoarsePlanner(const Situation& situation)
       value_(situation.evaluation.potential, situation.field) {}
 
 Decision CoarsePlanner::Decide(Strategy strategy, int samples, std::uint64_t seed) const {
-  CoarseActionEvaluator evaluator = MakeEvaluator(samples, seed);
+  return Decide(situation_.state, strategy, samples, seed);
+}
+
+Decision CoarsePlanner::Decide(const StateEstimate& state, Strategy strategy, int samples,
+                               std::uint64_t seed) const {
+  CoarseActionEvaluator evaluator = MakeEvaluator(state, samples, seed);
   return foresight::Decide(evaluator, strategy);
 }
 

@@ -1,5 +1,7 @@
-// Everything the coarse decision needs for one situation, built once: the scene, the coarse
-// simulator and the position value. Decide() is then cheap and can be called with any seed.
+// Everything the coarse decision needs for one scene, built once: the static world, the coarse
+// simulator and the position value. Decide() is then cheap and can be called with any seed and,
+// through the StateEstimate overloads, for any pose of the robot and ball on that scene (the
+// experiments decide for thousands of poses with one planner).
 #pragma once
 
 #include <cstdint>
@@ -21,15 +23,24 @@ class CoarsePlanner {
   // The fast evaluator of the decision's hot path. Evaluators refer to the planner, so they
   // cannot be made from a temporary one.
   CoarseActionEvaluator MakeEvaluator(int samples, std::uint64_t seed) const&& = delete;
+  CoarseActionEvaluator MakeEvaluator(const StateEstimate&, int, std::uint64_t) const&& = delete;
   SeamActionEvaluator MakeSeamEvaluator(int samples, std::uint64_t seed) const&& = delete;
   CoarseActionEvaluator MakeEvaluator(int samples, std::uint64_t seed) const& {
-    return CoarseActionEvaluator(situation_, simulator_.world(), value_, samples, seed);
+    return MakeEvaluator(situation_.state, samples, seed);
+  }
+  CoarseActionEvaluator MakeEvaluator(const StateEstimate& state, int samples,
+                                      std::uint64_t seed) const& {
+    return CoarseActionEvaluator(situation_, state, simulator_.world(), value_, samples, seed);
   }
   // The same through the outcome-simulator seam (for cross-checks and reports).
   SeamActionEvaluator MakeSeamEvaluator(int samples, std::uint64_t seed) const& {
     return SeamActionEvaluator(situation_, simulator_, value_, samples, seed);
   }
   Decision Decide(Strategy strategy, int samples, std::uint64_t seed) const;
+  // The decision for another state on the same scene (state.Validate-like checks are the
+  // caller's: the pose must be on the carpet).
+  Decision Decide(const StateEstimate& state, Strategy strategy, int samples,
+                  std::uint64_t seed) const;
 
   const Situation& situation() const { return situation_; }
   const CoarseSimulator& simulator() const { return simulator_; }

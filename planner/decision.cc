@@ -26,8 +26,8 @@ struct Context {
 };
 
 // The sign of the turn that brings the robot's heading towards the opponent goal's centre.
-double TurnTowardsGoal(const Situation& situation) {
-  return FaceGoalRotation(situation) >= 0.0 ? 1.0 : -1.0;
+double TurnTowardsGoal(const ActionEvaluator& evaluator) {
+  return FaceGoalRotation(evaluator.situation().field, evaluator.state()) >= 0.0 ? 1.0 : -1.0;
 }
 
 // The kick whose mean direction is closest to straight ahead.
@@ -125,7 +125,7 @@ void OptimiseEveryKick(Context& ctx, Decision& decision, int only_kick) {
 // the goal. Kicks without one are marked.
 void FindLeastTurns(Context& ctx, Decision& decision,
                     const std::function<bool(const ActionEvaluation&)>& wanted) {
-  const double towards_goal = TurnTowardsGoal(ctx.evaluator.situation());
+  const double towards_goal = TurnTowardsGoal(ctx.evaluator);
   for (KickOption& option : decision.kicks) {
     std::optional<RotationChoice> found = LeastAcceptableRotation(
         ctx.ObjectiveFor(option.kick_index), wanted, towards_goal, ctx.search);
@@ -212,7 +212,8 @@ Decision Decide(ActionEvaluator& evaluator, Strategy strategy) {
       const NaothChoice choice =
           ApplyNaothRule(situation.evaluation.naoth_rule, decision.kicks, ctx.none);
       decision.kick_index = choice.kick_index;
-      decision.rotation_rad = choice.kick_index < 0 ? FaceGoalRotation(situation) : 0.0;
+      decision.rotation_rad =
+          choice.kick_index < 0 ? FaceGoalRotation(situation.field, evaluator.state()) : 0.0;
       break;
     }
   }

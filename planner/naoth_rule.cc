@@ -43,9 +43,9 @@ NaothChoice ApplyNaothRule(const NaothRuleParams& params, const std::vector<Kick
   return choice;
 }
 
-double FaceGoalRotation(const Situation& situation) {
-  const Vec2 to_goal = Vec2(situation.field.HalfLength(), 0.0) - situation.state.MeanBallInField();
-  return WrapAngle(std::atan2(to_goal.y(), to_goal.x()) - situation.state.robot.theta_rad);
+double FaceGoalRotation(const FieldSpec& field, const StateEstimate& state) {
+  const Vec2 to_goal = Vec2(field.HalfLength(), 0.0) - state.MeanBallInField();
+  return WrapAngle(std::atan2(to_goal.y(), to_goal.x()) - state.robot.theta_rad);
 }
 
 }  // namespace foresight

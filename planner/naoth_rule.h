@@ -25,6 +25,9 @@ NaothChoice ApplyNaothRule(const NaothRuleParams& params, const std::vector<Kick
                            const ActionEvaluation& none);
 
 // The turn that makes the robot face the opponent goal's centre from the ball, in (-pi, pi].
-double FaceGoalRotation(const Situation& situation);
+double FaceGoalRotation(const FieldSpec& field, const StateEstimate& state);
+inline double FaceGoalRotation(const Situation& situation) {
+  return FaceGoalRotation(situation.field, situation.state);
+}
 
 }  // namespace foresight

@@ -129,6 +129,24 @@ TEST(DecisionTest, SameSeedSameDecision) {
   }
 }
 
+// One planner deciding for another pose gives the bits of a planner built for that pose: the
+// experiments rely on it to decide for thousands of poses without rebuilding the planner.
+TEST(DecisionTest, SharedPlannerDecidesForAnyStateLikeAFreshOne) {
+  const Situation base = testing::MakeSituation(testing::Uncertain({.x_m = 0.0}));
+  const CoarsePlanner shared(base);
+  RandomStream rng(StreamKey(5, 0, 0));
+  for (int i = 0; i < 6; ++i) {
+    const Situation other = testing::MakeSituation(testing::RandomPose(rng, 4.2, 2.8));
+    for (Strategy strategy : {Strategy::kFast, Strategy::kOptimalAll, Strategy::kNaoth}) {
+      const Decision a = shared.Decide(other.state, strategy, 20, 9);
+      const Decision b = CoarsePlanner(other).Decide(strategy, 20, 9);
+      EXPECT_EQ(a.kick_index, b.kick_index);
+      EXPECT_EQ(a.rotation_rad, b.rotation_rad);  // bitwise
+      EXPECT_EQ(a.evaluations, b.evaluations);
+    }
+  }
+}
+
 TEST(DecisionTest, NaothRuleKicksAtOnceWithoutTurning) {
   const Situation s = testing::MakeSituation(testing::Uncertain({.x_m = 2.8}));
   const Decision d = DecideOn(s, Strategy::kNaoth);
