@@ -6,6 +6,7 @@
 #include "app/calibrate_command.h"
 #include "app/check_command.h"
 #include "app/decide_command.h"
+#include "app/experiment_command.h"
 #include "app/fidelity_command.h"
 #include "app/simulate_command.h"
 #include "models/error.h"
@@ -38,6 +39,8 @@ int main(int argc, char** argv) {
   foresight::AddCheckCommand(app, check);
   foresight::FidelityOptions fidelity;
   foresight::AddFidelityCommand(app, fidelity);
+  foresight::ExperimentOptions experiment;
+  foresight::AddExperimentCommand(app, experiment);
 
   try {
     app.parse(argc, argv);
@@ -56,6 +59,9 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("simulate")) return foresight::RunSimulate(simulate, models_dir);
     if (app.got_subcommand("calibrate")) return foresight::RunCalibrate(calibrate, models_dir);
     if (app.got_subcommand("check")) return foresight::RunCheckCommand(check, models_dir);
+    if (app.got_subcommand("experiment")) {
+      return foresight::RunExperimentCommand(app, experiment, models_dir);
+    }
     if (app.got_subcommand("fidelity")) {
       return foresight::RunFidelityCommand(fidelity, models_dir);
     }

@@ -1,0 +1,179 @@
+#include "app/experiment_command.h"
+
+#include <chrono>
+#include <iostream>
+
+#include "app/cli_values.h"
+#include "app/report_text.h"
+#include "models/error.h"
+#include "models/model_paths.h"
+#include "validation/atomic_file.h"
+#include "validation/physics_setup.h"
+#include "validation/stability_report.h"
+#include "validation/strategies_report.h"
+
+namespace foresight {
+
+namespace {
+
+using Files = std::vector<std::pair<std::filesystem::path, std::string>>;
+
+std::filesystem::path ModelsFolder(const std::string& models_dir) {
+  return models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+}
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Every output is computed before the first is written; each file is replaced atomically.
+void WriteReport(const std::string& out_dir, const Files& files, const std::string& text,
+                 const std::string& main_file) {
+  CreateReportDir(out_dir, "--out");
+  for (const auto& [file, content] : files) WriteFileAtomically(file, content);
+  std::cout << text << "figures and data: " << (std::filesystem::path(out_dir) / main_file).string()
+            << " and the other files in " << out_dir << "\n"
+            << std::flush;
+  if (!std::cout) throw InputError("cannot write to standard output");
+}
+
+void AddStability(CLI::App& experiment, StabilityOptions& o) {
+  CLI::App* cmd = experiment.add_subcommand(
+      "stability", "How stable the decision is against the number of samples (paper, Fig. 4)");
+  cmd->add_option("--params", o.params,
+                  "Experiment file, or a name in MODELS/experiments/ (default: stability)");
+  cmd->add_flag("--quick", o.quick, "The small grid of MODELS/experiments/stability_quick.json");
+  cmd->add_option("--kicks", o.kicks_file, "Kick model replacing the scene's");
+  cmd->add_option("--strategy", o.strategy,
+                  "Decision strategy (default: the params file's): fast, optimal_value, "
+                  "optimal_all, optimal_one, naoth");
+  cmd->add_option("--repeats", o.repeats, "Decisions per pose and sample count");
+  cmd->add_option("--samples", o.samples, "Sample counts, e.g. 1-25,30-110/10");
+  cmd->add_option("--seed", o.seed, "Random seed")->capture_default_str();
+  cmd->add_option("--threads", o.threads, "Worker threads (0: all cores)")->capture_default_str();
+  cmd->add_option("--out", o.out_dir, "Folder for the results")->required();
+}
+
+void AddStrategies(CLI::App& experiment, StrategiesOptions& o) {
+  CLI::App* cmd = experiment.add_subcommand(
+      "strategies", "The four strategies from random starts until goal or out (Figs. 3, 5)");
+  cmd->add_option("--params", o.params, "Experiment file, or a name in MODELS/experiments/")
+      ->capture_default_str();
+  cmd->add_option("--kicks", o.kicks_file, "Kick model replacing the scene's");
+  cmd->add_option("--starts", o.starts, "Random start positions (default: the params file's)");
+  cmd->add_flag("--physics", o.physics, "Execute every kick in the Bullet scene");
+  cmd->add_option("--physics-file", o.physics_file,
+                  "Physics file (default: MODELS/physics/<field>.json)");
+  cmd->add_option("--seed", o.seed, "Random seed")->capture_default_str();
+  cmd->add_option("--threads", o.threads, "Worker threads (0: all cores)")->capture_default_str();
+  cmd->add_option("--out", o.out_dir, "Folder for the results")->required();
+}
+
+int RunStability(const StabilityOptions& o, const std::filesystem::path& models) {
+  const auto start = std::chrono::steady_clock::now();
+  if (o.quick && !o.params.empty()) throw InputError("--quick and --params exclude each other");
+  const std::uint64_t seed = ParseSeed(o.seed);
+  const int threads = ParseCount("--threads", o.threads, 0, 1024);
+  const std::string name = o.params.empty() ? (o.quick ? "stability_quick" : "stability") : o.params;
+  StabilityParams params = LoadStabilityParams(name, models, o.kicks_file);
+  if (!o.strategy.empty()) {
+    const std::optional<Strategy> s = ParseStrategy(o.strategy);
+    if (!s) throw InputError("--strategy: unknown strategy '" + o.strategy + "'");
+    params.strategy = *s;
+  }
+  if (!o.repeats.empty()) params.repeats = ParseCount("--repeats", o.repeats, 2, 100000);
+  if (!o.samples.empty()) {
+    params.sample_counts = ParseSampleCounts("--samples", o.samples);
+    if (!std::ranges::binary_search(params.sample_counts, params.map_samples)) {
+      params.map_samples = params.sample_counts.back();  // the map shows the largest N then
+    }
+  }
+  WithFile("--samples/--repeats", [&] { params.Validate(); });
+
+  StabilityRun run;
+  run.version = FORESIGHT_VERSION;
+  run.params_file = DisplayPath(params.file, models);
+  run.situation_file = params.situation.name;
+  run.kicks_file = DisplayPath(params.situation.kicks_file, models);
+  run.params = &params;
+  run.seed = seed;
+  run.result = RunStability(params, seed, threads, TerminalProgress("stability:", "poses"));
+  run.run_time_s = SecondsSince(start);
+
+  const std::filesystem::path dir(o.out_dir);
+  const Files files = {{dir / "stability.json", StabilityJson(run).dump(2) + "\n"},
+                       {dir / "stability.csv", StabilityCountsCsv(run)},
+                       {dir / "stability_positions.csv", StabilityPositionsCsv(run)},
+                       {dir / "stability.svg", StabilityPlotSvg(run)},
+                       {dir / "stability_map.svg", StabilityMapSvg(run)}};
+  WriteReport(o.out_dir, files, StabilityText(run), "stability.svg");
+  return 0;
+}
+
+int RunStrategiesExperiment(const StrategiesOptions& o, const std::filesystem::path& models) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::uint64_t seed = ParseSeed(o.seed);
+  const int threads = ParseCount("--threads", o.threads, 0, 1024);
+  if (!o.physics && !o.physics_file.empty()) throw InputError("--physics-file needs --physics");
+  StrategiesParams params = LoadStrategiesParams(o.params, models, o.kicks_file);
+  if (!o.starts.empty()) {
+    params.starts = ParseCount("--starts", o.starts, 1, 10000000);
+    params.example_start = std::min(params.example_start, params.starts - 1);
+  }
+
+  StrategiesRun run;
+  run.version = FORESIGHT_VERSION;
+  run.params_file = DisplayPath(params.file, models);
+  run.situation_file = params.situation.name;
+  run.kicks_file = DisplayPath(params.situation.kicks_file, models);
+  run.params = &params;
+  run.seed = seed;
+  const auto progress = TerminalProgress("strategies:", "runs");
+  if (o.physics) {
+    auto setup = LoadPhysicsSetup(params.situation, models, o.physics_file);
+    for (int k = 0; k < static_cast<int>(params.situation.kicks.kicks.size()); ++k) {
+      if (!setup->simulator->HasMotion(k)) {
+        throw InputError(run.kicks_file + ": robot '" + setup->robot.spec.name +
+                         "' has no motion for kick '" + params.situation.kicks.kicks[k].name + "'");
+      }
+    }
+    run.executor = "physics";
+    run.physics_file = DisplayPath(setup->physics_file, models);
+    run.result = RunStrategies(params, *setup->simulator, seed, threads, progress);
+  } else {
+    const CoarseSimulator coarse(MakeScene(params.situation));
+    run.executor = "coarse";
+    run.result = RunStrategies(params, coarse, seed, threads, progress);
+  }
+  run.summaries = SummariseStrategies(run.result);
+  run.run_time_s = SecondsSince(start);
+
+  const std::filesystem::path dir(o.out_dir);
+  const Files files = {{dir / "strategies.json", StrategiesJson(run).dump(2) + "\n"},
+                       {dir / "strategies_runs.csv", StrategiesRunsCsv(run)},
+                       {dir / "strategies_turns.svg", StrategiesTurnsSvg(run)},
+                       {dir / "strategies_kicks.svg", StrategiesKicksSvg(run)},
+                       {dir / "strategies_paths.svg", StrategiesPathsSvg(run)}};
+  WriteReport(o.out_dir, files, StrategiesText(run), "strategies_turns.svg");
+  return 0;
+}
+
+}  // namespace
+
+void AddExperimentCommand(CLI::App& app, ExperimentOptions& options) {
+  CLI::App* experiment =
+      app.add_subcommand("experiment", "The paper's experiments: stability, strategies");
+  experiment->require_subcommand(1);
+  AddStability(*experiment, options.stability);
+  AddStrategies(*experiment, options.strategies);
+}
+
+int RunExperimentCommand(const CLI::App& app, const ExperimentOptions& options,
+                         const std::string& models_dir) {
+  const CLI::App* experiment = app.get_subcommand("experiment");
+  const std::filesystem::path models = ModelsFolder(models_dir);
+  if (experiment->got_subcommand("stability")) return RunStability(options.stability, models);
+  return RunStrategiesExperiment(options.strategies, models);
+}
+
+}  // namespace foresight

@@ -1,0 +1,44 @@
+// `foresight experiment stability|strategies`: the paper's two experiments (Mellmann &
+// Schlotter, sec. V), each writing JSON, CSV and SVG figures to a folder.
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace foresight {
+
+struct StabilityOptions {
+  std::string params;  // empty: "stability" (or "stability_quick" with --quick)
+  bool quick = false;
+  std::string kicks_file;
+  std::string strategy;  // empty: the params file's
+  std::string repeats;   // empty: the params file's
+  std::string samples;   // empty: the params file's; "1-25,30-110/10" style
+  std::string seed = "1";
+  std::string threads = "0";
+  std::string out_dir;
+};
+
+struct StrategiesOptions {
+  std::string params = "strategies";
+  std::string kicks_file;
+  std::string starts;  // empty: the params file's
+  bool physics = false;
+  std::string physics_file;
+  std::string seed = "1";
+  std::string threads = "0";
+  std::string out_dir;
+};
+
+struct ExperimentOptions {
+  StabilityOptions stability;
+  StrategiesOptions strategies;
+};
+
+void AddExperimentCommand(CLI::App& app, ExperimentOptions& options);
+// Runs the experiment subcommand that was given; 0 on success.
+int RunExperimentCommand(const CLI::App& app, const ExperimentOptions& options,
+                         const std::string& models_dir);
+
+}  // namespace foresight

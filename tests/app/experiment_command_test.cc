@@ -1,0 +1,133 @@
+// `foresight experiment stability|strategies` against the real binary: tiny experiments write
+// JSON, CSV and SVG; the same seed gives the same bytes with one thread or two; bad input is
+// one line, exit code 2 and no folder.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tests/app/run_foresight.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using foresight::testing::CountOf;
+using foresight::testing::ReadFile;
+using foresight::testing::RunResult;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+class ExperimentCommandTest : public foresight::testing::ForesightRun {
+ protected:
+  fs::path TinyStability() const {
+    return Write("tiny_stability.json", R"({"situation": "experiment_nao", "strategy": "naoth",
+        "grid_step_m": 2.0, "heading_step_deg": 120, "repeats": 10,
+        "sample_counts": [1, 5, 30], "map_samples": 30, "rotation_bin_deg": 10})");
+  }
+  RunResult Experiment(std::vector<std::string> args) const {
+    args.insert(args.begin(), "experiment");
+    return Run(args);
+  }
+  static std::string WithoutRunTime(const std::string& json_text) {
+    nlohmann::json j = nlohmann::json::parse(json_text);
+    EXPECT_TRUE(j.contains("run_time_s"));
+    j.erase("run_time_s");
+    return j.dump();
+  }
+  void ExpectBadInput(const std::vector<std::string>& args, const std::string& message) const {
+    const RunResult r = Experiment(args);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_THAT(r.err, StartsWith("foresight: error: "));
+    EXPECT_THAT(r.err, HasSubstr(message));
+    EXPECT_EQ(CountOf(r.err, "\n"), 1) << r.err;
+    EXPECT_FALSE(fs::exists(work() / "out")) << "a failed run must not leave a folder";
+  }
+};
+
+TEST_F(ExperimentCommandTest, StabilityWritesJsonCsvAndFigures) {
+  const RunResult r = Experiment(
+      {"stability", "--params", TinyStability().string(), "--out", "out", "--threads", "2"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("out/stability.svg"));
+  const fs::path dir = work() / "out";
+  const nlohmann::json j = nlohmann::json::parse(ReadFile(dir / "stability.json"));
+  EXPECT_EQ(j["experiment"], "stability");
+  EXPECT_EQ(j["grid"]["positions"], 4 * 3);
+  EXPECT_EQ(j["grid"]["poses"], 4 * 3 * 3);
+  EXPECT_EQ(j["counts"].size(), 3u);
+  EXPECT_EQ(j["decisions"], 36 * 3 * 10);
+  EXPECT_EQ(j["params"]["strategy"], "naoth");
+  EXPECT_EQ(CountOf(ReadFile(dir / "stability.csv"), "\n"), 1 + 3);
+  EXPECT_EQ(CountOf(ReadFile(dir / "stability_positions.csv"), "\n"), 1 + 12);
+  EXPECT_THAT(ReadFile(dir / "stability.svg"), HasSubstr("<svg"));
+  EXPECT_THAT(ReadFile(dir / "stability_map.svg"), HasSubstr("<svg"));
+}
+
+TEST_F(ExperimentCommandTest, StabilityFlagsOverrideTheFile) {
+  const RunResult r = Experiment({"stability", "--params", TinyStability().string(), "--samples",
+                                  "2-4", "--repeats", "3", "--strategy", "fast", "--out", "out"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(ReadFile(work() / "out" / "stability.json"));
+  EXPECT_EQ(j["params"]["samples_per_decision"], nlohmann::json::array({2, 3, 4}));
+  EXPECT_EQ(j["params"]["map_samples"], 4);
+  EXPECT_EQ(j["params"]["repeats"], 3);
+  EXPECT_EQ(j["params"]["strategy"], "fast");
+}
+
+TEST_F(ExperimentCommandTest, StabilitySameBytesWithOneThreadOrTwo) {
+  const std::string params = TinyStability().string();
+  ASSERT_EQ(Experiment({"stability", "--params", params, "--out", "a", "--threads", "1"}).exit_code, 0);
+  ASSERT_EQ(Experiment({"stability", "--params", params, "--out", "b", "--threads", "2"}).exit_code, 0);
+  for (const char* file : {"stability.csv", "stability_positions.csv", "stability.svg",
+                           "stability_map.svg"}) {
+    EXPECT_EQ(ReadFile(work() / "a" / file), ReadFile(work() / "b" / file)) << file;
+  }
+  EXPECT_EQ(WithoutRunTime(ReadFile(work() / "a" / "stability.json")),
+            WithoutRunTime(ReadFile(work() / "b" / "stability.json")));
+}
+
+TEST_F(ExperimentCommandTest, StrategiesWriteJsonCsvAndFigures) {
+  const RunResult r = Experiment({"strategies", "--starts", "6", "--out", "out"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const fs::path dir = work() / "out";
+  const nlohmann::json j = nlohmann::json::parse(ReadFile(dir / "strategies.json"));
+  EXPECT_EQ(j["params"]["starts"], 6);
+  EXPECT_EQ(j["params"]["executor"], "coarse");
+  ASSERT_EQ(j["strategies"].size(), 4u);
+  EXPECT_EQ(j["strategies"][0]["strategy"], "fast");
+  EXPECT_EQ(j["strategies"][0]["runs"], 6);
+  EXPECT_TRUE(j["strategies"][1].contains("minus_fast"));
+  EXPECT_EQ(CountOf(ReadFile(dir / "strategies_runs.csv"), "\n"), 1 + 4 * 6);
+  for (const char* svg : {"strategies_turns.svg", "strategies_kicks.svg", "strategies_paths.svg"}) {
+    EXPECT_THAT(ReadFile(dir / svg), HasSubstr("<svg")) << svg;
+  }
+}
+
+TEST_F(ExperimentCommandTest, StrategiesSameBytesWithOneThreadOrTwo) {
+  ASSERT_EQ(Experiment({"strategies", "--starts", "5", "--out", "a", "--threads", "1"}).exit_code, 0);
+  ASSERT_EQ(Experiment({"strategies", "--starts", "5", "--out", "b", "--threads", "2"}).exit_code, 0);
+  for (const char* file : {"strategies_runs.csv", "strategies_turns.svg", "strategies_kicks.svg",
+                           "strategies_paths.svg"}) {
+    EXPECT_EQ(ReadFile(work() / "a" / file), ReadFile(work() / "b" / file)) << file;
+  }
+  EXPECT_EQ(WithoutRunTime(ReadFile(work() / "a" / "strategies.json")),
+            WithoutRunTime(ReadFile(work() / "b" / "strategies.json")));
+}
+
+TEST_F(ExperimentCommandTest, BadInputIsOneLineExitTwoAndNoFolder) {
+  ExpectBadInput({"stability", "--quick", "--params", "stability", "--out", "out"},
+                 "--quick and --params exclude each other");
+  ExpectBadInput({"stability", "--quick", "--samples", "5-1", "--out", "out"}, "--samples: '5-1'");
+  ExpectBadInput({"stability", "--quick", "--strategy", "greedy", "--out", "out"},
+                 "--strategy: unknown strategy 'greedy'");
+  ExpectBadInput({"stability", "--quick", "--repeats", "1", "--out", "out"}, "--repeats");
+  ExpectBadInput({"strategies", "--starts", "0", "--out", "out"}, "--starts");
+  ExpectBadInput({"strategies", "--physics-file", "x.json", "--out", "out"},
+                 "--physics-file needs --physics");
+  ExpectBadInput({"strategies", "--params", "nope", "--out", "out"}, "nope.json does not exist");
+  ExpectBadInput({"strategies", "--kicks", "missing.json", "--out", "out"}, "missing.json");
+}
+
+}  // namespace

@@ -1,0 +1,31 @@
+// The strategies experiment (Mellmann & Schlotter, sec. V-B, Figs. 3 and 5): every strategy
+// plays the ball from the same random start positions with the same seeds until goal or out
+// (validation/strategy_run.h), on the coarse model or, with a physics executor, in Bullet.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "validation/strategy_run.h"
+
+namespace foresight {
+
+struct StrategyRuns {
+  Strategy strategy = Strategy::kFast;
+  std::vector<StrategyRun> runs;  // one per start, in start order
+  StrategyRun example;            // the run from params.example_start, with its steps
+};
+
+struct StrategiesResult {
+  std::vector<StartPosition> starts;
+  std::vector<StrategyRuns> strategies;  // in the params' order
+};
+
+// `executor` carries out the kicks (the coarse simulator of the situation's scene, or physics).
+// Runs (start, strategy) pairs in parallel; progress(done, total) counts runs.
+StrategiesResult RunStrategies(const StrategiesParams& params, const OutcomeSimulator& executor,
+                               std::uint64_t seed, int threads,
+                               const std::function<void(int, int)>& progress = {});
+
+}  // namespace foresight
