@@ -138,7 +138,10 @@ void DrawColourBar(FieldCanvas& canvas, const FieldSpec& field, const FieldCellM
 
 // The ball's positions joined by a line that breaks at non-finite positions; a circle at each,
 // the start hollow.
-void DrawBallPath(FieldCanvas& canvas, const BallPath& path, int index) {
+// Paths drawn earlier are wider, so a later path that retraces one (two strategies often take
+// the same kicks) leaves the earlier colour visible along its edges.
+void DrawBallPath(FieldCanvas& canvas, const BallPath& path, int index, int count) {
+  const double width_px = 2.2 + 2.0 * (count - 1 - index);
   SvgWriter& svg = canvas.svg();
   const std::string colour(PaletteColour(index));
   svg.OpenGroup("class=\"ball-path\"");
@@ -155,8 +158,10 @@ void DrawBallPath(FieldCanvas& canvas, const BallPath& path, int index) {
     pen_down = true;
   }
   if (!d.empty()) {  // a pale casing keeps dark or green lines visible on the green carpet
-    svg.Path(d, "fill:none;stroke:#ffffff;stroke-opacity:0.6;stroke-width:5;stroke-linejoin:round");
-    svg.Path(d, "fill:none;stroke:" + colour + ";stroke-width:2.2;stroke-linejoin:round");
+    svg.Path(d, "fill:none;stroke:#ffffff;stroke-opacity:0.6;stroke-width:" +
+                    N::Num(width_px + 2.8) + ";stroke-linejoin:round");
+    svg.Path(d, "fill:none;stroke:" + colour + ";stroke-width:" + N::Num(width_px) +
+                    ";stroke-linejoin:round");
   }
   bool first = true;
   for (const Vec2& b : path.balls_F) {
@@ -251,7 +256,7 @@ std::string BallPathsSvg(const FieldSpec& field, const BallPathsMap& map) {
   DrawTitle(canvas, map.title);
   canvas.DrawRobot(map.robot_start, kRobotRadiusM, kRobotColour);
   for (std::size_t i = 0; i < map.paths.size(); ++i) {
-    DrawBallPath(canvas, map.paths[i], static_cast<int>(i));
+    DrawBallPath(canvas, map.paths[i], static_cast<int>(i), static_cast<int>(map.paths.size()));
   }
   DrawPathLegend(canvas, map);
   return canvas.svg().Finish();

@@ -36,7 +36,9 @@ Json SummaryJson(const StrategySummary& s) {
   Json j = {{"strategy", StrategyName(s.strategy)},
             {"runs", s.runs},
             {"ends", {{"goal", s.goals}, {"own_goal", s.own_goals}, {"out", s.outs},
-                      {"step_limit", s.step_limits}}},
+                      {"step_limit", s.step_limits},
+                      {"step_limit_stopped_at_contact", s.step_limits_at_contact}}},
+            {"ended_runs", s.ended},
             {"goal_share", static_cast<double>(s.goals) / s.runs},
             {"goal_share_95", IntervalJson(s.goal_share_95)},
             {"kicks", {{"mean", s.mean_kicks}, {"mean_95", IntervalJson(s.mean_kicks_95)},
@@ -51,12 +53,31 @@ Json SummaryJson(const StrategySummary& s) {
               {"above_100_deg", s.turns_above_100}, {"bin_deg", kRotationBinDeg},
               {"histogram_nonzero", s.turn_bins}}}};
   if (s.paired_with_fast) {
-    j["minus_fast"] = {{"kicks_mean", s.kicks_minus_fast},
+    j["minus_fast"] = {{"paired_runs", s.paired_runs},
+                       {"kicks_mean", s.kicks_minus_fast},
                        {"kicks_mean_95", IntervalJson(s.kicks_minus_fast_95)},
                        {"time_mean_s", s.time_minus_fast_s},
                        {"time_mean_95", IntervalJson(s.time_minus_fast_95)}};
   }
   return j;
+}
+
+// The example run (Fig. 3) step by step, so a path can be replayed and inspected.
+Json ExampleJson(const StrategyRuns& runs) {
+  Json steps = Json::array();
+  for (const StrategyStep& step : runs.example.steps_taken) {
+    steps.push_back({{"robot", {step.robot_at_ball.p_F.x(), step.robot_at_ball.p_F.y(),
+                                step.robot_at_ball.theta_rad * kRadToDeg}},
+                     {"ball", {step.p_F_ball.x(), step.p_F_ball.y()}},
+                     {"kick", step.kick_index},
+                     {"turn_deg", step.rotation_rad * kRadToDeg},
+                     {"rest", {step.outcome.p_F_rest.x(), step.outcome.p_F_rest.y()}},
+                     {"category", CategoryName(step.outcome.category)},
+                     {"first_contact", ContactName(step.outcome.first_contact)}});
+  }
+  return {{"strategy", StrategyName(runs.strategy)},
+          {"end", RunEndName(runs.example.end)},
+          {"steps", steps}};
 }
 
 std::vector<double> BinEdges(int bins, double width, double first = 0.0) {
@@ -81,14 +102,18 @@ std::string StrategiesText(const StrategiesRun& run) {
                    s.kicks_total > 0 ? 100.0 * (s.kicks_total - s.turns_zero) / s.kicks_total : 0.0,
                    s.max_turn_deg);
   }
+  text += "  (kicks, time and turns over the runs that ended in a goal or out)\n";
   return text;
 }
 
 Json StrategiesJson(const StrategiesRun& run) {
   Json summaries = Json::array();
   for (const StrategySummary& s : run.summaries) summaries.push_back(SummaryJson(s));
-  return {{"experiment", "strategies"}, {"version", run.version}, {"seed", run.seed},
-          {"params", ParamsJson(run)},  {"strategies", summaries}, {"run_time_s", run.run_time_s}};
+  Json examples = Json::array();
+  for (const StrategyRuns& runs : run.result.strategies) examples.push_back(ExampleJson(runs));
+  return {{"experiment", "strategies"}, {"version", run.version},   {"seed", run.seed},
+          {"params", ParamsJson(run)},  {"strategies", summaries},  {"example_runs", examples},
+          {"run_time_s", run.run_time_s}};
 }
 
 std::string StrategiesRunsCsv(const StrategiesRun& run) {
@@ -131,16 +156,22 @@ std::string StrategiesTurnsSvg(const StrategiesRun& run) {
 }
 
 std::string StrategiesKicksSvg(const StrategiesRun& run) {
+  // Long tails (a few runs of 50+ kicks) would squeeze the bars: the last bin gathers them.
+  constexpr int kLastBin = 25;
   int max_kicks = 1;
   for (const StrategySummary& s : run.summaries) max_kicks = std::max(max_kicks, s.max_kicks);
+  const int last = std::min(max_kicks, kLastBin);
   BinnedChart chart;
   chart.title = Format("Kicks until goal or out (%d starts)", run.params->starts);
+  if (max_kicks > last) chart.title += Format("; the last bar: %d or more", last);
   chart.x_label = "kicks";
   chart.y_label = "runs";
-  chart.bin_edges = BinEdges(max_kicks + 1, 1.0, -0.5);
+  chart.bin_edges = BinEdges(last + 1, 1.0, -0.5);
   for (const StrategySummary& s : run.summaries) {
-    std::vector<double> counts = s.kick_counts;
-    counts.resize(static_cast<std::size_t>(max_kicks) + 1, 0.0);
+    std::vector<double> counts(static_cast<std::size_t>(last) + 1, 0.0);
+    for (std::size_t k = 0; k < s.kick_counts.size(); ++k) {
+      counts[std::min(k, static_cast<std::size_t>(last))] += s.kick_counts[k];
+    }
     chart.series.push_back({std::string(StrategyName(s.strategy)), counts});
   }
   return BinnedChartSvg(chart);

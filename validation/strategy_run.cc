@@ -110,6 +110,7 @@ StrategyRun RunStrategy(const StrategyRunContext& context, Strategy strategy,
                               StreamKey(run_key, static_cast<std::uint64_t>(step), kExecutionDomain));
       ++run.kicks;
       run.rotations_rad.push_back(d.rotation_rad);
+      run.last_contact = taken.outcome.first_contact;
     } else {
       taken.outcome.p_F_rest = ball;
     }

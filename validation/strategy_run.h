@@ -50,6 +50,7 @@ struct StrategyRun {
   double turn_s = 0.0;         // turning on the spot towards the ball
   double walk_s = 0.0;
   double around_ball_s = 0.0;  // turning around the ball before kicks
+  Contact last_contact = Contact::kNone;  // the last kick's first contact
   std::vector<double> rotations_rad;  // the turn around the ball of every kick, signed
   std::vector<StrategyStep> steps_taken;  // only when recorded
 

@@ -33,18 +33,22 @@ void CountEnds(const StrategyRuns& runs, StrategySummary& s) {
     s.own_goals += run.end == RunEnd::kOwnGoal;
     s.outs += run.end == RunEnd::kOut;
     s.step_limits += run.end == RunEnd::kStepLimit;
+    s.step_limits_at_contact +=
+        run.end == RunEnd::kStepLimit && run.last_contact != Contact::kNone;
   }
+  s.ended = s.runs - s.step_limits;
   s.goal_share_95 = WilsonInterval(s.goals, s.runs, kConfidence);
 }
 
 void SummariseKicksAndTime(const StrategyRuns& runs, StrategySummary& s) {
   std::vector<double> kicks, time;
   for (const StrategyRun& run : runs.runs) {
+    if (run.end == RunEnd::kStepLimit) continue;
     kicks.push_back(run.kicks);
     time.push_back(run.TotalTime());
-    s.mean_walk_s += run.walk_s / s.runs;
-    s.mean_turn_s += run.turn_s / s.runs;
-    s.mean_around_ball_s += run.around_ball_s / s.runs;
+    s.mean_walk_s += run.walk_s / s.ended;
+    s.mean_turn_s += run.turn_s / s.ended;
+    s.mean_around_ball_s += run.around_ball_s / s.ended;
     s.max_kicks = std::max(s.max_kicks, run.kicks);
   }
   s.mean_kicks = Mean(kicks);
@@ -53,13 +57,14 @@ void SummariseKicksAndTime(const StrategyRuns& runs, StrategySummary& s) {
   s.mean_time_s = Mean(time);
   s.mean_time_95 = MeanInterval(time);
   s.kick_counts.assign(static_cast<std::size_t>(s.max_kicks) + 1, 0.0);
-  for (const StrategyRun& run : runs.runs) s.kick_counts[static_cast<std::size_t>(run.kicks)] += 1;
+  for (double k : kicks) s.kick_counts[static_cast<std::size_t>(k)] += 1;
 }
 
 void SummariseTurns(const StrategyRuns& runs, StrategySummary& s) {
   s.turn_bins.assign(kRotationBins, 0.0);
   std::vector<double> turns_deg;
   for (const StrategyRun& run : runs.runs) {
+    if (run.end == RunEnd::kStepLimit) continue;
     for (double rho : run.rotations_rad) {
       ++s.kicks_total;
       const double deg = std::abs(rho) * kRadToDeg;
@@ -81,10 +86,12 @@ void SummariseTurns(const StrategyRuns& runs, StrategySummary& s) {
 void PairWithFast(const StrategyRuns& fast, const StrategyRuns& runs, StrategySummary& s) {
   std::vector<double> kicks, time;
   for (std::size_t i = 0; i < runs.runs.size(); ++i) {
+    if (runs.runs[i].end == RunEnd::kStepLimit || fast.runs[i].end == RunEnd::kStepLimit) continue;
     kicks.push_back(runs.runs[i].kicks - fast.runs[i].kicks);
     time.push_back(runs.runs[i].TotalTime() - fast.runs[i].TotalTime());
   }
   s.paired_with_fast = true;
+  s.paired_runs = static_cast<int>(kicks.size());
   s.kicks_minus_fast = Mean(kicks);
   s.kicks_minus_fast_95 = MeanInterval(kicks);
   s.time_minus_fast_s = Mean(time);

@@ -192,7 +192,7 @@ TEST(ExperimentBallPathsTest, OnePathPerBallPathWithACircleAtEachPosition) {
         group.substr(first, group.find('>', first) - first).find("fill:none;stroke:" + colour),
         std::string::npos);  // the start is hollow
     EXPECT_EQ(Count(group, "fill:" + colour), positions[i] - 1);
-    EXPECT_NE(group.find("stroke:" + colour + ";stroke-width:2.2"), std::string::npos);
+    EXPECT_NE(group.find("stroke:" + colour + ";stroke-width:"), std::string::npos);
   }
   // The non-finite position breaks the second line: two pieces.
   const std::string second = GroupText(svg, paths[1]);

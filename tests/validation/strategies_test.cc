@@ -131,7 +131,9 @@ TEST_F(StrategiesRunTest, SummaryCountsAddUp) {
     double runs = 0.0, turns = 0.0;
     for (double c : s.kick_counts) runs += c;
     for (double c : s.turn_bins) turns += c;
-    EXPECT_EQ(runs, 40.0);
+    EXPECT_EQ(runs, s.ended);
+    EXPECT_EQ(s.ended + s.step_limits, 40);
+    EXPECT_LE(s.step_limits_at_contact, s.step_limits);
     EXPECT_EQ(turns + s.turns_zero, s.kicks_total);
     EXPECT_LE(s.goal_share_95.low, static_cast<double>(s.goals) / 40);
     EXPECT_GE(s.goal_share_95.high, static_cast<double>(s.goals) / 40);
