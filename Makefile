@@ -6,7 +6,7 @@ JOBS ?= $(shell nproc)
 SITUATION ?= models/situations/near_goal_corner.json
 STRATEGY ?= optimal_all
 
-.PHONY: setup build test main demo bench sanitize clean
+.PHONY: setup build test main demo experiments experiments-quick bench sanitize clean
 
 setup:
 	@bash scripts/setup.sh
@@ -39,6 +39,21 @@ demo: build
 	@$(BUILD)/app/foresight decide --situation $(SITUATION) --strategy $(STRATEGY) --svg out/decision.svg
 	@echo
 	@echo "drawing: out/decision.svg"
+
+# The paper's two experiments on the shipped defaults (docs/EXPERIMENTS.md): decision stability
+# on the full grid (about 8 min on 2 cores) and the four strategies from 10,000 starts (about
+# 30 s); experiments-quick runs small versions in seconds.
+experiments: build
+	@mkdir -p out/experiments
+	@$(BUILD)/app/foresight experiment stability --out out/experiments/stability
+	@echo
+	@$(BUILD)/app/foresight experiment strategies --out out/experiments/strategies
+
+experiments-quick: build
+	@mkdir -p out/experiments
+	@$(BUILD)/app/foresight experiment stability --quick --out out/experiments/stability_quick
+	@echo
+	@$(BUILD)/app/foresight experiment strategies --starts 500 --out out/experiments/strategies_quick
 
 bench: build
 	@$(BUILD)/bench/planner_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true

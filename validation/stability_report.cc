@@ -1,5 +1,6 @@
 #include "validation/stability_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -136,6 +137,11 @@ std::string StabilityPlotSvg(const StabilityRun& run) {
     above_50.y.push_back(c.share_above_50);
     at_most_20.y.push_back(c.share_at_most_20);
   }
+  // A share of 0 cannot be drawn on the log axis; say so rather than leave the legend unexplained
+  // (with at most 4 possible decisions, e.g. naoth's, the top share is never below 25 %).
+  for (LineSeries* s : {&above_80, &above_50, &at_most_20}) {
+    if (std::ranges::all_of(s->y, [](double y) { return y <= 0.0; })) s->name += ": 0 at every N";
+  }
   chart.series = {above_80, above_50, at_most_20};
   chart.x_markers = {static_cast<double>(run.params->map_samples)};
   chart.x_markers_label = "N = " + std::to_string(run.params->map_samples);
@@ -151,6 +157,11 @@ std::string StabilityMapSvg(const StabilityRun& run) {
   map.cell_size_m = r.grid.cell_size_m;
   map.cell_centres_F = r.grid.positions_F;
   map.values = r.PositionMeans(MapCountIndex(run));
+  // The scale starts at the lowest value's tenth, so the differences between cells stay visible.
+  double lowest = 1.0;
+  for (double v : map.values) lowest = std::min(lowest, v);
+  map.value_lo = std::clamp(std::floor(lowest * 10.0) / 10.0, 0.0, 0.9);
+  map.value_hi = 1.0;
   return FieldCellMapSvg(run.params->situation.field, map);
 }
 
