@@ -70,8 +70,23 @@ void CreateReportDir(const std::string& dir, const std::string& flag) {
   std::error_code error;
   std::filesystem::create_directories(dir, error);
   if (error || !std::filesystem::is_directory(dir)) {
+    throw InputError(flag + ": cannot create the folder '" + dir +
+                     "': " + (error ? error.message() : "a file of that name is in the way"));
+  }
+}
+
+void CheckReportDir(const std::string& dir, const std::string& flag) {
+  std::error_code error;
+  std::filesystem::path existing = std::filesystem::absolute(dir, error);
+  while (!existing.empty() && !std::filesystem::exists(existing, error)) {
+    if (existing == existing.parent_path()) break;
+    existing = existing.parent_path();
+  }
+  const bool is_dir = std::filesystem::is_directory(existing, error);
+  if (!is_dir || ::access(existing.c_str(), W_OK) != 0) {
     throw InputError(flag + ": cannot create the folder '" + dir + "': " +
-                     (error ? error.message() : "a file of that name is in the way"));
+                     (is_dir ? existing.string() + " is not writable"
+                             : existing.string() + " is a file, not a folder"));
   }
 }
 

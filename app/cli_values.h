@@ -19,5 +19,9 @@ std::function<void(int, int)> TerminalProgress(const std::string& label, const s
 
 // Creates a report folder (and its parents); InputError naming the flag and folder if it fails.
 void CreateReportDir(const std::string& dir, const std::string& flag);
+// Checks, without creating anything, that CreateReportDir can succeed: the folder is a folder
+// or can be made in its nearest existing ancestor, which must be writable. For long runs, so
+// that a bad flag fails before the work instead of after it.
+void CheckReportDir(const std::string& dir, const std::string& flag);
 
 }  // namespace foresight

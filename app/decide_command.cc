@@ -16,10 +16,8 @@ void AddDecideCommand(CLI::App& app, DecideOptions& options) {
       app.add_subcommand("decide", "Choose a kick for a situation with the coarse model");
   cmd->add_option("--situation", options.situation_file, "Situation file (JSON)")->required();
   cmd->add_option("--kicks", options.kicks_file, "Kick model file replacing the situation's");
-  std::string names;
-  for (Strategy s : AllStrategies())
-    names += (names.empty() ? "" : ", ") + std::string(StrategyName(s));
-  cmd->add_option("--strategy", options.strategy, "One of: " + names)->capture_default_str();
+  cmd->add_option("--strategy", options.strategy, "One of: " + StrategyNames())
+      ->capture_default_str();
   cmd->add_option("--samples", options.samples,
                   "Samples per hypothesis (default: the evaluation file's N)");
   cmd->add_option("--seed", options.seed, "Random seed")->capture_default_str();
@@ -30,11 +28,8 @@ void AddDecideCommand(CLI::App& app, DecideOptions& options) {
 int RunDecide(const DecideOptions& options, const std::string& models_dir) {
   const std::optional<Strategy> strategy = ParseStrategy(options.strategy);
   if (!strategy) {
-    std::string names;
-    for (Strategy s : AllStrategies())
-      names += (names.empty() ? "" : ", ") + std::string(StrategyName(s));
-    throw InputError("--strategy: unknown strategy '" + options.strategy + "' (one of: " + names +
-                     ")");
+    throw InputError("--strategy: unknown strategy '" + options.strategy +
+                     "' (one of: " + StrategyNames() + ")");
   }
   const bool samples_given = !options.samples.empty();
   const int samples_flag =

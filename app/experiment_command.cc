@@ -45,8 +45,7 @@ void AddStability(CLI::App& experiment, StabilityOptions& o) {
   cmd->add_flag("--quick", o.quick, "The small grid of MODELS/experiments/stability_quick.json");
   cmd->add_option("--kicks", o.kicks_file, "Kick model replacing the scene's");
   cmd->add_option("--strategy", o.strategy,
-                  "Decision strategy (default: the params file's): fast, optimal_value, "
-                  "optimal_all, optimal_one, naoth");
+                  "Decision strategy (default: the params file's): " + StrategyNames());
   cmd->add_option("--repeats", o.repeats, "Decisions per pose and sample count");
   cmd->add_option("--samples", o.samples, "Sample counts, e.g. 1-25,30-110/10");
   cmd->add_option("--seed", o.seed, "Random seed")->capture_default_str();
@@ -74,11 +73,15 @@ int RunStability(const StabilityOptions& o, const std::filesystem::path& models)
   if (o.quick && !o.params.empty()) throw InputError("--quick and --params exclude each other");
   const std::uint64_t seed = ParseSeed(o.seed);
   const int threads = ParseCount("--threads", o.threads, 0, 1024);
-  const std::string name = o.params.empty() ? (o.quick ? "stability_quick" : "stability") : o.params;
+  const std::string name =
+      o.params.empty() ? (o.quick ? "stability_quick" : "stability") : o.params;
   StabilityParams params = LoadStabilityParams(name, models, o.kicks_file);
   if (!o.strategy.empty()) {
     const std::optional<Strategy> s = ParseStrategy(o.strategy);
-    if (!s) throw InputError("--strategy: unknown strategy '" + o.strategy + "'");
+    if (!s) {
+      throw InputError("--strategy: unknown strategy '" + o.strategy +
+                       "' (one of: " + StrategyNames() + ")");
+    }
     params.strategy = *s;
   }
   if (!o.repeats.empty()) params.repeats = ParseCount("--repeats", o.repeats, 2, 100000);
@@ -88,12 +91,14 @@ int RunStability(const StabilityOptions& o, const std::filesystem::path& models)
       params.map_samples = params.sample_counts.back();  // the map shows the largest N then
     }
   }
-  WithFile("--samples/--repeats", [&] { params.Validate(); });
+  WithFile("--strategy/--repeats/--samples with " + DisplayPath(params.file, models),
+           [&] { params.Validate(); });
+  CheckReportDir(o.out_dir, "--out");  // before hours of work, not after
 
   StabilityRun run;
   run.version = FORESIGHT_VERSION;
   run.params_file = DisplayPath(params.file, models);
-  run.situation_file = params.situation.name;
+  run.situation_name = params.situation.name;
   run.kicks_file = DisplayPath(params.situation.kicks_file, models);
   run.params = &params;
   run.seed = seed;
@@ -124,7 +129,7 @@ int RunStrategiesExperiment(const StrategiesOptions& o, const std::filesystem::p
   StrategiesRun run;
   run.version = FORESIGHT_VERSION;
   run.params_file = DisplayPath(params.file, models);
-  run.situation_file = params.situation.name;
+  run.situation_name = params.situation.name;
   run.kicks_file = DisplayPath(params.situation.kicks_file, models);
   run.params = &params;
   run.seed = seed;
@@ -137,11 +142,13 @@ int RunStrategiesExperiment(const StrategiesOptions& o, const std::filesystem::p
                          "' has no motion for kick '" + params.situation.kicks.kicks[k].name + "'");
       }
     }
+    CheckReportDir(o.out_dir, "--out");  // before the work, not after
     run.executor = "physics";
     run.physics_file = DisplayPath(setup->physics_file, models);
     run.result = RunStrategies(params, *setup->simulator, seed, threads, progress);
   } else {
     const CoarseSimulator coarse(MakeScene(params.situation));
+    CheckReportDir(o.out_dir, "--out");
     run.executor = "coarse";
     run.result = RunStrategies(params, coarse, seed, threads, progress);
   }

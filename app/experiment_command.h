@@ -2,9 +2,8 @@
 // Schlotter, sec. V), each writing JSON, CSV and SVG figures to a folder.
 #pragma once
 
-#include <string>
-
 #include <CLI/CLI.hpp>
+#include <string>
 
 namespace foresight {
 

@@ -6,10 +6,9 @@
 
 namespace foresight {
 
-CoarseActionEvaluator::CoarseActionEvaluator(const Situation& situation,
-                                             const StateEstimate& state, const CoarseWorld& world,
-                                             const PositionValue& value, int samples,
-                                             std::uint64_t seed)
+CoarseActionEvaluator::CoarseActionEvaluator(const Situation& situation, const StateEstimate& state,
+                                             const CoarseWorld& world, const PositionValue& value,
+                                             int samples, std::uint64_t seed)
     : ActionEvaluator(situation, state), world_(world), value_(value), sample_count_(samples) {
   std::vector<DrawnSample> drawn;
   DrawSamples(state, seed, samples, drawn);

@@ -35,6 +35,7 @@ enum class Strategy { kFast, kOptimalValue, kOptimalAll, kOptimalOne, kNaoth };
 std::string_view StrategyName(Strategy strategy);
 std::optional<Strategy> ParseStrategy(std::string_view name);
 std::vector<Strategy> AllStrategies();
+std::string StrategyNames();  // "fast, optimal_value, ..." for help texts and messages
 
 // Step 1's result for one kick.
 struct KickOption {

@@ -23,6 +23,13 @@ std::vector<Strategy> AllStrategies() {
           Strategy::kNaoth};
 }
 
+std::string StrategyNames() {
+  std::string names;
+  for (Strategy s : AllStrategies())
+    names += (names.empty() ? "" : ", ") + std::string(StrategyName(s));
+  return names;
+}
+
 std::optional<Strategy> ParseStrategy(std::string_view name) {
   for (Strategy s : AllStrategies()) {
     if (StrategyName(s) == name) return s;

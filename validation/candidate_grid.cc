@@ -9,7 +9,9 @@ namespace foresight {
 
 CandidateGridEvaluator::CandidateGridEvaluator(ActionEvaluator& inner,
                                                std::vector<double> rotations_rad)
-    : ActionEvaluator(inner.situation(), inner.state()), inner_(inner), rotations_rad_(std::move(rotations_rad)) {
+    : ActionEvaluator(inner.situation(), inner.state()),
+      inner_(inner),
+      rotations_rad_(std::move(rotations_rad)) {
   if (rotations_rad_.empty()) throw std::invalid_argument("CandidateGridEvaluator: no rotations");
 }
 

@@ -20,7 +20,7 @@ struct LineSeries {
   std::string name;       // legend text
   std::vector<double> x;  // same length as y
   std::vector<double> y;
-  bool markers = true;    // a marker at each point (series i uses marker shape i)
+  bool markers = true;  // a marker at each point (series i uses marker shape i)
   bool dashed = false;
 };
 
@@ -48,11 +48,11 @@ struct BinnedSeries {
 
 struct BinnedChart {
   std::string title;
-  std::string x_label;  // e.g. "rotation around the ball (deg)"
-  std::string y_label;  // e.g. "kicks"
-  std::vector<double> bin_edges;  // ascending; bin i is [edges[i], edges[i+1])
+  std::string x_label;               // e.g. "rotation around the ball (deg)"
+  std::string y_label;               // e.g. "kicks"
+  std::vector<double> bin_edges;     // ascending; bin i is [edges[i], edges[i+1])
   std::vector<BinnedSeries> series;  // series i in PaletteColour(i)
-  bool log_y = false;  // zero counts are not drawn on a logarithmic axis
+  bool log_y = false;                // zero counts are not drawn on a logarithmic axis
   ChartSize size{640.0, 380.0};
 };
 // Within each bin, one bar per series side by side (grouped bars), each a tooltip with the

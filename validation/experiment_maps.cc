@@ -58,26 +58,11 @@ void DrawTitle(FieldCanvas& canvas, const std::string& title) {
 
 // The field lines and goal posts again, over the cells (same geometry and style as
 // FieldCanvas::DrawField, which draws them under anything added later).
-void DrawFieldLines(FieldCanvas& canvas, const FieldSpec& field) {
-  SvgWriter& svg = canvas.svg();
-  const std::string line =
-      "fill:none;stroke:#ffffff;stroke-width:" + N::Num(canvas.Px(field.line_width_m));
-  const double hx = field.HalfLength(), hy = field.HalfWidth();
-  svg.OpenGroup("class=\"field-lines\"");
-  svg.Rect(canvas.X(-hx), canvas.Y(hy), canvas.Px(field.field_length_m),
-           canvas.Px(field.field_width_m), line);
-  svg.Line(canvas.X(0), canvas.Y(hy), canvas.X(0), canvas.Y(-hy), line);
-  svg.Circle(canvas.X(0), canvas.Y(0), canvas.Px(0.75 * field.field_width_m / 6.0), line);
-  // The posts stand on the goal lines, half over the outermost cells: redrawn on top as well.
-  const GoalSpec& g = field.goal;
-  for (double side : {-1.0, 1.0}) {
-    const std::string post = side > 0 ? "fill:#f2d600;stroke:#333;stroke-width:1"
-                                      : "fill:#1f5fbf;stroke:#333;stroke-width:1";
-    for (double y : {-g.post_centre_y_m, g.post_centre_y_m}) {
-      svg.Circle(canvas.X(side * g.post_centre_x_m), canvas.Y(y), canvas.Px(g.post_radius_m), post);
-    }
-  }
-  svg.CloseGroup();
+// The cells cover the lines and the posts half over the outermost cells: redrawn on top.
+void DrawFieldLines(FieldCanvas& canvas) {
+  canvas.svg().OpenGroup("class=\"field-lines\"");
+  canvas.DrawLinesAndPosts();
+  canvas.svg().CloseGroup();
 }
 
 void DrawCells(FieldCanvas& canvas, const FieldCellMap& map, AxisRange scale) {
@@ -241,7 +226,7 @@ std::string FieldCellMapSvg(const FieldSpec& field, const FieldCellMap& map) {
   FieldCanvas canvas(field, map.pixels_per_m, ColourBarWidth(ticks));
   canvas.DrawField();
   DrawCells(canvas, map, scale);
-  DrawFieldLines(canvas, field);
+  DrawFieldLines(canvas);
   DrawTitle(canvas, map.title);
   DrawColourBar(canvas, field, map, scale, ticks);
   const bool any =

@@ -31,7 +31,7 @@ std::string FieldCellMapSvg(const FieldSpec& field, const FieldCellMap& map);
 std::string SequentialColour(double t);
 
 struct BallPath {
-  std::string name;         // legend text, e.g. "optimal_all: 5 kicks, goal"
+  std::string name;           // legend text, e.g. "optimal_all: 5 kicks, goal"
   std::vector<Vec2> balls_F;  // the ball's start, then its rest position after each kick
 };
 

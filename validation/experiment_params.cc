@@ -13,9 +13,10 @@ namespace foresight {
 
 namespace {
 
+constexpr int kMaxSampless = 1000;
+
 std::filesystem::path ParamsFile(const std::string& params, const std::filesystem::path& models) {
-  if (params.size() > 5 && params.ends_with(".json")) return params;
-  return models / "experiments" / (params + ".json");
+  return ResolveModelFile(params, "experiments", std::filesystem::current_path(), models);
 }
 
 JsonDocument LoadParamsFile(const std::filesystem::path& file) {
@@ -42,10 +43,7 @@ Situation LoadScene(const JsonObject& root, const std::filesystem::path& file,
 
 Strategy StrategyOf(const JsonObject& root, std::string_view key, const std::string& name) {
   const std::optional<Strategy> strategy = ParseStrategy(name);
-  if (!strategy) {
-    root.Fail(key, "must be fast, optimal_value, optimal_all, optimal_one or naoth, got '" + name +
-                       "'");
-  }
+  if (!strategy) root.Fail(key, "must be one of " + StrategyNames() + ", got '" + name + "'");
   return *strategy;
 }
 
@@ -72,10 +70,14 @@ void StabilityParams::Validate() const {
   RequireInRange("grid_step_m", grid_step_m, 0.05, 3.0);
   RequireInRange("heading_step_deg", heading_step_rad * kRadToDeg, 1.0, 360.0);
   RequireInRange("repeats", repeats, 2, 100000);
+  if (sample_counts.size() > static_cast<std::size_t>(kMaxSampless)) {
+    throw InputError("sample_counts: must list at most " + std::to_string(kMaxSampless) +
+                     " counts, got " + std::to_string(sample_counts.size()));
+  }
   RequireInRange("rotation_bin_deg", rotation_bin_rad * kRadToDeg, 0.1, 360.0);
   if (sample_counts.empty()) throw InputError("sample_counts: must list at least one count");
   for (std::size_t i = 0; i < sample_counts.size(); ++i) {
-    RequireInRange("sample_counts", sample_counts[i], 1, 100000);
+    RequireInRange("sample_counts", sample_counts[i], 1, kMaxSamples);
     if (i > 0 && sample_counts[i] <= sample_counts[i - 1]) {
       throw InputError("sample_counts: must be ascending without repeats, got " +
                        std::to_string(sample_counts[i]) + " after " +
@@ -94,8 +96,8 @@ void StrategiesParams::Validate() const {
   RequireInRange("max_steps", max_steps, 1, 100000);
   RequireInRange("walk_speed_mps", walk_speed_mps, 0.001, 10.0);
   RequireInRange("turn_speed_deg_per_s", turn_speed_radps * kRadToDeg, 0.1, 3600.0);
-  RequireInRange("turn_around_ball_speed_deg_per_s", turn_around_ball_speed_radps * kRadToDeg,
-                 0.1, 3600.0);
+  RequireInRange("turn_around_ball_speed_deg_per_s", turn_around_ball_speed_radps * kRadToDeg, 0.1,
+                 3600.0);
   RequireInRange("example_start", example_start, 0, starts - 1);
   if (!situation.obstacles.empty()) {
     throw InputError("situation: must have no obstacles (the experiment runs on an empty field)");
@@ -161,16 +163,27 @@ std::vector<int> ParseSampleCounts(const std::string& field, const std::string& 
     const std::string item = text.substr(begin, comma - begin);
     const std::size_t dash = item.find('-'), slash = item.find('/');
     if (dash == std::string::npos) {
-      if (slash != std::string::npos) throw InputError(field + ": '" + item + "': a step needs a range lo-hi");
+      if (slash != std::string::npos)
+        throw InputError(field + ": '" + item + "': a step needs a range lo-hi");
       counts.push_back(ParseInt(field, item));
     } else {
       const int lo = ParseInt(field, item.substr(0, dash));
-      const int hi = ParseInt(field, item.substr(dash + 1, slash == std::string::npos ? std::string::npos : slash - dash - 1));
+      const int hi = ParseInt(
+          field,
+          item.substr(dash + 1, slash == std::string::npos ? std::string::npos : slash - dash - 1));
       const int step = slash == std::string::npos ? 1 : ParseInt(field, item.substr(slash + 1));
       if (step < 1 || hi < lo) {
         throw InputError(field + ": '" + item + "' must be lo-hi with lo <= hi and a step >= 1");
       }
+      if (hi > kMaxSamples) {
+        throw InputError(field + ": '" + item + "' goes beyond " + std::to_string(kMaxSamples) +
+                         " samples");
+      }
       for (int n = lo; n <= hi; n += step) counts.push_back(n);
+    }
+    if (counts.size() > static_cast<std::size_t>(kMaxSampless)) {
+      throw InputError(field + ": more than " + std::to_string(kMaxSampless) +
+                       " sample counts");
     }
     begin = comma + 1;
   }

@@ -29,12 +29,12 @@ struct StabilityParams {
   std::filesystem::path file;  // where these were read from (for reports)
   Situation situation;
   Strategy strategy = Strategy::kNaoth;
-  double grid_step_m = 0.0;      // cell size of the position grid over the field
-  double heading_step_rad = 0.0;  // headings 0, step, 2 step, ... below 2 pi
-  int repeats = 0;               // decisions per pose and sample count (R)
+  double grid_step_m = 0.0;        // cell size of the position grid over the field
+  double heading_step_rad = 0.0;   // headings 0, step, 2 step, ... below 2 pi
+  int repeats = 0;                 // decisions per pose and sample count (R)
   std::vector<int> sample_counts;  // N values, ascending, distinct
-  int map_samples = 0;           // the N whose stability the field map shows (one of the list)
-  double rotation_bin_rad = 0.0;  // turns in one bin of this width count as the same decision
+  int map_samples = 0;             // the N whose stability the field map shows (one of the list)
+  double rotation_bin_rad = 0.0;   // turns in one bin of this width count as the same decision
 
   void Validate() const;  // InputError naming the field and value
 };
@@ -43,12 +43,12 @@ struct StrategiesParams {
   std::filesystem::path file;
   Situation situation;
   std::vector<Strategy> strategies;
-  int starts = 0;                  // random start positions
-  int max_steps = 0;               // decisions per run at most (the step limit)
+  int starts = 0;     // random start positions
+  int max_steps = 0;  // decisions per run at most (the step limit)
   double walk_speed_mps = 0.0;
-  double turn_speed_radps = 0.0;             // turning on the spot (towards the ball)
+  double turn_speed_radps = 0.0;              // turning on the spot (towards the ball)
   double turn_around_ball_speed_radps = 0.0;  // turning around the ball before a kick
-  int example_start = 0;           // the start whose ball paths are drawn (Fig. 3)
+  int example_start = 0;                      // the start whose ball paths are drawn (Fig. 3)
 
   void Validate() const;
 };

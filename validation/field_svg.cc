@@ -8,21 +8,33 @@ namespace foresight {
 FieldCanvas::FieldCanvas(const FieldSpec& field, double pixels_per_m, double extra_width_px)
     : field_(field),
       scale_(pixels_per_m),
-      svg_(2.0 * 20.0 + field.carpet_length_m * pixels_per_m + extra_width_px,
-           2.0 * 20.0 + field.carpet_width_m * pixels_per_m) {}
+      width_px_(2.0 * 20.0 + field.carpet_length_m * pixels_per_m + extra_width_px),
+      svg_(width_px_, 2.0 * 20.0 + field.carpet_width_m * pixels_per_m) {}
 
 void FieldCanvas::DrawField() {
-  svg_.Rect(0, 0, legend_x() + 10000, height(), "fill:#ffffff");
+  svg_.Rect(0, 0, width_px_, height(), "fill:#ffffff");
   svg_.Rect(X(-field_.CarpetHalfLength()), Y(field_.CarpetHalfWidth()), Px(field_.carpet_length_m),
             Px(field_.carpet_width_m), "fill:#3f9b4b");
+  DrawGoal(+1.0);
+  DrawGoal(-1.0);
+  DrawLinesAndPosts();
+}
+
+void FieldCanvas::DrawLinesAndPosts() {
   const std::string line =
       "fill:none;stroke:#ffffff;stroke-width:" + SvgWriter::Num(Px(field_.line_width_m));
   const double hx = field_.HalfLength(), hy = field_.HalfWidth();
   svg_.Rect(X(-hx), Y(hy), Px(field_.field_length_m), Px(field_.field_width_m), line);
   svg_.Line(X(0), Y(hy), X(0), Y(-hy), line);
   svg_.Circle(X(0), Y(0), Px(0.75 * field_.field_width_m / 6.0), line);
-  DrawGoal(+1.0);
-  DrawGoal(-1.0);
+  const GoalSpec& g = field_.goal;
+  for (double side : {1.0, -1.0}) {
+    const std::string post = side > 0 ? "fill:#f2d600;stroke:#333;stroke-width:1"
+                                      : "fill:#1f5fbf;stroke:#333;stroke-width:1";
+    for (double y : {g.post_centre_y_m, -g.post_centre_y_m}) {
+      svg_.Circle(X(side * g.post_centre_x_m), Y(y), Px(g.post_radius_m), post);
+    }
+  }
 }
 
 void FieldCanvas::DrawGoal(double side) {
@@ -34,10 +46,6 @@ void FieldCanvas::DrawGoal(double side) {
   svg_.Line(X(front), Y(g.post_centre_y_m), X(back), Y(g.post_centre_y_m), net);
   svg_.Line(X(back), Y(g.post_centre_y_m), X(back), Y(-g.post_centre_y_m), net);
   svg_.Line(X(back), Y(-g.post_centre_y_m), X(front), Y(-g.post_centre_y_m), net);
-  const std::string post = side > 0 ? "fill:#f2d600;stroke:#333;stroke-width:1"
-                                    : "fill:#1f5fbf;stroke:#333;stroke-width:1";
-  svg_.Circle(X(front), Y(g.post_centre_y_m), Px(g.post_radius_m), post);
-  svg_.Circle(X(front), Y(-g.post_centre_y_m), Px(g.post_radius_m), post);
 }
 
 void FieldCanvas::DrawRobot(const Pose2& pose, double radius_m, std::string_view colour) {

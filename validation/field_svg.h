@@ -21,7 +21,9 @@ class FieldCanvas {
   double legend_x() const { return 2.0 * margin_ + field_.carpet_length_m * scale_; }
   double height() const { return 2.0 * margin_ + field_.carpet_width_m * scale_; }
 
-  void DrawField();
+  void DrawField();  // background, carpet, goals, then DrawLinesAndPosts()
+  // The field lines and goal posts alone, e.g. again on top of something drawn over the field.
+  void DrawLinesAndPosts();
   void DrawRobot(const Pose2& pose, double radius_m, std::string_view colour);
   void DrawDot(const Vec2& p_F, double radius_px, std::string_view style);
   void DrawArrow(const Vec2& from_F, const Vec2& to_F, std::string_view colour);
@@ -33,6 +35,7 @@ class FieldCanvas {
 
   const FieldSpec& field_;
   double scale_;
+  double width_px_;
   double margin_ = 20.0;
   SvgWriter svg_;
 };

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "models/checks.h"
+#include "models/error.h"
 #include "models/random.h"
 #include "physics/parallel_for.h"
 #include "planner/coarse_planner.h"
@@ -37,20 +39,20 @@ std::pair<int, int> TopAndDistinct(std::vector<int>& keys) {
   return {top, distinct};
 }
 
-StabilityCount Summarise(int samples, const float* top_share, const std::vector<int>& distinct,
-                         int poses) {
+StabilityCount Summarise(int samples, const int* top_count, const int* distinct, int poses,
+                         int repeats) {
   StabilityCount count;
   count.samples = samples;
   long long above_80 = 0, above_50 = 0, at_most_20 = 0;
   double sum = 0.0, distinct_sum = 0.0;
   for (int p = 0; p < poses; ++p) {
-    // Shares are k / R; compare counts through a tolerance so 0.8 itself is not "> 0.8".
-    const double s = top_share[p];
-    above_80 += s > 0.8 + 1e-6;
-    above_50 += s > 0.5 + 1e-6;
-    at_most_20 += s <= 0.2 + 1e-6;
-    sum += s;
-    distinct_sum += distinct[static_cast<std::size_t>(p)];
+    // Exact integer comparisons of top / R with 4/5, 1/2 and 1/5.
+    const long long top = top_count[p];
+    above_80 += 5 * top > 4LL * repeats;
+    above_50 += 2 * top > repeats;
+    at_most_20 += 5 * top <= repeats;
+    sum += static_cast<double>(top) / repeats;
+    distinct_sum += distinct[p];
   }
   count.share_above_80 = static_cast<double>(above_80) / poses;
   count.share_above_50 = static_cast<double>(above_50) / poses;
@@ -74,24 +76,26 @@ StabilityGrid MakeStabilityGrid(const FieldSpec& field, double step_m, double he
   for (double y : CellCentres(field.HalfWidth(), step_m)) {
     for (double x : CellCentres(field.HalfLength(), step_m)) grid.positions_F.emplace_back(x, y);
   }
-  const int headings = std::max(1, static_cast<int>(std::ceil(2.0 * kPi / heading_step_rad - 1e-9)));
+  const int headings =
+      std::max(1, static_cast<int>(std::ceil(2.0 * kPi / heading_step_rad - 1e-9)));
   for (int h = 0; h < headings; ++h) grid.headings_rad.push_back(WrapAngle(h * heading_step_rad));
   return grid;
 }
 
 int DecisionKey(int kick_index, double rotation_rad, double rotation_bin_rad) {
   constexpr int kBinsPerKick = 1 << 16;
+  const int bins = std::max(1, static_cast<int>(std::lround(2.0 * kPi / rotation_bin_rad)));
   const int bin = static_cast<int>(std::lround(WrapAngle(rotation_rad) / rotation_bin_rad));
-  return (kick_index + 1) * kBinsPerKick + bin;
+  return (kick_index + 1) * kBinsPerKick + ((bin % bins) + bins) % bins;
 }
 
 std::vector<double> StabilityResult::PositionMeans(int count_index) const {
   const int headings = static_cast<int>(grid.headings_rad.size());
-  const float* shares = top_share.data() + static_cast<std::size_t>(count_index) * grid.PoseCount();
   std::vector<double> means;
   for (std::size_t p = 0; p < grid.positions_F.size(); ++p) {
     double sum = 0.0;
-    for (int h = 0; h < headings; ++h) sum += shares[p * headings + h];
+    for (int h = 0; h < headings; ++h)
+      sum += TopShare(count_index, static_cast<int>(p) * headings + h);
     means.push_back(sum / headings);
   }
   return means;
@@ -100,19 +104,24 @@ std::vector<double> StabilityResult::PositionMeans(int count_index) const {
 StabilityResult RunStability(const StabilityParams& params, std::uint64_t seed, int threads,
                              const std::function<void(int, int)>& progress) {
   StabilityResult result;
-  result.grid = MakeStabilityGrid(params.situation.field, params.grid_step_m,
-                                  params.heading_step_rad);
+  result.grid =
+      MakeStabilityGrid(params.situation.field, params.grid_step_m, params.heading_step_rad);
   const int poses = result.grid.PoseCount();
   const int counts = static_cast<int>(params.sample_counts.size());
   const int repeats = params.repeats;
-  result.top_share.assign(static_cast<std::size_t>(counts) * poses, 0.0f);
+  result.repeats = repeats;
+  result.top_count.assign(static_cast<std::size_t>(counts) * poses, 0);
   std::vector<int> distinct(static_cast<std::size_t>(counts) * poses, 0);
 
   // Every grid pose must be a valid situation (ball on the carpet): check before the work.
   Situation probe = params.situation;
   for (int p = 0; p < poses; ++p) {
     probe.state.robot = result.grid.PoseAt(p);
-    probe.Validate();
+    const Pose2& pose = probe.state.robot;
+    WithFile(params.file.string() + ": grid pose (" + FormatNumber(pose.p_F.x()) + ", " +
+                 FormatNumber(pose.p_F.y()) + ", " + FormatNumber(pose.theta_rad * kRadToDeg) +
+                 " deg)",
+             [&] { probe.Validate(); });
   }
   const CoarsePlanner planner(params.situation);
   ParallelFor(
@@ -120,27 +129,29 @@ StabilityResult RunStability(const StabilityParams& params, std::uint64_t seed, 
       [&](int pose) {
         StateEstimate state = params.situation.state;
         state.robot = result.grid.PoseAt(pose);
-        const std::uint64_t pose_key = StreamKey(seed, static_cast<std::uint64_t>(pose),
-                                                 kStabilityDomain);
+        const std::uint64_t pose_key =
+            StreamKey(seed, static_cast<std::uint64_t>(pose), kStabilityDomain);
         std::vector<int> keys(static_cast<std::size_t>(repeats));
         for (int c = 0; c < counts; ++c) {
           for (int r = 0; r < repeats; ++r) {
+            const std::uint64_t decision =
+                static_cast<std::uint64_t>(c) * static_cast<std::uint64_t>(repeats) +
+                static_cast<std::uint64_t>(r);
             const Decision d = planner.Decide(state, params.strategy, params.sample_counts[c],
-                                              StreamKey(pose_key, c * repeats + r));
+                                              StreamKey(pose_key, decision));
             keys[r] = DecisionKey(d.kick_index, d.rotation_rad, params.rotation_bin_rad);
           }
           const auto [top, n] = TopAndDistinct(keys);
           const std::size_t slot = static_cast<std::size_t>(c) * poses + pose;
-          result.top_share[slot] = static_cast<float>(static_cast<double>(top) / repeats);
+          result.top_count[slot] = top;
           distinct[slot] = n;
         }
       },
       progress);
   for (int c = 0; c < counts; ++c) {
     const std::size_t offset = static_cast<std::size_t>(c) * poses;
-    const std::vector<int> distinct_c(distinct.begin() + offset, distinct.begin() + offset + poses);
-    result.counts.push_back(Summarise(params.sample_counts[c], result.top_share.data() + offset,
-                                      distinct_c, poses));
+    result.counts.push_back(Summarise(params.sample_counts[c], result.top_count.data() + offset,
+                                      distinct.data() + offset, poses, repeats));
   }
   result.decisions = static_cast<long long>(poses) * counts * repeats;
   return result;

@@ -23,7 +23,7 @@
 namespace foresight {
 
 struct StabilityGrid {
-  std::vector<Vec2> positions_F;    // cell centres, row by row (y, then x ascending)
+  std::vector<Vec2> positions_F;     // cell centres, row by row (y, then x ascending)
   std::vector<double> headings_rad;  // 0, step, ...
   double cell_size_m = 0.0;
 
@@ -37,25 +37,34 @@ StabilityGrid MakeStabilityGrid(const FieldSpec& field, double step_m, double he
 
 struct StabilityCount {
   int samples = 0;
-  double share_above_80 = 0.0;     // poses whose most frequent decision has > 80 %
-  double share_above_50 = 0.0;     // ... > 50 %
-  double share_at_most_20 = 0.0;   // ... <= 20 %
+  double share_above_80 = 0.0;    // poses whose most frequent decision has > 80 %
+  double share_above_50 = 0.0;    // ... > 50 %
+  double share_at_most_20 = 0.0;  // ... <= 20 %
   double mean_top_share = 0.0;
-  double mean_distinct = 0.0;      // distinct decisions per pose, mean
+  double mean_distinct = 0.0;  // distinct decisions per pose, mean
 };
 
 struct StabilityResult {
   StabilityGrid grid;
   std::vector<StabilityCount> counts;  // one per sample count, in the params' order
-  // Top share of every pose per count: [count_index * PoseCount() + pose].
-  std::vector<float> top_share;
+  int repeats = 0;
+  // How often the most frequent decision of every pose was made, per sample count:
+  // [count_index * PoseCount() + pose], out of `repeats`.
+  std::vector<int> top_count;
   long long decisions = 0;
+
+  double TopShare(int count_index, int pose) const {
+    return static_cast<double>(top_count[static_cast<std::size_t>(count_index) * grid.PoseCount() +
+                                         static_cast<std::size_t>(pose)]) /
+           repeats;
+  }
 
   // Per position, the mean top share over its headings at count index c.
   std::vector<double> PositionMeans(int count_index) const;
 };
 
-// The (kick, rotation bin) key of a decision; kick_index -1 (none) is a key of its own.
+// The (kick, rotation bin) key of a decision; kick_index -1 (none) is a key of its own. Bins are
+// centred on 0 and wrap around: turns of +179 and -179 deg share the bin of 180 deg.
 int DecisionKey(int kick_index, double rotation_rad, double rotation_bin_rad);
 
 // `progress(done, total)` counts poses. Throws InputError if a grid pose puts the ball off the

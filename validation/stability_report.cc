@@ -25,7 +25,7 @@ int MapCountIndex(const StabilityRun& run) {
 Json ParamsJson(const StabilityRun& run) {
   const StabilityParams& p = *run.params;
   return {{"file", run.params_file},
-          {"situation", run.situation_file},
+          {"situation", run.situation_name},
           {"kicks", run.kicks_file},
           {"strategy", StrategyName(p.strategy)},
           {"samples_per_decision", p.sample_counts},
@@ -34,6 +34,18 @@ Json ParamsJson(const StabilityRun& run) {
           {"repeats", p.repeats},
           {"map_samples", p.map_samples},
           {"rotation_bin_deg", p.rotation_bin_rad * kRadToDeg}};
+}
+
+// naoth never turns: with k kicks it chooses among k + 1 decisions, so its most likely one has
+// at least 1 / (k + 1) of the votes. With k <= 3 the "<= 20 %" share is 0 by construction.
+std::string ConstructionNote(const StabilityRun& run) {
+  const int decisions = static_cast<int>(run.params->situation.kicks.kicks.size()) + 1;
+  if (run.params->strategy != Strategy::kNaoth || decisions > 4) return "";
+  return Format(
+      "naoth chooses among %d decisions without a turn, so the most likely one always "
+      "has at least %d%%: the <= 20%% share is 0 by construction (the paper's figure "
+      "needs the decision with the turn: --params stability_parametric)",
+      decisions, 100 / decisions);
 }
 
 }  // namespace
@@ -48,21 +60,25 @@ double WorstUncertainShareFrom(const StabilityResult& result, int min_samples) {
 
 std::string StabilityText(const StabilityRun& run) {
   const StabilityResult& r = run.result;
-  std::string text = Format("stability: %d poses (%zu positions x %zu headings), %d decisions "
-                            "each per sample count, strategy %s\n",
-                            r.grid.PoseCount(), r.grid.positions_F.size(),
-                            r.grid.headings_rad.size(), run.params->repeats,
-                            std::string(StrategyName(run.params->strategy)).c_str());
+  std::string text = Format(
+      "stability: %d poses (%zu positions x %zu headings), %d decisions "
+      "each per sample count, strategy %s\n",
+      r.grid.PoseCount(), r.grid.positions_F.size(), r.grid.headings_rad.size(),
+      run.params->repeats, std::string(StrategyName(run.params->strategy)).c_str());
   text += "  samples   >80%    >50%   <=20%   mean top share\n";
   for (const StabilityCount& c : r.counts) {
     text += Format("  %7d  %5.1f%%  %5.1f%%  %5.1f%%   %.3f\n", c.samples, 100.0 * c.share_above_80,
                    100.0 * c.share_above_50, 100.0 * c.share_at_most_20, c.mean_top_share);
   }
+  const std::string note = ConstructionNote(run);
   const double worst = WorstUncertainShareFrom(r, 20);
-  if (std::isfinite(worst)) {
-    text += Format("from 20 samples on, at most %.1f%% of poses have a most likely decision of "
-                   "<= 20%% (paper: about 10%%)\n",
-                   100.0 * worst);
+  if (!note.empty()) {
+    text += note + "\n";
+  } else if (std::isfinite(worst)) {
+    text += Format(
+        "from 20 samples on, at most %.1f%% of poses have a most likely decision of "
+        "<= 20%% (paper: about 10%%)\n",
+        100.0 * worst);
   }
   return text;
 }
@@ -90,13 +106,16 @@ Json StabilityJson(const StabilityRun& run) {
             {"decisions", r.decisions},
             {"counts", counts}};
   j["max_share_at_most_20_from_20_samples"] = std::isfinite(worst) ? Json(worst) : Json(nullptr);
+  const std::string note = ConstructionNote(run);
+  if (!note.empty()) j["note"] = note;
   j["run_time_s"] = run.run_time_s;
   return j;
 }
 
 std::string StabilityCountsCsv(const StabilityRun& run) {
-  std::string csv = "samples,share_above_80,share_above_50,share_at_most_20,mean_top_share,"
-                    "mean_distinct_decisions\n";
+  std::string csv =
+      "samples,share_above_80,share_above_50,share_at_most_20,mean_top_share,"
+      "mean_distinct_decisions\n";
   for (const StabilityCount& c : run.result.counts) {
     csv += Format("%d,%.6f,%.6f,%.6f,%.6f,%.4f\n", c.samples, c.share_above_80, c.share_above_50,
                   c.share_at_most_20, c.mean_top_share, c.mean_distinct);

@@ -4,9 +4,8 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "validation/stability.h"
 
@@ -15,7 +14,7 @@ namespace foresight {
 struct StabilityRun {
   std::string version;
   std::string params_file;     // as displayed (relative to the models folder when inside it)
-  std::string situation_file;  // the scene's files, as displayed
+  std::string situation_name;  // the scene (its situation's name)
   std::string kicks_file;
   const StabilityParams* params = nullptr;
   std::uint64_t seed = 0;

@@ -10,14 +10,16 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json IntervalJson(const Interval& i) { return Json::array({i.low, i.high}); }
+Json IntervalJson(const Interval& i) {
+  return Json::array({i.low, i.high});
+}
 
 Json ParamsJson(const StrategiesRun& run) {
   const StrategiesParams& p = *run.params;
   Json strategies = Json::array();
   for (Strategy s : p.strategies) strategies.push_back(StrategyName(s));
   Json j = {{"file", run.params_file},
-            {"situation", run.situation_file},
+            {"situation", run.situation_name},
             {"kicks", run.kicks_file},
             {"executor", run.executor}};
   if (!run.physics_file.empty()) j["physics"] = run.physics_file;
@@ -32,32 +34,55 @@ Json ParamsJson(const StrategiesRun& run) {
   return j;
 }
 
+// Statistics over no runs are not 0: they are null.
+Json OrNull(double value, bool defined) {
+  return defined ? Json(value) : Json(nullptr);
+}
+Json OrNull(const Interval& i, bool defined) {
+  return defined ? IntervalJson(i) : Json(nullptr);
+}
+
 Json SummaryJson(const StrategySummary& s) {
+  const bool ended = s.ended > 0;
   Json j = {{"strategy", StrategyName(s.strategy)},
             {"runs", s.runs},
-            {"ends", {{"goal", s.goals}, {"own_goal", s.own_goals}, {"out", s.outs},
-                      {"step_limit", s.step_limits},
-                      {"step_limit_stopped_at_contact", s.step_limits_at_contact}}},
+            {"ends",
+             {{"goal", s.goals},
+              {"own_goal", s.own_goals},
+              {"out", s.outs},
+              {"step_limit", s.step_limits},
+              {"step_limit_stopped_at_contact", s.step_limits_at_contact}}},
             {"ended_runs", s.ended},
             {"goal_share", static_cast<double>(s.goals) / s.runs},
             {"goal_share_95", IntervalJson(s.goal_share_95)},
-            {"kicks", {{"mean", s.mean_kicks}, {"mean_95", IntervalJson(s.mean_kicks_95)},
-                       {"median", s.median_kicks}, {"max", s.max_kicks},
-                       {"histogram", s.kick_counts}}},
-            {"time_s", {{"mean", s.mean_time_s}, {"mean_95", IntervalJson(s.mean_time_95)},
-                        {"walk_mean", s.mean_walk_s}, {"turn_mean", s.mean_turn_s},
-                        {"around_ball_mean", s.mean_around_ball_s}}},
+            {"kicks",
+             {{"mean", OrNull(s.mean_kicks, ended)},
+              {"mean_95", OrNull(s.mean_kicks_95, ended)},
+              {"median", OrNull(s.median_kicks, ended)},
+              {"max", s.max_kicks},
+              {"histogram", s.kick_counts}}},
+            {"time_s",
+             {{"mean", OrNull(s.mean_time_s, ended)},
+              {"mean_95", OrNull(s.mean_time_95, ended)},
+              {"walk_mean", OrNull(s.mean_walk_s, ended)},
+              {"turn_mean", OrNull(s.mean_turn_s, ended)},
+              {"around_ball_mean", OrNull(s.mean_around_ball_s, ended)}}},
             {"turns_around_ball",
-             {{"kicks", s.kicks_total}, {"zero", s.turns_zero}, {"max_deg", s.max_turn_deg},
-              {"p95_deg", s.p95_turn_deg}, {"above_90_deg", s.turns_above_90},
-              {"above_100_deg", s.turns_above_100}, {"bin_deg", kRotationBinDeg},
+             {{"kicks", s.kicks_total},
+              {"zero", s.turns_zero},
+              {"max_deg", s.max_turn_deg},
+              {"p95_deg", s.p95_turn_deg},
+              {"above_90_deg", s.turns_above_90},
+              {"above_100_deg", s.turns_above_100},
+              {"bin_deg", kRotationBinDeg},
               {"histogram_nonzero", s.turn_bins}}}};
   if (s.paired_with_fast) {
+    const bool paired = s.paired_runs > 0;
     j["minus_fast"] = {{"paired_runs", s.paired_runs},
-                       {"kicks_mean", s.kicks_minus_fast},
-                       {"kicks_mean_95", IntervalJson(s.kicks_minus_fast_95)},
-                       {"time_mean_s", s.time_minus_fast_s},
-                       {"time_mean_95", IntervalJson(s.time_minus_fast_95)}};
+                       {"kicks_mean", OrNull(s.kicks_minus_fast, paired)},
+                       {"kicks_mean_95", OrNull(s.kicks_minus_fast_95, paired)},
+                       {"time_mean_s", OrNull(s.time_minus_fast_s, paired)},
+                       {"time_mean_95", OrNull(s.time_minus_fast_95, paired)}};
   }
   return j;
 }
@@ -66,8 +91,9 @@ Json SummaryJson(const StrategySummary& s) {
 Json ExampleJson(const StrategyRuns& runs) {
   Json steps = Json::array();
   for (const StrategyStep& step : runs.example.steps_taken) {
-    steps.push_back({{"robot", {step.robot_at_ball.p_F.x(), step.robot_at_ball.p_F.y(),
-                                step.robot_at_ball.theta_rad * kRadToDeg}},
+    steps.push_back({{"robot",
+                      {step.robot_at_ball.p_F.x(), step.robot_at_ball.p_F.y(),
+                       step.robot_at_ball.theta_rad * kRadToDeg}},
                      {"ball", {step.p_F_ball.x(), step.p_F_ball.y()}},
                      {"kick", step.kick_index},
                      {"turn_deg", step.rotation_rad * kRadToDeg},
@@ -91,16 +117,17 @@ std::vector<double> BinEdges(int bins, double width, double first = 0.0) {
 std::string StrategiesText(const StrategiesRun& run) {
   std::string text = Format("strategies: %d starts, kicks executed by %s\n", run.params->starts,
                             run.executor.c_str());
-  text += "  strategy        goal    out  own goal  limit  kicks (mean)  time (s)  turn > 0  "
-          "max turn\n";
+  text +=
+      "  strategy        goal    out  own goal  limit  kicks (mean)  time (s)  turn > 0  "
+      "max turn\n";
   for (const StrategySummary& s : run.summaries) {
     const double n = s.runs;
-    text += Format("  %-13s  %5.1f%%  %5.1f%%  %5.1f%%  %5.1f%%  %12.2f  %8.1f  %7.1f%%  %6.1f deg\n",
-                   std::string(StrategyName(s.strategy)).c_str(), 100.0 * s.goals / n,
-                   100.0 * s.outs / n, 100.0 * s.own_goals / n, 100.0 * s.step_limits / n,
-                   s.mean_kicks, s.mean_time_s,
-                   s.kicks_total > 0 ? 100.0 * (s.kicks_total - s.turns_zero) / s.kicks_total : 0.0,
-                   s.max_turn_deg);
+    text += Format(
+        "  %-13s  %5.1f%%  %5.1f%%  %5.1f%%  %5.1f%%  %12.2f  %8.1f  %7.1f%%  %6.1f deg\n",
+        std::string(StrategyName(s.strategy)).c_str(), 100.0 * s.goals / n, 100.0 * s.outs / n,
+        100.0 * s.own_goals / n, 100.0 * s.step_limits / n, s.mean_kicks, s.mean_time_s,
+        s.kicks_total > 0 ? 100.0 * (s.kicks_total - s.turns_zero) / s.kicks_total : 0.0,
+        s.max_turn_deg);
   }
   text += "  (kicks, time and turns over the runs that ended in a goal or out)\n";
   return text;
@@ -111,15 +138,16 @@ Json StrategiesJson(const StrategiesRun& run) {
   for (const StrategySummary& s : run.summaries) summaries.push_back(SummaryJson(s));
   Json examples = Json::array();
   for (const StrategyRuns& runs : run.result.strategies) examples.push_back(ExampleJson(runs));
-  return {{"experiment", "strategies"}, {"version", run.version},   {"seed", run.seed},
-          {"params", ParamsJson(run)},  {"strategies", summaries},  {"example_runs", examples},
+  return {{"experiment", "strategies"},  {"version", run.version},  {"seed", run.seed},
+          {"params", ParamsJson(run)},   {"strategies", summaries}, {"example_runs", examples},
           {"run_time_s", run.run_time_s}};
 }
 
 std::string StrategiesRunsCsv(const StrategiesRun& run) {
-  std::string csv = "start,strategy,end,kicks,steps,time_s,walk_s,turn_s,around_ball_s,"
-                    "turns_nonzero,max_turn_deg,start_robot_x_m,start_robot_y_m,"
-                    "start_robot_theta_deg,start_ball_x_m,start_ball_y_m\n";
+  std::string csv =
+      "start,strategy,end,kicks,steps,time_s,walk_s,turn_s,around_ball_s,"
+      "turns_nonzero,max_turn_deg,start_robot_x_m,start_robot_y_m,"
+      "start_robot_theta_deg,start_ball_x_m,start_ball_y_m\n";
   for (const StrategyRuns& runs : run.result.strategies) {
     for (std::size_t i = 0; i < runs.runs.size(); ++i) {
       const StrategyRun& r = runs.runs[i];

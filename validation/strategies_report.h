@@ -5,10 +5,9 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "validation/strategy_stats.h"
 
@@ -16,9 +15,9 @@ namespace foresight {
 
 struct StrategiesRun {
   std::string version;
-  std::string params_file, situation_file, kicks_file;  // as displayed
-  std::string executor;      // "coarse" or "physics"
-  std::string physics_file;  // with physics, as displayed
+  std::string params_file, situation_name, kicks_file;  // files as displayed
+  std::string executor;                                 // "coarse" or "physics"
+  std::string physics_file;                             // with physics, as displayed
   const StrategiesParams* params = nullptr;
   std::uint64_t seed = 0;
   StrategiesResult result;

@@ -97,17 +97,18 @@ StrategyRun RunStrategy(const StrategyRunContext& context, Strategy strategy,
   for (int step = 0; step < params.max_steps; ++step) {
     robot = Approach(params, robot, ball, run);
     belief.robot = robot;
-    const Decision d =
-        context.planner.Decide(belief, strategy, params.situation.evaluation.samples,
-                               StreamKey(run_key, static_cast<std::uint64_t>(step), kDecisionDomain));
+    const Decision d = context.planner.Decide(
+        belief, strategy, params.situation.evaluation.samples,
+        StreamKey(run_key, static_cast<std::uint64_t>(step), kDecisionDomain));
     ++run.steps;
     StrategyStep taken{robot, ball, d.kick_index, d.rotation_rad, {}};
     // Turning around the ball: the ball stays, the robot's heading changes by the rotation.
     run.around_ball_s += std::abs(d.rotation_rad) / params.turn_around_ball_speed_radps;
     const double heading = WrapAngle(robot.theta_rad + d.rotation_rad);
     if (d.kick_index >= 0) {
-      taken.outcome = Execute(context, robot, ball, d.kick_index, d.rotation_rad,
-                              StreamKey(run_key, static_cast<std::uint64_t>(step), kExecutionDomain));
+      taken.outcome =
+          Execute(context, robot, ball, d.kick_index, d.rotation_rad,
+                  StreamKey(run_key, static_cast<std::uint64_t>(step), kExecutionDomain));
       ++run.kicks;
       run.rotations_rad.push_back(d.rotation_rad);
       run.last_contact = taken.outcome.first_contact;

@@ -36,22 +36,22 @@ enum class RunEnd : std::uint8_t { kGoal, kOwnGoal, kOut, kStepLimit };
 std::string_view RunEndName(RunEnd end);
 
 struct StrategyStep {
-  Pose2 robot_at_ball;   // before the turn around the ball
+  Pose2 robot_at_ball;      // before the turn around the ball
   Vec2 p_F_ball{0.0, 0.0};  // where the ball was kicked from
-  int kick_index = -1;   // -1: the strategy kicked nothing this step
+  int kick_index = -1;      // -1: the strategy kicked nothing this step
   double rotation_rad = 0.0;
   Outcome outcome;
 };
 
 struct StrategyRun {
   RunEnd end = RunEnd::kStepLimit;
-  int kicks = 0;      // kicks made (steps with a kick)
-  int steps = 0;      // decisions made
-  double turn_s = 0.0;         // turning on the spot towards the ball
+  int kicks = 0;        // kicks made (steps with a kick)
+  int steps = 0;        // decisions made
+  double turn_s = 0.0;  // turning on the spot towards the ball
   double walk_s = 0.0;
-  double around_ball_s = 0.0;  // turning around the ball before kicks
+  double around_ball_s = 0.0;             // turning around the ball before kicks
   Contact last_contact = Contact::kNone;  // the last kick's first contact
-  std::vector<double> rotations_rad;  // the turn around the ball of every kick, signed
+  std::vector<double> rotations_rad;      // the turn around the ball of every kick, signed
   std::vector<StrategyStep> steps_taken;  // only when recorded
 
   double TotalTime() const { return turn_s + walk_s + around_ball_s; }
@@ -59,8 +59,8 @@ struct StrategyRun {
 
 struct StrategyRunContext {
   const StrategiesParams& params;
-  const CoarsePlanner& planner;       // decisions (coarse model, the situation's belief)
-  const OutcomeSimulator& executor;   // what really happens to a kicked ball
+  const CoarsePlanner& planner;      // decisions (coarse model, the situation's belief)
+  const OutcomeSimulator& executor;  // what really happens to a kicked ball
 };
 
 StrategyRun RunStrategy(const StrategyRunContext& context, Strategy strategy,

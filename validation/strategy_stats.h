@@ -38,9 +38,9 @@ struct StrategySummary {
   double mean_walk_s = 0.0, mean_turn_s = 0.0, mean_around_ball_s = 0.0;
 
   int kicks_total = 0;
-  int turns_zero = 0;            // kicks without a turn around the ball
+  int turns_zero = 0;  // kicks without a turn around the ball
   double max_turn_deg = 0.0;
-  double p95_turn_deg = 0.0;     // of the kicks with a turn
+  double p95_turn_deg = 0.0;  // of the kicks with a turn
   int turns_above_90 = 0, turns_above_100 = 0;
   std::vector<double> turn_bins;  // |turn| > 0 in kRotationBins bins of kRotationBinDeg
 

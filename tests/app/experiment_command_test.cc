@@ -78,10 +78,12 @@ TEST_F(ExperimentCommandTest, StabilityFlagsOverrideTheFile) {
 
 TEST_F(ExperimentCommandTest, StabilitySameBytesWithOneThreadOrTwo) {
   const std::string params = TinyStability().string();
-  ASSERT_EQ(Experiment({"stability", "--params", params, "--out", "a", "--threads", "1"}).exit_code, 0);
-  ASSERT_EQ(Experiment({"stability", "--params", params, "--out", "b", "--threads", "2"}).exit_code, 0);
-  for (const char* file : {"stability.csv", "stability_positions.csv", "stability.svg",
-                           "stability_map.svg"}) {
+  ASSERT_EQ(Experiment({"stability", "--params", params, "--out", "a", "--threads", "1"}).exit_code,
+            0);
+  ASSERT_EQ(Experiment({"stability", "--params", params, "--out", "b", "--threads", "2"}).exit_code,
+            0);
+  for (const char* file :
+       {"stability.csv", "stability_positions.csv", "stability.svg", "stability_map.svg"}) {
     EXPECT_EQ(ReadFile(work() / "a" / file), ReadFile(work() / "b" / file)) << file;
   }
   EXPECT_EQ(WithoutRunTime(ReadFile(work() / "a" / "stability.json")),
@@ -106,8 +108,10 @@ TEST_F(ExperimentCommandTest, StrategiesWriteJsonCsvAndFigures) {
 }
 
 TEST_F(ExperimentCommandTest, StrategiesSameBytesWithOneThreadOrTwo) {
-  ASSERT_EQ(Experiment({"strategies", "--starts", "5", "--out", "a", "--threads", "1"}).exit_code, 0);
-  ASSERT_EQ(Experiment({"strategies", "--starts", "5", "--out", "b", "--threads", "2"}).exit_code, 0);
+  ASSERT_EQ(Experiment({"strategies", "--starts", "5", "--out", "a", "--threads", "1"}).exit_code,
+            0);
+  ASSERT_EQ(Experiment({"strategies", "--starts", "5", "--out", "b", "--threads", "2"}).exit_code,
+            0);
   for (const char* file : {"strategies_runs.csv", "strategies_turns.svg", "strategies_kicks.svg",
                            "strategies_paths.svg"}) {
     EXPECT_EQ(ReadFile(work() / "a" / file), ReadFile(work() / "b" / file)) << file;
@@ -128,6 +132,20 @@ TEST_F(ExperimentCommandTest, BadInputIsOneLineExitTwoAndNoFolder) {
                  "--physics-file needs --physics");
   ExpectBadInput({"strategies", "--params", "nope", "--out", "out"}, "nope.json does not exist");
   ExpectBadInput({"strategies", "--kicks", "missing.json", "--out", "out"}, "missing.json");
+}
+
+// A bad --out fails before the work: a file in the way of the folder.
+TEST_F(ExperimentCommandTest, OutBlockedByAFileFailsBeforeTheWork) {
+  Write("blocker", "x");
+  for (const char* experiment : {"stability", "strategies"}) {
+    const RunResult r =
+        Experiment({experiment, experiment == std::string("stability") ? "--quick" : "--physics",
+                    "--out", "blocker/out"});
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_THAT(r.err, HasSubstr("--out: cannot create the folder 'blocker/out'"));
+    EXPECT_THAT(r.err, HasSubstr("is a file, not a folder"));
+    EXPECT_EQ(CountOf(r.err, "\n"), 1) << r.err;
+  }
 }
 
 }  // namespace

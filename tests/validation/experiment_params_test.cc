@@ -14,7 +14,9 @@ namespace {
 
 using ::testing::HasSubstr;
 
-std::filesystem::path Models() { return testing::ModelsDir(); }
+std::filesystem::path Models() {
+  return testing::ModelsDir();
+}
 
 std::string Unique(const std::string& name) {
   return name + "." + std::to_string(::getpid()) + ".json";
@@ -63,7 +65,7 @@ TEST(ExperimentParamsTest, ShippedStrategiesAreThePapersSetting) {
   EXPECT_NEAR(p.turn_speed_radps * kRadToDeg, 60.0, 1e-12);
   EXPECT_NEAR(p.turn_around_ball_speed_radps * kRadToDeg, 30.0, 1e-12);
   EXPECT_EQ(p.strategies, (std::vector<Strategy>{Strategy::kFast, Strategy::kOptimalValue,
-                                                  Strategy::kOptimalAll, Strategy::kOptimalOne}));
+                                                 Strategy::kOptimalAll, Strategy::kOptimalOne}));
   EXPECT_EQ(p.situation.evaluation.samples, 30);
 }
 
@@ -76,7 +78,7 @@ TEST(ExperimentParamsTest, KicksOverrideReplacesTheScenesKickModel) {
 
 TEST(ExperimentParamsTest, BadValuesNameFileFieldAndValue) {
   EXPECT_THAT(StabilityErrorWith("\"naoth\"", "\"greedy\""),
-              HasSubstr("strategy: must be fast, optimal_value, optimal_all, optimal_one or "
+              HasSubstr("strategy: must be one of fast, optimal_value, optimal_all, optimal_one, "
                         "naoth, got 'greedy'"));
   EXPECT_THAT(StabilityErrorWith("[1, 2, 30]", "[1, 30, 2]"),
               HasSubstr("sample_counts: must be ascending without repeats, got 2 after 30"));
@@ -84,8 +86,9 @@ TEST(ExperimentParamsTest, BadValuesNameFileFieldAndValue) {
               HasSubstr("map_samples: must be one of sample_counts, got 20"));
   EXPECT_THAT(StabilityErrorWith("\"repeats\": 100", "\"repeats\": 2.5"),
               HasSubstr("repeats: must be a whole number, got 2.5"));
-  EXPECT_THAT(StabilityErrorWith("\"grid_step_m\": 0.3", "\"grid_step_m\": 0"),
-              HasSubstr("grid_step_m"));
+  const std::string step = StabilityErrorWith("\"grid_step_m\": 0.3", "\"grid_step_m\": 0");
+  EXPECT_THAT(step, HasSubstr("stability_bad"));
+  EXPECT_THAT(step, HasSubstr("grid_step_m: must be in [0.05, 3], got 0"));
   const std::string unknown = StabilityErrorWith("\"repeats\"", "\"repeat\"");
   EXPECT_THAT(unknown, HasSubstr("stability_bad"));
   EXPECT_THAT(unknown, HasSubstr("repeat"));
@@ -110,7 +113,8 @@ TEST(ExperimentParamsTest, SampleCountListsParse) {
   EXPECT_EQ(ParseSampleCounts("--samples", "1-3,10,20-40/10"),
             (std::vector<int>{1, 2, 3, 10, 20, 30, 40}));
   EXPECT_EQ(ParseSampleCounts("--samples", "7"), (std::vector<int>{7}));
-  for (const char* bad : {"", "a", "1-", "5-3", "1/2", "1-9/0", "1,,2", "3x"}) {
+  for (const char* bad : {"", "a", "1-", "5-3", "1/2", "1-9/0", "1,,2", "3x", "1-2000000000",
+                          "1-2147483647", "1-5000/1"}) {
     EXPECT_THAT(ErrorOf([&] { ParseSampleCounts("--samples", bad); }), HasSubstr("--samples: "))
         << bad;
   }

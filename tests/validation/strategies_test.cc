@@ -56,11 +56,39 @@ TEST(StrategiesTest, ApproachTimesAreExactOnAScriptedStart) {
   const StrategyRun run = RunStrategy(context, Strategy::kOptimalValue, start, 1, true);
   EXPECT_EQ(run.end, RunEnd::kGoal);
   EXPECT_EQ(run.kicks, 1);
-  EXPECT_NEAR(run.turn_s, 1.5, 1e-12);                  // 90 deg at 60 deg/s
-  EXPECT_NEAR(run.walk_s, (0.5 - 0.15) / 0.2, 1e-12);   // to the ball's feet
+  EXPECT_NEAR(run.turn_s, 1.5, 1e-12);                 // 90 deg at 60 deg/s
+  EXPECT_NEAR(run.walk_s, (0.5 - 0.15) / 0.2, 1e-12);  // to the ball's feet
   ASSERT_EQ(run.steps_taken.size(), 1u);
   EXPECT_EQ(run.steps_taken[0].kick_index, kForward);
-  EXPECT_NEAR(run.around_ball_s, std::abs(run.rotations_rad[0]) / (30.0 * kDegToRad), 1e-12);
+}
+
+// Without noise the forward kick rolls d = v^2 / 2a along the x axis: from the centre spot the
+// ball rests at d and 2 d (4.32 m, short of the goal line) and the third kick scores. After a
+// kick the robot stands where it kicked from, 0.15 m behind the ball it kicked, so every later
+// approach walks exactly d, straight ahead, without turning.
+TEST(StrategiesTest, RobotFollowsTheBallKickByKickWithExactTimes) {
+  const StrategiesParams p = Params(testing::MakeNoiselessSituation({}), 1);
+  const CoarsePlanner planner(p.situation);
+  const CoarseSimulator coarse(MakeScene(p.situation));
+  const StrategyRunContext context{p, planner, coarse};
+  StartPosition start;
+  start.robot = {Vec2(-1.0, 0.0), 0.0};
+  start.p_F_ball = Vec2(0.0, 0.0);
+  const StrategyRun run = RunStrategy(context, Strategy::kOptimalValue, start, 1, true);
+  const double d = 1.08 * 1.08 / (2.0 * p.situation.kicks.rolling_deceleration_mps2);
+  ASSERT_EQ(run.end, RunEnd::kGoal);
+  ASSERT_EQ(run.kicks, 3);
+  for (int k = 0; k < 3; ++k) {
+    const StrategyStep& step = run.steps_taken[static_cast<std::size_t>(k)];
+    EXPECT_EQ(step.kick_index, kForward);
+    EXPECT_EQ(step.rotation_rad, 0.0);
+    EXPECT_NEAR(step.p_F_ball.x(), k * d, 1e-9) << k;
+    EXPECT_NEAR(step.robot_at_ball.p_F.x(), k * d - 0.15, 1e-9) << k;
+    EXPECT_NEAR(step.robot_at_ball.p_F.y(), 0.0, 1e-9) << k;
+  }
+  EXPECT_EQ(run.turn_s, 0.0);
+  EXPECT_EQ(run.around_ball_s, 0.0);
+  EXPECT_NEAR(run.walk_s, (0.85 + 2.0 * d) / 0.2, 1e-9);
 }
 
 class StrategiesRunTest : public ::testing::Test {
@@ -106,8 +134,8 @@ TEST_F(StrategiesRunTest, OptimalOneKicksOnlyForward) {
   const CoarsePlanner planner(params_->situation);
   const StrategyRunContext context{*params_, planner, *coarse_};
   for (int i = 0; i < 10; ++i) {
-    const StrategyRun run = RunStrategy(context, Strategy::kOptimalOne, result_->starts[i],
-                                        RunKey(21, i), true);
+    const StrategyRun run =
+        RunStrategy(context, Strategy::kOptimalOne, result_->starts[i], RunKey(21, i), true);
     for (const StrategyStep& step : run.steps_taken) EXPECT_EQ(step.kick_index, kForward);
     EXPECT_EQ(run.kicks, one.runs[static_cast<std::size_t>(i)].kicks);  // recording changes nothing
   }
