@@ -42,7 +42,7 @@ demo: build
 
 # The paper's two experiments on the shipped defaults (docs/EXPERIMENTS.md): decision stability
 # on the full grid (about 8 min on 2 cores) and the four strategies from 10,000 starts (about
-# 30 s); experiments-quick runs small versions in seconds.
+# 25 s); experiments-quick runs small versions in seconds.
 experiments: build
 	@mkdir -p out/experiments
 	@$(BUILD)/app/foresight experiment stability --out out/experiments/stability
