@@ -30,7 +30,8 @@ std::vector<std::string> ChosenKicks(const CalibrateOptions& options,
   }
   std::string names;
   for (const std::string& name : available) names += (names.empty() ? "" : ", ") + name;
-  throw InputError("--kick: no kick '" + options.kick + "' in " + where + " (one of: " + names + ")");
+  throw InputError("--kick: no kick '" + options.kick + "' in " + where + " (one of: " + names +
+                   ")");
 }
 
 void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem::path& models,
@@ -83,7 +84,8 @@ void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem
 }
 
 void CalibrateFromCsv(const CalibrateOptions& options, CalibrationRun& run, const KickModel& base) {
-  const ObservedKicks observed = ReadObservedKicks(options.from_csv, base.rolling_deceleration_mps2);
+  const ObservedKicks observed =
+      ReadObservedKicks(options.from_csv, base.rolling_deceleration_mps2);
   run.source = options.from_csv;
   run.speeds_from_rest = observed.speeds_from_rest;
   for (const std::string& name : ChosenKicks(options, observed.kick_names, options.from_csv)) {
@@ -114,7 +116,8 @@ std::string ModelNotes(const CalibrationRun& run) {
   std::string kicks;
   for (const CalibratedKick& k : run.kicks) kicks += (kicks.empty() ? "" : ", ") + k.fit.kick;
   return "Calibrated by foresight calibrate " + run.version + " from " + run.source +
-         (run.trials_per_kick > 0 ? " (" + std::to_string(run.trials_per_kick) + " trials per kick)" : "") +
+         (run.trials_per_kick > 0 ? " (" + std::to_string(run.trials_per_kick) + " trials per kick)"
+                                  : "") +
          ", seed " + std::to_string(run.seed) + ", kicks: " + kicks + "; other values from " +
          run.base_kicks_file + ".";
 }
@@ -158,9 +161,9 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
   run.settings.seed = run.seed;
   run.settings.confidence = ParseNumber("--confidence", options.confidence, 0.5, 0.999);
   run.settings.resamples = ParseCount("--resamples", options.resamples, 100, 100000);
-  const std::filesystem::path base_file =
-      options.kicks_file.empty() ? models / "kicks" / (options.robot + ".json")
-                                 : std::filesystem::path(options.kicks_file);
+  const std::filesystem::path base_file = options.kicks_file.empty()
+                                              ? models / "kicks" / (options.robot + ".json")
+                                              : std::filesystem::path(options.kicks_file);
   run.base = LoadKickModel(base_file);
   if (run.base.robot != options.robot) {
     throw InputError(base_file.string() + ": robot: the kick model is for '" + run.base.robot +
@@ -175,12 +178,11 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
     CalibrateFromCsv(options, run, run.base);
   }
   Fit(run);
-  run.run_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.run_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   // Everything is made before anything is written.
   const std::string model = KickModelJson(run.fitted, ModelNotes(run));
-  std::vector<std::pair<std::filesystem::path, std::string>> files;
+  ReportFiles files;
   if (!options.report_dir.empty()) {
     const std::filesystem::path dir(options.report_dir);
     files.push_back({dir / "calibration.json", CalibrationJson(run).dump(2) + "\n"});
@@ -199,12 +201,11 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
   }
   WriteFileAtomically(files.back().first, files.back().second);
   files.pop_back();
-  if (!options.report_dir.empty()) CreateReportDir(options.report_dir, "--report");
-  for (const auto& [file, content] : files) WriteFileAtomically(file, content);
+  if (!options.report_dir.empty()) WriteReportFiles(options.report_dir, "--report", files);
   std::cout << text << "wrote the calibrated kick model to " << options.out_file << "\n";
   if (!options.report_dir.empty()) {
-    std::cout << "report: " << (std::filesystem::path(options.report_dir) / "calibration.html").string()
-              << "\n";
+    std::cout << "report: "
+              << (std::filesystem::path(options.report_dir) / "calibration.html").string() << "\n";
   }
   std::cout << std::flush;
   if (!std::cout) throw InputError("cannot write to standard output");

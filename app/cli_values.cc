@@ -9,6 +9,7 @@
 #include "app/report_text.h"
 #include "models/checks.h"
 #include "models/error.h"
+#include "validation/atomic_file.h"
 
 namespace foresight {
 
@@ -73,6 +74,11 @@ void CreateReportDir(const std::string& dir, const std::string& flag) {
     throw InputError(flag + ": cannot create the folder '" + dir +
                      "': " + (error ? error.message() : "a file of that name is in the way"));
   }
+}
+
+void WriteReportFiles(const std::string& dir, const std::string& flag, const ReportFiles& files) {
+  CreateReportDir(dir, flag);
+  for (const auto& [file, content] : files) WriteFileAtomically(file, content);
 }
 
 void CheckReportDir(const std::string& dir, const std::string& flag) {

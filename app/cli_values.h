@@ -4,8 +4,11 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace foresight {
 
@@ -19,6 +22,11 @@ std::function<void(int, int)> TerminalProgress(const std::string& label, const s
 
 // Creates a report folder (and its parents); InputError naming the flag and folder if it fails.
 void CreateReportDir(const std::string& dir, const std::string& flag);
+// Creates the report folder `dir` (CreateReportDir) and writes every file of it atomically.
+// Call it only once every content is computed, so a failed run leaves nothing half-written.
+using ReportFiles = std::vector<std::pair<std::filesystem::path, std::string>>;
+void WriteReportFiles(const std::string& dir, const std::string& flag, const ReportFiles& files);
+
 // Checks, without creating anything, that CreateReportDir can succeed: the folder is a folder
 // or can be made in its nearest existing ancestor, which must be writable. For long runs, so
 // that a bad flag fails before the work instead of after it.

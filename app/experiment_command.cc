@@ -16,8 +16,6 @@ namespace foresight {
 
 namespace {
 
-using Files = std::vector<std::pair<std::filesystem::path, std::string>>;
-
 std::filesystem::path ModelsFolder(const std::string& models_dir) {
   return models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
 }
@@ -27,10 +25,9 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 // Every output is computed before the first is written; each file is replaced atomically.
-void WriteReport(const std::string& out_dir, const Files& files, const std::string& text,
+void WriteReport(const std::string& out_dir, const ReportFiles& files, const std::string& text,
                  const std::string& main_file) {
-  CreateReportDir(out_dir, "--out");
-  for (const auto& [file, content] : files) WriteFileAtomically(file, content);
+  WriteReportFiles(out_dir, "--out", files);
   std::cout << text << "figures and data: " << (std::filesystem::path(out_dir) / main_file).string()
             << " and the other files in " << out_dir << "\n"
             << std::flush;
@@ -106,11 +103,11 @@ int RunStability(const StabilityOptions& o, const std::filesystem::path& models)
   run.run_time_s = SecondsSince(start);
 
   const std::filesystem::path dir(o.out_dir);
-  const Files files = {{dir / "stability.json", StabilityJson(run).dump(2) + "\n"},
-                       {dir / "stability.csv", StabilityCountsCsv(run)},
-                       {dir / "stability_positions.csv", StabilityPositionsCsv(run)},
-                       {dir / "stability.svg", StabilityPlotSvg(run)},
-                       {dir / "stability_map.svg", StabilityMapSvg(run)}};
+  const ReportFiles files = {{dir / "stability.json", StabilityJson(run).dump(2) + "\n"},
+                             {dir / "stability.csv", StabilityCountsCsv(run)},
+                             {dir / "stability_positions.csv", StabilityPositionsCsv(run)},
+                             {dir / "stability.svg", StabilityPlotSvg(run)},
+                             {dir / "stability_map.svg", StabilityMapSvg(run)}};
   WriteReport(o.out_dir, files, StabilityText(run), "stability.svg");
   return 0;
 }
@@ -136,31 +133,25 @@ int RunStrategiesExperiment(const StrategiesOptions& o, const std::filesystem::p
   const auto progress = TerminalProgress("strategies:", "runs");
   if (o.physics) {
     auto setup = LoadPhysicsSetup(params.situation, models, o.physics_file);
-    for (int k = 0; k < static_cast<int>(params.situation.kicks.kicks.size()); ++k) {
-      if (!setup->simulator->HasMotion(k)) {
-        throw InputError(run.kicks_file + ": robot '" + setup->robot.spec.name +
-                         "' has no motion for kick '" + params.situation.kicks.kicks[k].name + "'");
-      }
-    }
+    RequireAllKickMotions(*setup, run.kicks_file);
     CheckReportDir(o.out_dir, "--out");  // before the work, not after
     run.executor = "physics";
     run.physics_file = DisplayPath(setup->physics_file, models);
-    run.result = RunStrategies(params, *setup->simulator, seed, threads, progress);
+    run.result = RunStrategies(params, &*setup->simulator, seed, threads, progress);
   } else {
-    const CoarseSimulator coarse(MakeScene(params.situation));
     CheckReportDir(o.out_dir, "--out");
     run.executor = "coarse";
-    run.result = RunStrategies(params, coarse, seed, threads, progress);
+    run.result = RunStrategies(params, nullptr, seed, threads, progress);
   }
   run.summaries = SummariseStrategies(run.result);
   run.run_time_s = SecondsSince(start);
 
   const std::filesystem::path dir(o.out_dir);
-  const Files files = {{dir / "strategies.json", StrategiesJson(run).dump(2) + "\n"},
-                       {dir / "strategies_runs.csv", StrategiesRunsCsv(run)},
-                       {dir / "strategies_turns.svg", StrategiesTurnsSvg(run)},
-                       {dir / "strategies_kicks.svg", StrategiesKicksSvg(run)},
-                       {dir / "strategies_paths.svg", StrategiesPathsSvg(run)}};
+  const ReportFiles files = {{dir / "strategies.json", StrategiesJson(run).dump(2) + "\n"},
+                             {dir / "strategies_runs.csv", StrategiesRunsCsv(run)},
+                             {dir / "strategies_turns.svg", StrategiesTurnsSvg(run)},
+                             {dir / "strategies_kicks.svg", StrategiesKicksSvg(run)},
+                             {dir / "strategies_paths.svg", StrategiesPathsSvg(run)}};
   WriteReport(o.out_dir, files, StrategiesText(run), "strategies_turns.svg");
   return 0;
 }

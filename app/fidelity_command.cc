@@ -18,7 +18,8 @@ void AddFidelityCommand(CLI::App& app, FidelityOptions& options) {
   cmd->add_option("--situations", options.situations,
                   "Situation set: a file, or a name in MODELS/fidelity/ (default, quick)")
       ->capture_default_str();
-  cmd->add_option("--trials", options.trials, "Physics trials per candidate")->capture_default_str();
+  cmd->add_option("--trials", options.trials, "Physics trials per candidate")
+      ->capture_default_str();
   cmd->add_option("--samples", options.samples, "Coarse samples N (0: the evaluation file's)")
       ->capture_default_str();
   cmd->add_option("--converged", options.converged, "Samples of the converged coarse model")
@@ -54,14 +55,12 @@ int RunFidelityCommand(const FidelityOptions& options, const std::string& models
   run.run_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const std::filesystem::path dir(options.out_dir);
-  const std::vector<std::pair<std::filesystem::path, std::string>> files = {
-      {dir / "fidelity.json", FidelityJson(run).dump(2) + "\n"},
-      {dir / "fidelity_candidates.csv", FidelityCandidatesCsv(run)},
-      {dir / "fidelity_situations.csv", FidelitySituationsCsv(run)},
-      {dir / "fidelity.html", FidelityHtml(run)}};
+  const ReportFiles files = {{dir / "fidelity.json", FidelityJson(run).dump(2) + "\n"},
+                             {dir / "fidelity_candidates.csv", FidelityCandidatesCsv(run)},
+                             {dir / "fidelity_situations.csv", FidelitySituationsCsv(run)},
+                             {dir / "fidelity.html", FidelityHtml(run)}};
   const std::string text = FidelityText(run);
-  CreateReportDir(options.out_dir, "--out");
-  for (const auto& [file, content] : files) WriteFileAtomically(file, content);
+  WriteReportFiles(options.out_dir, "--out", files);
   std::cout << text << "report: " << (dir / "fidelity.html").string() << "\n" << std::flush;
   if (!std::cout) throw InputError("cannot write to standard output");
   return 0;

@@ -153,18 +153,15 @@ std::string HistogramSvg(const HistogramChart& chart) {
     svg.CloseGroup();
   }
   if (!curve.empty()) {
-    std::string d;
-    bool pen_down = false;
+    PolylinePath path;
     for (const auto& [x, y] : curve) {
       if (!std::isfinite(y) || y < 0.0) {
-        pen_down = false;
+        path.Break();
         continue;
       }
-      const double py = std::max(frame.Y(y), frame.top());
-      d += (pen_down ? " L " : (d.empty() ? "M " : " M ")) + N::Num(frame.X(x)) + " " + N::Num(py);
-      pen_down = true;
+      path.Point(frame.X(x), std::max(frame.Y(y), frame.top()));
     }
-    if (!d.empty()) svg.Path(d, kCurveStyle);
+    if (!path.empty()) svg.Path(path.data(), kCurveStyle);
   }
   for (double m : markers) {
     svg.OpenGroup("class=\"marker\"");

@@ -206,17 +206,15 @@ void DrawSeries(PlotFrame& frame, const Axis& x, const Axis& y, const LineSeries
   const auto py = [&](std::size_t i) { return frame.Y(y.ToFrame(s.y[i])); };
   svg.OpenGroup("class=\"series\"");
   svg.Title(s.name);
-  std::string d;
-  bool pen_down = false;
+  PolylinePath path;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!drawable(i)) {
-      pen_down = false;
-      continue;
+    if (drawable(i)) {
+      path.Point(px(i), py(i));
+    } else {
+      path.Break();
     }
-    d += (pen_down ? " L " : (d.empty() ? "M " : " M ")) + N::Num(px(i)) + " " + N::Num(py(i));
-    pen_down = true;
   }
-  if (!d.empty()) svg.Path(d, LineStyle(index, s.dashed));
+  if (!path.empty()) svg.Path(path.data(), LineStyle(index, s.dashed));
   const std::string marker =
       "fill:" + std::string(PaletteColour(index)) + ";stroke:#ffffff;stroke-width:0.7";
   for (std::size_t i = 0; s.markers && i < n; ++i) {

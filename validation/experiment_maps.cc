@@ -131,22 +131,19 @@ void DrawBallPath(FieldCanvas& canvas, const BallPath& path, int index, int coun
   const std::string colour(PaletteColour(index));
   svg.OpenGroup("class=\"ball-path\"");
   svg.Title(path.name);
-  std::string d;
-  bool pen_down = false;
+  PolylinePath line;
   for (const Vec2& b : path.balls_F) {
-    if (!std::isfinite(b.x()) || !std::isfinite(b.y())) {
-      pen_down = false;
-      continue;
+    if (std::isfinite(b.x()) && std::isfinite(b.y())) {
+      line.Point(canvas.X(b.x()), canvas.Y(b.y()));
+    } else {
+      line.Break();
     }
-    d += (pen_down ? " L " : (d.empty() ? "M " : " M ")) + N::Num(canvas.X(b.x())) + " " +
-         N::Num(canvas.Y(b.y()));
-    pen_down = true;
   }
-  if (!d.empty()) {  // a pale casing keeps dark or green lines visible on the green carpet
-    svg.Path(d, "fill:none;stroke:#ffffff;stroke-opacity:0.6;stroke-width:" +
-                    N::Num(width_px + 2.8) + ";stroke-linejoin:round");
-    svg.Path(d, "fill:none;stroke:" + colour + ";stroke-width:" + N::Num(width_px) +
-                    ";stroke-linejoin:round");
+  if (!line.empty()) {  // a pale casing keeps dark or green lines visible on the green carpet
+    svg.Path(line.data(), "fill:none;stroke:#ffffff;stroke-opacity:0.6;stroke-width:" +
+                              N::Num(width_px + 2.8) + ";stroke-linejoin:round");
+    svg.Path(line.data(), "fill:none;stroke:" + colour + ";stroke-width:" + N::Num(width_px) +
+                              ";stroke-linejoin:round");
   }
   bool first = true;
   for (const Vec2& b : path.balls_F) {

@@ -68,15 +68,11 @@ SituationFidelity RunOne(const FidelityCase& fc, const std::vector<double>& rota
                          int coarse_samples) {
   auto setup = LoadPhysicsSetup(fc.situation, models, settings.physics_file);
   const Situation& situation = setup->situation;
-  for (int k = 0; k < static_cast<int>(situation.kicks.kicks.size()); ++k) {
-    if (!setup->simulator->HasMotion(k)) {
-      throw InputError(fc.file.string() + ": kicks: robot '" + setup->robot.spec.name +
-                       "' has no motion for kick '" + situation.kicks.kicks[k].name + "'");
-    }
-  }
+  RequireAllKickMotions(*setup, fc.file.string());
   const CoarsePlanner planner(situation);
   CoarseActionEvaluator coarse = planner.MakeEvaluator(coarse_samples, settings.seed);
-  CoarseActionEvaluator converged = planner.MakeEvaluator(settings.converged_samples, settings.seed);
+  CoarseActionEvaluator converged =
+      planner.MakeEvaluator(settings.converged_samples, settings.seed);
   PhysicsActionEvaluator physics(situation, *setup->simulator, planner.value(),
                                  settings.physics_trials, settings.seed, settings.threads);
   SituationFidelity s;
@@ -194,8 +190,8 @@ FidelityResult RunFidelity(const FidelitySet& set, const std::filesystem::path& 
   const int total = static_cast<int>(set.cases.size());
   for (int i = 0; i < total; ++i) {
     const FidelityCase& fc = set.cases[i];
-    const int n = settings.coarse_samples > 0 ? settings.coarse_samples
-                                              : fc.situation.evaluation.samples;
+    const int n =
+        settings.coarse_samples > 0 ? settings.coarse_samples : fc.situation.evaluation.samples;
     if (i == 0) result.coarse_samples = n;
     result.situations.push_back(RunOne(fc, set.rotations_rad, models_dir, settings, n));
     result.physics_trials_run += result.situations.back().physics_trials_run;

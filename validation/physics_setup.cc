@@ -1,5 +1,7 @@
 #include "validation/physics_setup.h"
 
+#include "models/error.h"
+
 namespace foresight {
 
 std::unique_ptr<PhysicsSetup> LoadPhysicsSetup(Situation situation,
@@ -13,10 +15,21 @@ std::unique_ptr<PhysicsSetup> LoadPhysicsSetup(Situation situation,
       physics_file.empty() ? models_dir / "physics" / (s.field.name + ".json") : physics_file;
   setup->params = LoadPhysicsParams(setup->physics_file);
   setup->state = DrawnState{s.state.robot, s.state.MeanBallInField()};
-  setup->simulator.emplace(MakePhysicsScene(s.field, setup->params, &setup->robot, s.obstacles,
-                                            setup->state.p_F_ball),
-                           s.kicks);
+  setup->simulator.emplace(
+      MakePhysicsScene(s.field, setup->params, &setup->robot, s.obstacles, setup->state.p_F_ball),
+      s.kicks);
   return setup;
+}
+
+void RequireAllKickMotions(const PhysicsSetup& setup, const std::string& where) {
+  const KickModel& model = setup.situation.kicks;
+  for (int k = 0; k < static_cast<int>(model.kicks.size()); ++k) {
+    if (!setup.simulator->HasMotion(k)) {
+      throw InputError(where + ": kicks: robot '" + setup.robot.spec.name +
+                       "' has no motion for kick '" +
+                       model.kicks[static_cast<std::size_t>(k)].name + "'");
+    }
+  }
 }
 
 }  // namespace foresight

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "models/physics_params.h"
 #include "models/robot_spec.h"
@@ -31,5 +32,9 @@ struct PhysicsSetup {
 std::unique_ptr<PhysicsSetup> LoadPhysicsSetup(Situation situation,
                                                const std::filesystem::path& models_dir,
                                                const std::filesystem::path& physics_file = {});
+
+// InputError "WHERE: kicks: robot 'R' has no motion for kick 'K'" unless the robot has a motion
+// for every kick of the situation's model (for runs that may execute any of them).
+void RequireAllKickMotions(const PhysicsSetup& setup, const std::string& where);
 
 }  // namespace foresight

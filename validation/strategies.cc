@@ -4,7 +4,7 @@
 
 namespace foresight {
 
-StrategiesResult RunStrategies(const StrategiesParams& params, const OutcomeSimulator& executor,
+StrategiesResult RunStrategies(const StrategiesParams& params, const OutcomeSimulator* executor,
                                std::uint64_t seed, int threads,
                                const std::function<void(int, int)>& progress) {
   StrategiesResult result;
@@ -12,7 +12,8 @@ StrategiesResult RunStrategies(const StrategiesParams& params, const OutcomeSimu
     result.starts.push_back(DrawStart(params.situation.field, seed, i));
   }
   const CoarsePlanner planner(params.situation);
-  const StrategyRunContext context{params, planner, executor};
+  const StrategyRunContext context{params, planner,
+                                   executor != nullptr ? *executor : planner.simulator()};
   const int strategies = static_cast<int>(params.strategies.size());
   result.strategies.resize(params.strategies.size());
   for (int s = 0; s < strategies; ++s) {

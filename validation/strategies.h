@@ -22,9 +22,9 @@ struct StrategiesResult {
   std::vector<StrategyRuns> strategies;  // in the params' order
 };
 
-// `executor` carries out the kicks (the coarse simulator of the situation's scene, or physics).
-// Runs (start, strategy) pairs in parallel; progress(done, total) counts runs.
-StrategiesResult RunStrategies(const StrategiesParams& params, const OutcomeSimulator& executor,
+// `executor` carries out the kicks: physics, or nullptr for the coarse simulator of the planner
+// that decides. Runs (start, strategy) pairs in parallel; progress(done, total) counts runs.
+StrategiesResult RunStrategies(const StrategiesParams& params, const OutcomeSimulator* executor,
                                std::uint64_t seed, int threads,
                                const std::function<void(int, int)>& progress = {});
 

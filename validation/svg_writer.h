@@ -33,4 +33,22 @@ class SvgWriter {
   double width_, height_;
 };
 
+// Path data ("M x y L x y ...") of a polyline with gaps: Point() continues the line, Break()
+// lifts the pen so that no segment bridges a missing or undrawable point.
+class PolylinePath {
+ public:
+  void Point(double x, double y) {
+    d_ += (pen_down_ ? " L " : (d_.empty() ? "M " : " M ")) + SvgWriter::Num(x) + " " +
+          SvgWriter::Num(y);
+    pen_down_ = true;
+  }
+  void Break() { pen_down_ = false; }
+  bool empty() const { return d_.empty(); }
+  const std::string& data() const { return d_; }
+
+ private:
+  std::string d_;
+  bool pen_down_ = false;
+};
+
 }  // namespace foresight

@@ -11,30 +11,21 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/svg_inspect.h"
 #include "tests/support/test_situations.h"
 #include "validation/chart_axes.h"
 
 namespace foresight {
 namespace {
 
+using testing::Attr;
+using testing::Count;
+
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 FieldSpec Spl() {
   return LoadFieldSpec(testing::ModelsDir() / "fields" / "spl.json");
-}
-
-int Count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (auto pos = text.find(what); pos != std::string::npos; pos = text.find(what, pos + 1)) ++n;
-  return n;
-}
-
-double Attr(const std::string& svg, std::size_t pos, const std::string& name) {
-  const std::size_t end = svg.find('>', pos);
-  const std::size_t at = svg.find(" " + name + "=\"", pos);
-  EXPECT_LT(at, end) << name;
-  return at < end ? std::stod(svg.substr(at + name.size() + 3)) : kNaN;
 }
 
 // The positions of <g class="klass"> groups, in document order.

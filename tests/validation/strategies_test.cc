@@ -96,7 +96,7 @@ class StrategiesRunTest : public ::testing::Test {
   static void SetUpTestSuite() {
     params_ = new StrategiesParams(Params(testing::MakeSituation(testing::Uncertain({})), 40));
     coarse_ = new CoarseSimulator(MakeScene(params_->situation));
-    result_ = new StrategiesResult(RunStrategies(*params_, *coarse_, 21, 2));
+    result_ = new StrategiesResult(RunStrategies(*params_, nullptr, 21, 2));
   }
   static void TearDownTestSuite() {
     delete result_;
@@ -169,7 +169,8 @@ TEST_F(StrategiesRunTest, SummaryCountsAddUp) {
 }
 
 TEST_F(StrategiesRunTest, SameSeedSameRunsWithOneThread) {
-  const StrategiesResult one = RunStrategies(*params_, *coarse_, 21, 1);
+  const StrategiesResult one =
+      RunStrategies(*params_, coarse_, 21, 1);  // the same coarse model, given
   for (std::size_t s = 0; s < one.strategies.size(); ++s) {
     for (std::size_t i = 0; i < one.strategies[s].runs.size(); ++i) {
       const StrategyRun &a = one.strategies[s].runs[i], &b = result_->strategies[s].runs[i];
@@ -186,7 +187,7 @@ TEST(StrategiesPhysicsTest, PhysicsExecutesTheKicks) {
   p.strategies = {Strategy::kFast};
   p.max_steps = 2;
   const auto setup = LoadPhysicsSetup(p.situation, testing::ModelsDir());
-  const StrategiesResult r = RunStrategies(p, *setup->simulator, 3, 2);
+  const StrategiesResult r = RunStrategies(p, &*setup->simulator, 3, 2);
   const StrategyRun& run = r.strategies[0].example;
   ASSERT_FALSE(run.steps_taken.empty());
   const StrategyStep& first = run.steps_taken[0];
