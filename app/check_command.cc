@@ -32,8 +32,7 @@ int RunCheckCommand(const CheckOptions& options, const std::string& models_dir) 
       RunChecks(suite, models, threads, [&](const CheckResult& r) {
         failed += !r.passed;
         std::cout << (r.passed ? "PASS " : "FAIL ") << r.name << " (" << r.kind << ", "
-                  << static_cast<int>(r.time_s * 10.0 + 0.5) / 10.0 << " s): " << r.detail
-                  << "\n"
+                  << static_cast<int>(r.time_s * 10.0 + 0.5) / 10.0 << " s): " << r.detail << "\n"
                   << std::flush;
       });
   if (!options.junit_file.empty()) {

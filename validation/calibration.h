@@ -57,7 +57,7 @@ struct KickCalibration {
   CircularFit direction;
   std::vector<double> direction_unwrapped_rad;  // around the circular mean
   NormalityTest direction_normality;
-  std::vector<QqPoint> direction_qq;  // radians
+  std::vector<QqPoint> direction_qq;            // radians
   std::optional<DecelerationFit> deceleration;  // this kick's balls alone
 };
 

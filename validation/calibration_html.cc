@@ -65,24 +65,28 @@ void KickFigures(HtmlReport& html, const CalibrationRun& run, const CalibratedKi
   qq.points = c.speed_qq;
   RoseChart rose;
   rose.title = c.kick + ": launch directions";
-  for (const KickObservation& o : kick.observations) rose.angles_rad.push_back(o.launch_direction_rad);
+  for (const KickObservation& o : kick.observations)
+    rose.angles_rad.push_back(o.launch_direction_rad);
   rose.fitted_mean_rad = c.direction.mean_rad;
   rose.fitted_sd_rad = c.direction.sd_rad;
   HistogramChart directions;
   directions.title = c.kick + ": launch direction";
   directions.x_label = "direction in the robot frame (deg)";
   for (double a : c.direction_unwrapped_rad) directions.values.push_back(a * kRadToDeg);
-  directions.density = NormalDensity(c.direction.mean_rad * kRadToDeg, c.direction.sd_rad * kRadToDeg);
+  directions.density =
+      NormalDensity(c.direction.mean_rad * kRadToDeg, c.direction.sd_rad * kRadToDeg);
   directions.density_label = "N(" + Fixed(c.direction.mean_rad * kRadToDeg, 1) + ", " +
                              Fixed(c.direction.sd_rad * kRadToDeg, 1) + "^2)";
   if (base) {
     directions.markers.push_back(run.base.kicks[*base].direction_rad * kRadToDeg);
     directions.markers_label = "committed alpha";
   }
-  html.FigureRow({{HistogramSvg(speeds), "Launch speeds with the fitted normal density."},
-                  {QqSvg(qq), "Sorted speeds against normal quantiles; a straight line is normal."}});
-  html.FigureRow({{RoseSvg(rose), "Directions (up: straight ahead, left: +90 deg); wedge: mean +- sd."},
-                  {HistogramSvg(directions), "Directions unwrapped around the circular mean."}});
+  html.FigureRow(
+      {{HistogramSvg(speeds), "Launch speeds with the fitted normal density."},
+       {QqSvg(qq), "Sorted speeds against normal quantiles; a straight line is normal."}});
+  html.FigureRow(
+      {{RoseSvg(rose), "Directions (up: straight ahead, left: +90 deg); wedge: mean +- sd."},
+       {HistogramSvg(directions), "Directions unwrapped around the circular mean."}});
 }
 
 void DecelerationSection(HtmlReport& html, const CalibrationRun& run) {
@@ -98,10 +102,11 @@ void DecelerationSection(HtmlReport& html, const CalibrationRun& run) {
     if (kick.fit.deceleration) row(kick.fit.kick, *kick.fit.deceleration);
   }
   html.Table({"balls of", "a (m/s^2) [interval]", "kicks", "points", "residual sd (m/s)"}, rows);
-  std::string text = "Least squares of speed over time while the ball rolls freely (one "
-                     "intercept per kick, a shared slope), interval by a bootstrap over kicks. "
-                     "The committed model says " +
-                     Fixed(run.base.rolling_deceleration_mps2, 4) + " m/s^2";
+  std::string text =
+      "Least squares of speed over time while the ball rolls freely (one "
+      "intercept per kick, a shared slope), interval by a bootstrap over kicks. "
+      "The committed model says " +
+      Fixed(run.base.rolling_deceleration_mps2, 4) + " m/s^2";
   if (run.carpet_deceleration_mps2) {
     text += "; the physics carpet is set to " + Fixed(*run.carpet_deceleration_mps2, 4) +
             " m/s^2 (varied per kick and per patch)";
@@ -127,8 +132,8 @@ std::string CalibrationHtml(const CalibrationRun& run) {
                   {"run time", Fixed(run.run_time_s, 1) + " s"}});
   for (const std::string& w : CalibrationWarnings(run)) html.Warning(w);
   for (const CalibratedKick& kick : run.kicks) {
-    html.Heading(2, "Kick: " + kick.fit.kick + " (" + std::to_string(kick.fit.observations) +
-                        " kicks)");
+    html.Heading(
+        2, "Kick: " + kick.fit.kick + " (" + std::to_string(kick.fit.observations) + " kicks)");
     KickTable(html, run, kick);
     KickFigures(html, run, kick);
   }

@@ -71,9 +71,9 @@ std::vector<std::string> CalibrationWarnings(const CalibrationRun& run) {
       warnings.push_back(
           c.kick + ": the normal model does not fit the launch speeds (Anderson-Darling A*2 = " +
           Fixed(c.speed_normality.anderson_darling, 3) +
-          ", p = " + Fixed(c.speed_normality.anderson_darling_p, 4) +
-          ", skewness " + Fixed(c.speed.skewness, 2) + ", excess kurtosis " +
-          Fixed(c.speed.excess_kurtosis, 2) + "); sigma_v summarises the spread only roughly");
+          ", p = " + Fixed(c.speed_normality.anderson_darling_p, 4) + ", skewness " +
+          Fixed(c.speed.skewness, 2) + ", excess kurtosis " + Fixed(c.speed.excess_kurtosis, 2) +
+          "); sigma_v summarises the spread only roughly");
     }
     if (c.direction_normality.Rejected(level)) {
       warnings.push_back(
@@ -92,9 +92,10 @@ std::vector<std::string> CalibrationWarnings(const CalibrationRun& run) {
                        Fixed(run.base.rolling_deceleration_mps2, 4) + " m/s^2");
   }
   if (!run.deceleration) {
-    warnings.push_back("the rolling deceleration could not be fitted (no trajectories and no "
-                       "rows with both launch and rest); the model keeps " +
-                       Fixed(run.base.rolling_deceleration_mps2, 4) + " m/s^2");
+    warnings.push_back(
+        "the rolling deceleration could not be fitted (no trajectories and no "
+        "rows with both launch and rest); the model keeps " +
+        Fixed(run.base.rolling_deceleration_mps2, 4) + " m/s^2");
   }
   return warnings;
 }
@@ -178,8 +179,8 @@ std::string CalibrationObservationsCsv(const CalibrationRun& run) {
       if (i < kick.draws.size()) {
         const TrialDraw& d = kick.draws[i];
         out += Fixed(d.placement_dx_m, 6) + "," + Fixed(d.placement_dy_m, 6) + "," +
-               Fixed(d.placement_dtheta_rad * kRadToDeg, 4) + "," + Fixed(d.speed_factor, 6) +
-               "," + Fixed(d.carpet_factor, 6) + "\n";
+               Fixed(d.placement_dtheta_rad * kRadToDeg, 4) + "," + Fixed(d.speed_factor, 6) + "," +
+               Fixed(d.carpet_factor, 6) + "\n";
       } else {
         out += ",,,,\n";
       }

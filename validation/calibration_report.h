@@ -3,11 +3,10 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "models/kick_model.h"
 #include "physics/trial.h"
@@ -33,7 +32,7 @@ struct CalibrationRun {
   std::uint64_t seed = 0;
   CalibrationSettings settings;
   std::optional<double> carpet_deceleration_mps2;  // physics: the carpet's truth
-  int speeds_from_rest = 0;                         // CSV: speeds derived from rest positions
+  int speeds_from_rest = 0;                        // CSV: speeds derived from rest positions
   KickModel base;
   KickModel fitted;
   std::vector<CalibratedKick> kicks;

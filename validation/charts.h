@@ -27,7 +27,7 @@ struct HistogramChart {
   // A fitted probability density in the values' units; drawn as a curve scaled to counts
   // (n * bin width * pdf). Empty: no curve.
   std::function<double(double)> density;
-  std::string density_label;  // legend text of the curve, e.g. "N(0.78, 0.06^2)"
+  std::string density_label;    // legend text of the curve, e.g. "N(0.78, 0.06^2)"
   std::vector<double> markers;  // vertical dashed lines (e.g. the committed model's value)
   std::string markers_label;
   ChartSize size;
@@ -36,7 +36,7 @@ std::string HistogramSvg(const HistogramChart& chart);
 
 struct QqChart {
   std::string title;
-  std::string unit;  // e.g. "m/s"
+  std::string unit;             // e.g. "m/s"
   std::vector<QqPoint> points;  // theoretical vs observed, same units
   ChartSize size;
 };
@@ -56,10 +56,10 @@ std::string RoseSvg(const RoseChart& chart);
 struct ScatterPoint {
   double x = 0.0;
   double y = 0.0;
-  double y_low = 0.0;   // interval on y (equal to y: none)
+  double y_low = 0.0;  // interval on y (equal to y: none)
   double y_high = 0.0;
-  std::string label;   // tooltip (<title>)
-  int series = 0;      // colour index
+  std::string label;  // tooltip (<title>)
+  int series = 0;     // colour index
 };
 struct ScatterChart {
   std::string title;
@@ -67,7 +67,7 @@ struct ScatterChart {
   std::string y_label;
   std::vector<ScatterPoint> points;
   std::vector<std::string> series_names;  // legend, indexed by ScatterPoint::series
-  bool identity_line = true;  // draw y = x over the shared range
+  bool identity_line = true;              // draw y = x over the shared range
   ChartSize size{480.0, 400.0};
 };
 std::string ScatterSvg(const ScatterChart& chart);

@@ -104,7 +104,8 @@ CheckResult NoTunnelling(const CheckSpec& spec, const std::filesystem::path& mod
   const bool ok = touched && penetration <= spec.number.at("max_penetration_m");
   return Result(ok, "ball at " + Fixed(v, 1) + " m/s into the " + target + ": deepest " +
                         Fixed(penetration * 1000.0, 1) + " mm into it (limit " +
-                        Fixed(spec.number.at("max_penetration_m") * 1000.0, 1) + " mm), first contact " +
+                        Fixed(spec.number.at("max_penetration_m") * 1000.0, 1) +
+                        " mm), first contact " +
                         std::string(ContactName(trial.outcome.first_contact)));
 }
 
@@ -118,7 +119,7 @@ std::unique_ptr<PhysicsSetup> CalibrationSetup(const CheckSpec& spec,
 }
 
 std::vector<TrialResult> KickTrials(const PhysicsSetup& setup, int kick, int trials, int threads,
-                                   std::uint64_t seed) {
+                                    std::uint64_t seed) {
   KickTrialsRequest request;
   request.state = setup.state;
   request.kick_index = kick;
@@ -168,17 +169,18 @@ CheckResult CalibrationBand(const CheckSpec& spec, const std::filesystem::path& 
     const auto within = [&](double fitted, double committed) {
       return std::abs(fitted - committed) <= band * std::abs(committed);
     };
-    const bool kick_ok =
-        within(c.speed.mean, m.speed_mps) && within(c.speed.sd, m.sigma_speed_mps) &&
-        within(c.direction.sd_rad, m.sigma_direction_rad) &&
-        std::abs(WrapAngle(c.direction.mean_rad - m.direction_rad)) * kRadToDeg <=
-            spec.number.at("band_deg");
+    const bool kick_ok = within(c.speed.mean, m.speed_mps) &&
+                         within(c.speed.sd, m.sigma_speed_mps) &&
+                         within(c.direction.sd_rad, m.sigma_direction_rad) &&
+                         std::abs(WrapAngle(c.direction.mean_rad - m.direction_rad)) * kRadToDeg <=
+                             spec.number.at("band_deg");
     ok = ok && kick_ok;
     detail += (detail.empty() ? "" : "; ") + m.name + (kick_ok ? " ok" : " OUT") + " (v0 " +
               Fixed(c.speed.mean, 3) + "/" + Fixed(m.speed_mps, 3) + ", sigma_v " +
               Fixed(c.speed.sd, 3) + "/" + Fixed(m.sigma_speed_mps, 3) + ", alpha " +
-              Fixed(c.direction.mean_rad * kRadToDeg, 1) + "/" + Fixed(m.direction_rad * kRadToDeg, 1) +
-              ", sigma_alpha " + Fixed(c.direction.sd_rad * kRadToDeg, 2) + "/" +
+              Fixed(c.direction.mean_rad * kRadToDeg, 1) + "/" +
+              Fixed(m.direction_rad * kRadToDeg, 1) + ", sigma_alpha " +
+              Fixed(c.direction.sd_rad * kRadToDeg, 2) + "/" +
               Fixed(m.sigma_direction_rad * kRadToDeg, 2) + ")";
   }
   return Result(ok, "fitted/committed: " + detail);

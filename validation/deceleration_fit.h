@@ -25,7 +25,7 @@ struct DecelerationFit {
   int trials = 0;   // trials with at least 3 samples spanning time
   int samples = 0;  // points used
   double deceleration_mps2 = 0.0;
-  Interval ci_mps2;             // cluster bootstrap over trials
+  Interval ci_mps2;              // cluster bootstrap over trials
   double residual_sd_mps = 0.0;  // of the pooled fit
 };
 

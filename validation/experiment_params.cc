@@ -182,8 +182,7 @@ std::vector<int> ParseSampleCounts(const std::string& field, const std::string& 
       for (int n = lo; n <= hi; n += step) counts.push_back(n);
     }
     if (counts.size() > static_cast<std::size_t>(kMaxSampless)) {
-      throw InputError(field + ": more than " + std::to_string(kMaxSampless) +
-                       " sample counts");
+      throw InputError(field + ": more than " + std::to_string(kMaxSampless) + " sample counts");
     }
     begin = comma + 1;
   }

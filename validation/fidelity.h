@@ -34,7 +34,7 @@ struct FidelitySettings {
   std::uint64_t seed = 1;
   int threads = 0;
   double confidence = 0.95;
-  std::filesystem::path physics_file;  // empty: MODELS/physics/<field>.json
+  std::filesystem::path physics_file;      // empty: MODELS/physics/<field>.json
   std::function<void(int, int)> progress;  // (situations done, total)
 };
 

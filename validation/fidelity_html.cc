@@ -4,8 +4,8 @@
 
 #include "models/geometry.h"
 #include "validation/charts.h"
-#include "validation/field_svg.h"
 #include "validation/fidelity_report.h"
+#include "validation/field_svg.h"
 #include "validation/html_report.h"
 #include "validation/report_format.h"
 
@@ -34,21 +34,22 @@ void SummaryTables(HtmlReport& html, const FidelityResult& r) {
   html.Table({"class", "n", "tau-b coarse", "tau-b conv.", "top-1 coarse", "top-1 conv.",
               "regret coarse", "regret conv."},
              rows);
-  html.Paragraph("Means with 95 % intervals (t intervals for tau and regret, Wilson intervals "
-                 "for the top-1 shares). 'coarse' is the coarse model with the robot's N "
-                 "samples; 'converged' the coarse model with many samples: the gap between them "
-                 "is sampling error, the gap between 'converged' and perfect agreement is the "
-                 "model's error.");
+  html.Paragraph(
+      "Means with 95 % intervals (t intervals for tau and regret, Wilson intervals "
+      "for the top-1 shares). 'coarse' is the coarse model with the robot's N "
+      "samples; 'converged' the coarse model with many samples: the gap between them "
+      "is sampling error, the gap between 'converged' and perfect agreement is the "
+      "model's error.");
   std::vector<std::vector<std::string>> decisions;
   for (const StrategySummary& s : r.strategies) {
-    decisions.push_back({std::string(StrategyName(s.strategy)), MeanText(s.agreement, 2),
-                         MeanText(s.regret, 3)});
+    decisions.push_back(
+        {std::string(StrategyName(s.strategy)), MeanText(s.agreement, 2), MeanText(s.regret, 3)});
   }
   html.Heading(3, "Decisions");
-  html.Table({"strategy", "coarse decision = physics decision", "physics utility lost"},
-             decisions);
-  html.Paragraph("Each strategy decides over the candidate actions twice: with the coarse "
-                 "model's evaluations and with physics evaluations.");
+  html.Table({"strategy", "coarse decision = physics decision", "physics utility lost"}, decisions);
+  html.Paragraph(
+      "Each strategy decides over the candidate actions twice: with the coarse "
+      "model's evaluations and with physics evaluations.");
 }
 
 void Distributions(HtmlReport& html, const FidelityResult& r) {
@@ -59,12 +60,12 @@ void Distributions(HtmlReport& html, const FidelityResult& r) {
   scatter.series_names = {"coarse N samples", "coarse converged"};
   for (const SituationFidelity& s : r.situations) {
     for (const CandidateScore& c : s.candidates) {
-      const std::string label = s.situation.name + ": " +
-                                ActionText(s.situation, c.kick_index, c.rotation_rad);
-      scatter.points.push_back({c.coarse.utility, c.physics.utility, c.physics_ci.low,
-                                c.physics_ci.high, label, 0});
-      scatter.points.push_back({c.converged.utility, c.physics.utility, c.physics_ci.low,
-                                c.physics_ci.high, label, 1});
+      const std::string label =
+          s.situation.name + ": " + ActionText(s.situation, c.kick_index, c.rotation_rad);
+      scatter.points.push_back(
+          {c.coarse.utility, c.physics.utility, c.physics_ci.low, c.physics_ci.high, label, 0});
+      scatter.points.push_back(
+          {c.converged.utility, c.physics.utility, c.physics_ci.low, c.physics_ci.high, label, 1});
     }
   }
   HistogramChart tau;
@@ -108,15 +109,17 @@ std::string SituationDrawing(const SituationFidelity& s) {
 
 void WorstSituations(HtmlReport& html, const FidelityResult& r) {
   html.Heading(2, "The worst situations");
-  html.Paragraph("Ordered by regret, then tau. Filled blue: the coarse model's samples of its "
-                 "chosen action; orange rings: where physics put the ball for the same action; "
-                 "arrow: the robot's heading after its turn.");
+  html.Paragraph(
+      "Ordered by regret, then tau. Filled blue: the coarse model's samples of its "
+      "chosen action; orange rings: where physics put the ball for the same action; "
+      "arrow: the robot's heading after its turn.");
   const std::vector<int> order = WorstFirst(r);
   for (std::size_t i = 0; i < order.size() && i < 10; ++i) {
     const SituationFidelity& s = r.situations[order[i]];
     const CandidateScore& choice = s.candidates[s.coarse.choice];
     const CandidateScore& best = s.candidates[s.physics_best];
-    html.Heading(3, std::to_string(i + 1) + ". " + s.situation.name + " (" + s.situation_class + ")");
+    html.Heading(3,
+                 std::to_string(i + 1) + ". " + s.situation.name + " (" + s.situation_class + ")");
     html.Figure(SituationDrawing(s),
                 "coarse choice " + ActionText(s.situation, choice.kick_index, choice.rotation_rad) +
                     " (physics utility " + Fixed(choice.physics.utility, 3) + "), physics best " +
@@ -137,16 +140,18 @@ std::string FidelityHtml(const FidelityRun& run) {
     if (!rotations.empty()) rotations += ' ';
     rotations += Fixed(rot * kRadToDeg, 0);
   }
-  html.KeyValues({{"situations", run.set_name + " (" + std::to_string(r.situations.size()) + ", " + run.set_file + ")"},
-                  {"candidate rotations (deg)", rotations},
-                  {"coarse samples N", std::to_string(r.coarse_samples)},
-                  {"converged samples", std::to_string(run.settings.converged_samples)},
-                  {"physics trials M", std::to_string(run.settings.physics_trials) + " per candidate (" +
-                                           std::to_string(r.physics_trials_run) + " in all)"},
-                  {"seed", std::to_string(run.settings.seed)},
-                  {"physics", run.physics_file},
-                  {"version", run.version},
-                  {"run time", Fixed(run.run_time_s, 1) + " s"}});
+  html.KeyValues(
+      {{"situations",
+        run.set_name + " (" + std::to_string(r.situations.size()) + ", " + run.set_file + ")"},
+       {"candidate rotations (deg)", rotations},
+       {"coarse samples N", std::to_string(r.coarse_samples)},
+       {"converged samples", std::to_string(run.settings.converged_samples)},
+       {"physics trials M", std::to_string(run.settings.physics_trials) + " per candidate (" +
+                                std::to_string(r.physics_trials_run) + " in all)"},
+       {"seed", std::to_string(run.settings.seed)},
+       {"physics", run.physics_file},
+       {"version", run.version},
+       {"run time", Fixed(run.run_time_s, 1) + " s"}});
   html.Heading(2, "Agreement");
   SummaryTables(html, r);
   Distributions(html, r);

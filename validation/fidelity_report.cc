@@ -1,6 +1,5 @@
 #include "validation/fidelity_report.h"
 
-
 #include "models/geometry.h"
 #include "validation/report_format.h"
 
@@ -19,9 +18,9 @@ Json MeanJson(const MeanWithInterval& m) {
 }
 
 Json EvaluationJson(const ActionEvaluation& e) {
-  return Json{{"utility", e.utility},        {"trimmed_utility", e.trimmed_utility},
-              {"p_opp_goal", e.p_opp_goal},  {"p_own_goal", e.p_own_goal},
-              {"p_out", e.p_out},            {"p_infield", e.p_infield}};
+  return Json{{"utility", e.utility},       {"trimmed_utility", e.trimmed_utility},
+              {"p_opp_goal", e.p_opp_goal}, {"p_own_goal", e.p_own_goal},
+              {"p_out", e.p_out},           {"p_infield", e.p_infield}};
 }
 
 Json ChoiceJson(const SituationFidelity& s, const ChoiceMetrics& m) {
@@ -56,12 +55,13 @@ Json SituationJson(const SituationFidelity& s) {
   }
   j["candidates"] = Json::array();
   for (const CandidateScore& c : s.candidates) {
-    j["candidates"].push_back(Json{{"kick", KickName(s.situation, c.kick_index)},
-                                   {"rotation_deg", c.rotation_rad * kRadToDeg},
-                                   {"coarse", EvaluationJson(c.coarse)},
-                                   {"converged", EvaluationJson(c.converged)},
-                                   {"physics", EvaluationJson(c.physics)},
-                                   {"physics_ci", Json::array({c.physics_ci.low, c.physics_ci.high})}});
+    j["candidates"].push_back(
+        Json{{"kick", KickName(s.situation, c.kick_index)},
+             {"rotation_deg", c.rotation_rad * kRadToDeg},
+             {"coarse", EvaluationJson(c.coarse)},
+             {"converged", EvaluationJson(c.converged)},
+             {"physics", EvaluationJson(c.physics)},
+             {"physics_ci", Json::array({c.physics_ci.low, c.physics_ci.high})}});
   }
   return j;
 }
@@ -75,13 +75,15 @@ std::string FidelityText(const FidelityRun& run) {
                     ", converged N = " + std::to_string(run.settings.converged_samples) +
                     ", physics M = " + std::to_string(run.settings.physics_trials) + " (" +
                     std::to_string(r.physics_trials_run) + " trials)\n";
-  out += "  class              n   tau_b coarse  tau_b conv.  top-1 coarse  top-1 conv.  regret coarse  regret conv.\n";
+  out +=
+      "  class              n   tau_b coarse  tau_b conv.  top-1 coarse  top-1 conv.  regret "
+      "coarse  regret conv.\n";
   for (const ClassSummary& c : r.classes) {
     char line[256];
-    std::snprintf(line, sizeof line, "  %-18s %2d   %+11.3f  %+11.3f  %12.2f  %11.2f  %13.3f  %12.3f\n",
-                  c.situation_class.c_str(), c.situations, c.tau_coarse.mean, c.tau_converged.mean,
-                  c.top1_coarse.mean, c.top1_converged.mean, c.regret_coarse.mean,
-                  c.regret_converged.mean);
+    std::snprintf(
+        line, sizeof line, "  %-18s %2d   %+11.3f  %+11.3f  %12.2f  %11.2f  %13.3f  %12.3f\n",
+        c.situation_class.c_str(), c.situations, c.tau_coarse.mean, c.tau_converged.mean,
+        c.top1_coarse.mean, c.top1_converged.mean, c.regret_coarse.mean, c.regret_converged.mean);
     out += line;
   }
   out += "  decisions over the candidates, coarse = physics:";
@@ -138,12 +140,13 @@ std::string FidelityCandidatesCsv(const FidelityRun& run) {
       "physics_ci_low,physics_ci_high,coarse_p_goal,physics_p_goal,coarse_p_out,physics_p_out\n";
   for (const SituationFidelity& s : run.result.situations) {
     for (const CandidateScore& c : s.candidates) {
-      out += s.situation.name + "," + s.situation_class + "," + KickName(s.situation, c.kick_index) +
-             "," + Fixed(c.rotation_rad * kRadToDeg, 2) + "," + Fixed(c.coarse.utility, 6) + "," +
-             Fixed(c.converged.utility, 6) + "," + Fixed(c.physics.utility, 6) + "," +
-             Fixed(c.physics_ci.low, 6) + "," + Fixed(c.physics_ci.high, 6) + "," +
-             Fixed(c.coarse.p_opp_goal, 4) + "," + Fixed(c.physics.p_opp_goal, 4) + "," +
-             Fixed(c.coarse.p_out, 4) + "," + Fixed(c.physics.p_out, 4) + "\n";
+      out += s.situation.name + "," + s.situation_class + "," +
+             KickName(s.situation, c.kick_index) + "," + Fixed(c.rotation_rad * kRadToDeg, 2) +
+             "," + Fixed(c.coarse.utility, 6) + "," + Fixed(c.converged.utility, 6) + "," +
+             Fixed(c.physics.utility, 6) + "," + Fixed(c.physics_ci.low, 6) + "," +
+             Fixed(c.physics_ci.high, 6) + "," + Fixed(c.coarse.p_opp_goal, 4) + "," +
+             Fixed(c.physics.p_opp_goal, 4) + "," + Fixed(c.coarse.p_out, 4) + "," +
+             Fixed(c.physics.p_out, 4) + "\n";
     }
   }
   return out;

@@ -96,7 +96,9 @@ std::string FigureHtml(std::string_view svg, std::string_view caption) {
 
 HtmlReport::HtmlReport(std::string title) : title_(std::move(title)) {}
 
-std::string HtmlReport::Escape(std::string_view text) { return SvgWriter::Escape(text); }
+std::string HtmlReport::Escape(std::string_view text) {
+  return SvgWriter::Escape(text);
+}
 
 void HtmlReport::Heading(int level, std::string_view text) {
   const std::string tag = std::string("h") + std::to_string(std::clamp(level, 2, 4));

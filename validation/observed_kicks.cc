@@ -13,11 +13,11 @@ namespace foresight {
 namespace {
 
 const std::vector<std::string> kColumns = {
-    "kick",     "robot_x_m",        "robot_y_m",          "robot_theta_deg",
-    "ball_x_m", "ball_y_m",         "launch_speed_mps",   "launch_direction_deg",
+    "kick",     "robot_x_m", "robot_y_m",        "robot_theta_deg",
+    "ball_x_m", "ball_y_m",  "launch_speed_mps", "launch_direction_deg",
     "rest_x_m", "rest_y_m"};
-const std::vector<std::string> kRequired = {"kick",      "robot_x_m", "robot_y_m",
-                                            "robot_theta_deg", "ball_x_m", "ball_y_m"};
+const std::vector<std::string> kRequired = {"kick",     "robot_x_m", "robot_y_m", "robot_theta_deg",
+                                            "ball_x_m", "ball_y_m"};
 
 std::vector<std::string> SplitCsvLine(const std::string& line) {
   std::vector<std::string> cells;
@@ -35,8 +35,7 @@ std::vector<std::string> SplitCsvLine(const std::string& line) {
 // The cells of one row by column name, with errors that say where.
 class Row {
  public:
-  Row(const std::map<std::string, int>& columns, std::vector<std::string> cells,
-      std::string where)
+  Row(const std::map<std::string, int>& columns, std::vector<std::string> cells, std::string where)
       : columns_(columns), cells_(std::move(cells)), where_(std::move(where)) {}
 
   std::string Text(const std::string& column) const {
@@ -109,7 +108,8 @@ KickObservation ObservationOfRow(const Row& row, double deceleration, bool& spee
     throw InputError(row.where() + "launch_speed_mps: the row has neither a launch nor a rest");
   }
   if (speed && *speed < 0.0) {
-    throw InputError(row.where() + "launch_speed_mps: must be >= 0, got " + row.Text("launch_speed_mps"));
+    throw InputError(row.where() + "launch_speed_mps: must be >= 0, got " +
+                     row.Text("launch_speed_mps"));
   }
   KickObservation k;
   speed_from_rest = !speed;

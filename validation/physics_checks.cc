@@ -75,7 +75,6 @@ CheckSpec ReadCheck(const JsonObject& item, const std::string& where) {
   return spec;
 }
 
-
 std::string Seconds(double s) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.3f", s);
@@ -110,8 +109,8 @@ CheckSuite LoadCheckSuite(const std::filesystem::path& file) {
   return suite;
 }
 
-std::vector<CheckResult> RunChecks(const CheckSuite& suite,
-                                   const std::filesystem::path& models_dir, int threads,
+std::vector<CheckResult> RunChecks(const CheckSuite& suite, const std::filesystem::path& models_dir,
+                                   int threads,
                                    const std::function<void(const CheckResult&)>& on_result) {
   std::vector<CheckResult> results;
   for (const CheckSpec& spec : suite.checks) {

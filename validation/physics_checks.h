@@ -47,7 +47,7 @@ struct CheckSpec {
   std::string kind;
   std::map<std::string, std::string> text;
   std::map<std::string, double> number;
-  std::string where;           // "FILE: checks[i]" for messages
+  std::string where;          // "FILE: checks[i]" for messages
   std::filesystem::path dir;  // the spec file's folder (file references are relative to it)
 };
 

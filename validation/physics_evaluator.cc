@@ -54,7 +54,8 @@ ActionEvaluation PhysicsActionEvaluator::Evaluate(int kick_index, double rotatio
 }
 
 std::vector<Outcome> PhysicsActionEvaluator::Outcomes(int kick_index, double rotation_rad) const {
-  const auto it = done_.find({kick_index < 0 ? -1 : kick_index, kick_index < 0 ? 0.0 : rotation_rad});
+  const auto it =
+      done_.find({kick_index < 0 ? -1 : kick_index, kick_index < 0 ? 0.0 : rotation_rad});
   return it != done_.end() ? it->second.outcomes : Run(kick_index, rotation_rad).outcomes;
 }
 

@@ -73,7 +73,6 @@ double SortedQuantile(const std::vector<double>& sorted, double q) {
   return sorted[below] + fraction * (sorted[above] - sorted[below]);
 }
 
-
 // An index uniform on [0, n), from resample r's own stream.
 std::size_t DrawIndex(RandomStream& stream, std::size_t n) {
   return std::min(n - 1, static_cast<std::size_t>(stream.NextUniform() * static_cast<double>(n)));

@@ -26,17 +26,17 @@ struct Interval {
 // --- distribution functions ---------------------------------------------------------------
 double NormalCdf(double z);
 double NormalPdf(double z);
-double NormalQuantile(double p);                     // Wichura, AS 241 (1988), |err| < 1e-15
-double StudentTQuantile(double p, double dof);       // dof > 0
-double ChiSquareQuantile(double p, double dof);      // dof > 0
+double NormalQuantile(double p);                 // Wichura, AS 241 (1988), |err| < 1e-15
+double StudentTQuantile(double p, double dof);   // dof > 0
+double ChiSquareQuantile(double p, double dof);  // dof > 0
 
 // --- normal model (speeds) ------------------------------------------------------------------
 struct NormalFit {
   int n = 0;
   double mean = 0.0;
-  double sd = 0.0;  // sample standard deviation (n - 1)
-  Interval mean_ci;  // exact: mean +- t_{n-1} sd / sqrt(n)
-  Interval sd_ci;    // exact: sd * sqrt((n-1) / chi2_{n-1}) at both tails
+  double sd = 0.0;               // sample standard deviation (n - 1)
+  Interval mean_ci;              // exact: mean +- t_{n-1} sd / sqrt(n)
+  Interval sd_ci;                // exact: sd * sqrt((n-1) / chi2_{n-1}) at both tails
   double skewness = 0.0;         // sample skewness g1
   double excess_kurtosis = 0.0;  // sample excess kurtosis g2
 };
@@ -45,11 +45,11 @@ NormalFit FitNormal(std::span<const double> x, double confidence);  // n >= 3
 // --- circular model (directions) ------------------------------------------------------------
 struct CircularFit {
   int n = 0;
-  double mean_rad = 0.0;           // circular mean atan2(sum sin, sum cos), in (-pi, pi]
-  double resultant_length = 0.0;   // mean resultant length R in [0, 1]
-  double sd_rad = 0.0;             // circular standard deviation sqrt(-2 ln R)
-  Interval mean_ci_rad;            // bootstrap; expressed around mean_rad (may leave (-pi, pi])
-  Interval sd_ci_rad;              // bootstrap
+  double mean_rad = 0.0;          // circular mean atan2(sum sin, sum cos), in (-pi, pi]
+  double resultant_length = 0.0;  // mean resultant length R in [0, 1]
+  double sd_rad = 0.0;            // circular standard deviation sqrt(-2 ln R)
+  Interval mean_ci_rad;           // bootstrap; expressed around mean_rad (may leave (-pi, pi])
+  Interval sd_ci_rad;             // bootstrap
 };
 CircularFit FitCircular(std::span<const double> angles_rad, double confidence, int resamples,
                         std::uint64_t seed);  // n >= 3

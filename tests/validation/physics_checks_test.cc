@@ -39,8 +39,7 @@ std::string Roll(const std::string& max_error) {
 }
 
 TEST(PhysicsChecksTest, ShippedSpecLoads) {
-  const CheckSuite suite =
-      LoadCheckSuite(testing::ModelsDir() / "check_specs" / "default.json");
+  const CheckSuite suite = LoadCheckSuite(testing::ModelsDir() / "check_specs" / "default.json");
   EXPECT_EQ(suite.name, "default");
   EXPECT_EQ(suite.checks.size(), 14u);
 }
@@ -52,9 +51,15 @@ TEST(PhysicsChecksTest, BadSpecsNameFileAndField) {
     const char* expected;
   } cases[] = {
       {"kind.json", R"({"name": "a", "kind": "levitate"})", "unknown kind 'levitate'"},
-      {"key.json", R"({"name": "a", "kind": "no_tunnelling", "field": "spl", "target": "post", "speed_mps": 5, "max_penetration_m": 0.01, "colour": "red"})", "colour"},
-      {"target.json", R"({"name": "a", "kind": "no_tunnelling", "field": "spl", "target": "goalie", "speed_mps": 5, "max_penetration_m": 0.01})", "goalie"},
-      {"trials.json", R"({"name": "a", "kind": "kick_direction", "robot": "nao", "kick": "forward", "kicks": "nao", "trials": 2.5, "max_error_deg": 5})", "trials"},
+      {"key.json",
+       R"({"name": "a", "kind": "no_tunnelling", "field": "spl", "target": "post", "speed_mps": 5, "max_penetration_m": 0.01, "colour": "red"})",
+       "colour"},
+      {"target.json",
+       R"({"name": "a", "kind": "no_tunnelling", "field": "spl", "target": "goalie", "speed_mps": 5, "max_penetration_m": 0.01})",
+       "goalie"},
+      {"trials.json",
+       R"({"name": "a", "kind": "kick_direction", "robot": "nao", "kick": "forward", "kicks": "nao", "trials": 2.5, "max_error_deg": 5})",
+       "trials"},
       {"missing.json", R"({"name": "a", "kind": "free_roll", "field": "spl"})", "speed_mps"},
       {"twice.json", Roll("0.02") + "," + Roll("0.02"), "duplicate check name 'roll'"},
       {"empty.json", "", "checks"},
@@ -69,22 +74,20 @@ TEST(PhysicsChecksTest, BadSpecsNameFileAndField) {
 }
 
 TEST(PhysicsChecksTest, FreeRollPassesWithinItsToleranceAndFailsWithoutOne) {
-  const CheckSuite suite =
-      LoadCheckSuite(Spec("roll.json", Roll("0.02")));
+  const CheckSuite suite = LoadCheckSuite(Spec("roll.json", Roll("0.02")));
   const std::vector<CheckResult> pass = RunChecks(suite, testing::ModelsDir(), 1, {});
   ASSERT_EQ(pass.size(), 1u);
   EXPECT_TRUE(pass[0].passed) << pass[0].detail;
   EXPECT_THAT(pass[0].detail, HasSubstr("v^2/2a"));
   // No physics engine rolls exactly v^2/2a: a zero tolerance must fail.
-  const CheckSuite strict =
-      LoadCheckSuite(Spec("strict.json", Roll("0")));
+  const CheckSuite strict = LoadCheckSuite(Spec("strict.json", Roll("0")));
   EXPECT_FALSE(RunChecks(strict, testing::ModelsDir(), 1, {})[0].passed);
 }
 
 TEST(PhysicsChecksTest, FastBallDoesNotTunnelThroughThePost) {
-  const CheckSuite suite = LoadCheckSuite(
-      Spec("post.json",
-           R"({"name": "post", "kind": "no_tunnelling", "field": "spl", "target": "post", "speed_mps": 10, "max_penetration_m": 0.01})"));
+  const CheckSuite suite = LoadCheckSuite(Spec(
+      "post.json",
+      R"({"name": "post", "kind": "no_tunnelling", "field": "spl", "target": "post", "speed_mps": 10, "max_penetration_m": 0.01})"));
   const CheckResult r = RunChecks(suite, testing::ModelsDir(), 1, {})[0];
   EXPECT_TRUE(r.passed) << r.detail;
   EXPECT_THAT(r.detail, HasSubstr("first contact post"));
