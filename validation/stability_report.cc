@@ -133,8 +133,8 @@ std::string StabilityPositionsCsv(const StabilityRun& run) {
   }
   csv += "\n";
   for (std::size_t p = 0; p < r.grid.positions_F.size(); ++p) {
-    csv += Fixed(r.grid.positions_F[p].x(), 3) + "," + Fixed(r.grid.positions_F[p].y(), 3);
-    for (const std::vector<double>& m : means) csv += "," + Fixed(m[p], 4);
+    csv += Format("%.3f,%.3f", r.grid.positions_F[p].x(), r.grid.positions_F[p].y());
+    for (const std::vector<double>& m : means) csv += Format(",%.4f", m[p]);
     csv += "\n";
   }
   return csv;
