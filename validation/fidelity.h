@@ -86,7 +86,7 @@ struct ClassSummary {
   MeanWithInterval top1_coarse, top1_converged;  // shares, Wilson intervals
 };
 
-struct StrategySummary {
+struct StrategyAgreementSummary {
   Strategy strategy = Strategy::kOptimalAll;
   MeanWithInterval agreement;  // share, Wilson interval
   MeanWithInterval regret;
@@ -95,7 +95,7 @@ struct StrategySummary {
 struct FidelityResult {
   std::vector<SituationFidelity> situations;
   std::vector<ClassSummary> classes;  // "all" first, then by class in order of appearance
-  std::vector<StrategySummary> strategies;
+  std::vector<StrategyAgreementSummary> strategies;
   int coarse_samples = 0;
   long long physics_trials_run = 0;
 };

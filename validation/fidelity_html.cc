@@ -41,7 +41,7 @@ void SummaryTables(HtmlReport& html, const FidelityResult& r) {
       "is sampling error, the gap between 'converged' and perfect agreement is the "
       "model's error.");
   std::vector<std::vector<std::string>> decisions;
-  for (const StrategySummary& s : r.strategies) {
+  for (const StrategyAgreementSummary& s : r.strategies) {
     decisions.push_back(
         {std::string(StrategyName(s.strategy)), MeanText(s.agreement, 2), MeanText(s.regret, 3)});
   }

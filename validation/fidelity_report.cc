@@ -87,7 +87,7 @@ std::string FidelityText(const FidelityRun& run) {
     out += line;
   }
   out += "  decisions over the candidates, coarse = physics:";
-  for (const StrategySummary& s : r.strategies) {
+  for (const StrategyAgreementSummary& s : r.strategies) {
     out += ' ';
     out += StrategyName(s.strategy);
     out += ' ' + Fixed(s.agreement.mean * 100.0, 0) + " %";
@@ -124,7 +124,7 @@ Json FidelityJson(const FidelityRun& run) {
                                 {"regret_converged", MeanJson(c.regret_converged)}});
   }
   j["strategies"] = Json::array();
-  for (const StrategySummary& s : r.strategies) {
+  for (const StrategyAgreementSummary& s : r.strategies) {
     j["strategies"].push_back(Json{{"strategy", StrategyName(s.strategy)},
                                    {"agreement", MeanJson(s.agreement)},
                                    {"regret", MeanJson(s.regret)}});

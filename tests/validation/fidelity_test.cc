@@ -216,7 +216,7 @@ TEST(FidelityTest, TinyRunMetricsAreInRange) {
   EXPECT_EQ(r.classes[1].situations, 1);
   EXPECT_EQ(r.classes[2].situation_class, "obstacles");
   ASSERT_EQ(r.strategies.size(), 5u);
-  for (const StrategySummary& st : r.strategies) {
+  for (const StrategyAgreementSummary& st : r.strategies) {
     EXPECT_EQ(st.agreement.n, 2);
     EXPECT_GE(st.agreement.mean, 0.0);
     EXPECT_LE(st.agreement.mean, 1.0);
