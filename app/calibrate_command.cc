@@ -5,7 +5,7 @@
 
 #include "app/cli_values.h"
 #include "app/report_text.h"
-#include "models/error.h"
+#include "common/error.h"
 #include "models/model_paths.h"
 #include "validation/atomic_file.h"
 #include "validation/calibration_report.h"

@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "app/cli_values.h"
-#include "models/error.h"
+#include "common/error.h"
 #include "models/model_paths.h"
 #include "validation/atomic_file.h"
 #include "validation/physics_checks.h"

@@ -7,8 +7,8 @@
 #include <filesystem>
 
 #include "app/report_text.h"
-#include "models/checks.h"
-#include "models/error.h"
+#include "common/checks.h"
+#include "common/error.h"
 #include "validation/atomic_file.h"
 
 namespace foresight {

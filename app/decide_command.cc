@@ -4,8 +4,8 @@
 
 #include "app/cli_values.h"
 #include "app/decision_output.h"
-#include "models/checks.h"
-#include "models/error.h"
+#include "common/checks.h"
+#include "common/error.h"
 #include "models/model_paths.h"
 #include "validation/atomic_file.h"
 

@@ -9,7 +9,7 @@
 #include "app/experiment_command.h"
 #include "app/fidelity_command.h"
 #include "app/simulate_command.h"
-#include "models/error.h"
+#include "common/error.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 
 #include "app/cli_values.h"
 #include "app/simulation_output.h"
-#include "models/error.h"
+#include "common/error.h"
 #include "models/model_paths.h"
 #include "validation/atomic_file.h"
 #include "validation/physics_setup.h"

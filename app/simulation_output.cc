@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "app/report_text.h"
-#include "models/geometry.h"
+#include "common/geometry.h"
 #include "validation/field_svg.h"
 
 namespace foresight {

@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "models/kick_model.h"
-#include "models/random.h"
+#include "common/random.h"
 #include "physics/physics_simulator.h"
 #include "tests/physics/physics_test_scenes.h"
 #include "tests/support/test_situations.h"

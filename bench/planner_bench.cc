@@ -5,7 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include "planner/coarse_planner.h"
-#include "models/random.h"
+#include "common/random.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {

@@ -1,9 +1,9 @@
 #include "models/evaluation_params.h"
 
-#include "models/checks.h"
-#include "models/error.h"
-#include "models/geometry.h"
-#include "models/json_reader.h"
+#include "common/checks.h"
+#include "common/error.h"
+#include "common/geometry.h"
+#include "common/json_reader.h"
 
 namespace foresight {
 

@@ -8,7 +8,7 @@
 #pragma once
 
 #include "models/field_spec.h"
-#include "models/geometry.h"
+#include "common/geometry.h"
 #include "models/outcome.h"
 
 namespace foresight {

@@ -1,8 +1,8 @@
 #include "models/field_spec.h"
 
-#include "models/checks.h"
-#include "models/error.h"
-#include "models/json_reader.h"
+#include "common/checks.h"
+#include "common/error.h"
+#include "common/json_reader.h"
 
 namespace foresight {
 

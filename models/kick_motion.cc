@@ -14,9 +14,9 @@
 #include <cassert>
 #include <cmath>
 
-#include "models/checks.h"
-#include "models/error.h"
-#include "models/json_reader.h"
+#include "common/checks.h"
+#include "common/error.h"
+#include "common/json_reader.h"
 
 namespace foresight {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "models/geometry.h"
+#include "common/geometry.h"
 
 namespace foresight {
 

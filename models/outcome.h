@@ -11,7 +11,7 @@
 #include <string_view>
 
 #include "models/field_spec.h"
-#include "models/geometry.h"
+#include "common/geometry.h"
 #include "models/situation.h"
 
 namespace foresight {

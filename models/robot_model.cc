@@ -22,8 +22,8 @@
 #include <mutex>
 #include <sstream>
 
-#include "models/checks.h"
-#include "models/error.h"
+#include "common/checks.h"
+#include "common/error.h"
 
 namespace foresight {
 namespace {
@@ -66,7 +66,7 @@ class ScopedConsoleCapture {
   throw InputError(file.string() + ": " + problem);
 }
 
-// Runs a check from models/checks.h ("field: must be ..., got V") and prefixes file and element.
+// Runs a check from common/checks.h ("field: must be ..., got V") and prefixes file and element.
 template <typename Check>
 void Require(const std::filesystem::path& file, const std::string& element, Check&& check) {
   try {

@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include "models/checks.h"
-#include "models/error.h"
-#include "models/json_reader.h"
+#include "common/checks.h"
+#include "common/error.h"
+#include "common/json_reader.h"
 #include "models/model_paths.h"
 
 namespace foresight {

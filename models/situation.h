@@ -9,7 +9,7 @@
 
 #include "models/evaluation_params.h"
 #include "models/field_spec.h"
-#include "models/geometry.h"
+#include "common/geometry.h"
 #include "models/kick_model.h"
 
 namespace foresight {

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "models/random.h"
+#include "common/random.h"
 
 namespace foresight {
 

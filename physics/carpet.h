@@ -11,7 +11,7 @@
 // carpet (a fixed layout drawn from the patch seed). DESIGN.md, "The physics".
 #pragma once
 
-#include "models/geometry.h"
+#include "common/geometry.h"
 #include "models/physics_params.h"
 
 class btRigidBody;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "models/random.h"
+#include "common/random.h"
 #include "physics/bullet_convert.h"
 #include "physics/phases.h"
 

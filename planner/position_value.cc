@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "models/fast_math.h"
+#include "common/fast_math.h"
 
 namespace foresight {
 

@@ -11,7 +11,7 @@
 
 #include "models/evaluation_params.h"
 #include "models/field_spec.h"
-#include "models/geometry.h"
+#include "common/geometry.h"
 
 namespace foresight {
 

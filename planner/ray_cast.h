@@ -8,7 +8,7 @@
 
 #include <limits>
 
-#include "models/geometry.h"
+#include "common/geometry.h"
 
 namespace foresight {
 

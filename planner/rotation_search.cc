@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "models/geometry.h"
+#include "common/geometry.h"
 
 namespace foresight {
 

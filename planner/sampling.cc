@@ -1,6 +1,6 @@
 #include "planner/sampling.h"
 
-#include "models/random.h"
+#include "common/random.h"
 
 namespace foresight {
 

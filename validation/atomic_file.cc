@@ -5,7 +5,7 @@
 #include <fstream>
 #include <string>
 
-#include "models/error.h"
+#include "common/error.h"
 
 namespace foresight {
 

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
-#include "models/error.h"
-#include "models/geometry.h"
-#include "models/random.h"
+#include "common/error.h"
+#include "common/geometry.h"
+#include "common/random.h"
 
 namespace foresight {
 

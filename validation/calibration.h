@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "models/kick_model.h"
-#include "models/random.h"
+#include "common/random.h"
 #include "physics/trial.h"
 #include "validation/deceleration_fit.h"
 #include "validation/statistics.h"

@@ -3,7 +3,7 @@
 // direction histogram; then the rolling deceleration.
 #include <cmath>
 
-#include "models/geometry.h"
+#include "common/geometry.h"
 #include "validation/calibration_report.h"
 #include "validation/charts.h"
 #include "validation/html_report.h"

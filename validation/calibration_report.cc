@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "models/geometry.h"
+#include "common/geometry.h"
 #include "validation/report_format.h"
 
 namespace foresight {

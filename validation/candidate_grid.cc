@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "models/geometry.h"
+#include "common/geometry.h"
 
 namespace foresight {
 

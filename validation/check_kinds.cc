@@ -1,9 +1,9 @@
 // The kinds of `foresight check` (validation/physics_checks.h says what each expects).
 #include <cmath>
 
-#include "models/error.h"
+#include "common/error.h"
 #include "models/field_spec.h"
-#include "models/geometry.h"
+#include "common/geometry.h"
 #include "models/model_paths.h"
 #include "physics/physics_scene.h"
 #include "physics/trial.h"

@@ -22,7 +22,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "models/random.h"
+#include "common/random.h"
 
 namespace foresight {
 namespace {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "models/field_spec.h"
-#include "models/geometry.h"
+#include "common/geometry.h"
 
 namespace foresight {
 

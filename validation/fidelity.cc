@@ -5,7 +5,7 @@
 #include <limits>
 #include <numeric>
 
-#include "models/error.h"
+#include "common/error.h"
 #include "planner/coarse_planner.h"
 #include "validation/candidate_grid.h"
 #include "validation/physics_evaluator.h"

@@ -2,7 +2,7 @@
 // strategies' decision agreement, the coarse-vs-physics utility scatter, the distributions of
 // tau and regret, and the worst ten situations drawn on the field.
 
-#include "models/geometry.h"
+#include "common/geometry.h"
 #include "validation/charts.h"
 #include "validation/fidelity_report.h"
 #include "validation/field_svg.h"

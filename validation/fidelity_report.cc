@@ -1,6 +1,6 @@
 #include "validation/fidelity_report.h"
 
-#include "models/geometry.h"
+#include "common/geometry.h"
 #include "validation/report_format.h"
 
 namespace foresight {

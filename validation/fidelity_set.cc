@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include "models/error.h"
-#include "models/geometry.h"
-#include "models/json_reader.h"
+#include "common/error.h"
+#include "common/geometry.h"
+#include "common/json_reader.h"
 
 namespace foresight {
 

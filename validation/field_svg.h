@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "models/field_spec.h"
-#include "models/geometry.h"
+#include "common/geometry.h"
 #include "validation/svg_writer.h"
 
 namespace foresight {

@@ -5,8 +5,8 @@
 #include <optional>
 #include <sstream>
 
-#include "models/error.h"
-#include "models/geometry.h"
+#include "common/error.h"
+#include "common/geometry.h"
 
 namespace foresight {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "models/error.h"
-#include "models/json_reader.h"
+#include "common/error.h"
+#include "common/json_reader.h"
 #include "validation/svg_writer.h"
 
 namespace foresight {

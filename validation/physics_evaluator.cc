@@ -1,6 +1,6 @@
 #include "validation/physics_evaluator.h"
 
-#include "physics/parallel_for.h"
+#include "common/parallel_for.h"
 
 namespace foresight {
 

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "models/random.h"
-#include "physics/parallel_for.h"
+#include "common/random.h"
+#include "common/parallel_for.h"
 
 namespace foresight {
 

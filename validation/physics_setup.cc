@@ -1,6 +1,6 @@
 #include "validation/physics_setup.h"
 
-#include "models/error.h"
+#include "common/error.h"
 
 namespace foresight {
 

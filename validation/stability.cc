@@ -4,10 +4,10 @@
 #include <cmath>
 #include <utility>
 
-#include "models/checks.h"
-#include "models/error.h"
-#include "models/random.h"
-#include "physics/parallel_for.h"
+#include "common/checks.h"
+#include "common/error.h"
+#include "common/random.h"
+#include "common/parallel_for.h"
 #include "planner/coarse_planner.h"
 
 namespace foresight {

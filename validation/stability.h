@@ -17,7 +17,7 @@
 #include <functional>
 #include <vector>
 
-#include "models/geometry.h"
+#include "common/geometry.h"
 #include "validation/experiment_params.h"
 
 namespace foresight {

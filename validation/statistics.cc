@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-#include "models/random.h"
+#include "common/random.h"
 
 namespace foresight {
 namespace {

@@ -1,6 +1,6 @@
 #include "validation/strategies.h"
 
-#include "physics/parallel_for.h"
+#include "common/parallel_for.h"
 
 namespace foresight {
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "models/random.h"
+#include "common/random.h"
 #include "planner/sampling.h"
 
 namespace foresight {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "models/geometry.h"
+#include "common/geometry.h"
 #include "models/kick_model.h"
 #include "tests/app/run_foresight.h"
 

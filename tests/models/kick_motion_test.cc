@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "models/geometry.h"
+#include "common/geometry.h"
 #include "tests/models/model_test_util.h"
 #include "tests/support/test_situations.h"
 

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "models/error.h"
+#include "common/error.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight::testing {

@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "models/checks.h"
-#include "models/geometry.h"
+#include "common/checks.h"
+#include "common/geometry.h"
 #include "tests/models/model_test_util.h"
 #include "tests/support/test_situations.h"
 

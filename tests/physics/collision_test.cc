@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "models/geometry.h"
+#include "common/geometry.h"
 #include "physics/robot_kinematics.h"
 #include "physics/trial.h"
 #include "tests/physics/physics_test_scenes.h"

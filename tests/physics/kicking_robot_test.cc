@@ -6,7 +6,7 @@
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <gtest/gtest.h>
 
-#include "models/random.h"
+#include "common/random.h"
 #include "physics/bullet_convert.h"
 #include "physics/robot_kinematics.h"
 #include "tests/physics/physics_test_scenes.h"

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "models/random.h"
+#include "common/random.h"
 #include "planner/coarse_planner.h"
 #include "tests/support/test_situations.h"
 

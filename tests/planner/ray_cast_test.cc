@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "models/random.h"
+#include "common/random.h"
 
 namespace foresight {
 namespace {

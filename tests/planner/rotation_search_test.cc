@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "planner/coarse_planner.h"
-#include "models/random.h"
+#include "common/random.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "models/situation.h"
-#include "models/random.h"
+#include "common/random.h"
 
 namespace foresight::testing {
 

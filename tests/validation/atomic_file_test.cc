@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "models/error.h"
+#include "common/error.h"
 
 namespace foresight {
 namespace {

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "models/error.h"
-#include "models/geometry.h"
-#include "models/random.h"
+#include "common/error.h"
+#include "common/geometry.h"
+#include "common/random.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "models/random.h"
+#include "common/random.h"
 
 namespace foresight {
 namespace {

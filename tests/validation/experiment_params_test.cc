@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "models/error.h"
+#include "common/error.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "models/error.h"
-#include "models/geometry.h"
+#include "common/error.h"
+#include "common/geometry.h"
 #include "planner/coarse_planner.h"
 #include "tests/support/test_situations.h"
 #include "validation/candidate_grid.h"

@@ -12,8 +12,8 @@
 #include <numbers>
 #include <string>
 
-#include "models/error.h"
-#include "models/geometry.h"
+#include "common/error.h"
+#include "common/geometry.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "models/error.h"
+#include "common/error.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "models/random.h"
+#include "common/random.h"
 
 namespace foresight {
 namespace {

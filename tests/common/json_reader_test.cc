@@ -1,4 +1,4 @@
-#include "models/json_reader.h"
+#include "common/json_reader.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "models/error.h"
+#include "common/error.h"
 #include "tests/models/model_test_util.h"
 #include "tests/support/test_situations.h"
 

@@ -1,6 +1,6 @@
 // The project's random streams and normal sampler: moments, tails, independence of streams,
 // and exact reproducibility.
-#include "models/random.h"
+#include "common/random.h"
 
 #include <gtest/gtest.h>
 

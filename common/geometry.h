@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "models/fast_math.h"
+#include "common/fast_math.h"
 
 namespace foresight {
 

@@ -1,9 +1,9 @@
-#include "models/random.h"
+#include "common/random.h"
 
 #include <array>
 #include <cmath>
 
-#include "models/fast_math.h"
+#include "common/fast_math.h"
 
 namespace foresight {
 

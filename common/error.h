@@ -15,7 +15,7 @@ class InputError : public std::runtime_error {
   explicit InputError(const std::string& message) : std::runtime_error(message) {}
 };
 
-// Runs `check` (a Validate() or a check from models/checks.h, whose messages say "field: ...")
+// Runs `check` (a Validate() or a check from common/checks.h, whose messages say "field: ...")
 // and prefixes `file` to the message of any InputError it throws: "FILE: field: ...".
 template <typename Check>
 void WithFile(const std::string& file, Check&& check) {

@@ -1,11 +1,11 @@
-#include "models/checks.h"
+#include "common/checks.h"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
-#include "models/error.h"
+#include "common/error.h"
 
 namespace foresight {
 

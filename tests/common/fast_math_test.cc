@@ -1,5 +1,5 @@
 // The project's own sin, cos and exp against the standard library.
-#include "models/fast_math.h"
+#include "common/fast_math.h"
 
 #include <gtest/gtest.h>
 

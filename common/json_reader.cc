@@ -1,11 +1,11 @@
-#include "models/json_reader.h"
+#include "common/json_reader.h"
 
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
-#include "models/checks.h"
-#include "models/error.h"
+#include "common/checks.h"
+#include "common/error.h"
 
 namespace foresight {
 
