@@ -20,7 +20,8 @@
 #include "common/random.h"
 #include "physics/trial.h"
 #include "validation/deceleration_fit.h"
-#include "validation/statistics.h"
+#include "stats/goodness_of_fit.h"
+#include "stats/statistics.h"
 
 namespace foresight {
 

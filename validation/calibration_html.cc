@@ -5,6 +5,7 @@
 
 #include "common/geometry.h"
 #include "validation/calibration_report.h"
+#include "stats/distributions.h"
 #include "validation/charts.h"
 #include "validation/html_report.h"
 #include "validation/report_format.h"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "validation/statistics.h"
+#include "stats/statistics.h"
 
 namespace foresight {
 

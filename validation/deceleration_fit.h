@@ -12,7 +12,7 @@
 #include <span>
 #include <vector>
 
-#include "validation/statistics.h"
+#include "stats/statistics.h"
 
 namespace foresight {
 

@@ -23,7 +23,7 @@
 
 #include "planner/decision.h"
 #include "validation/fidelity_set.h"
-#include "validation/statistics.h"
+#include "stats/statistics.h"
 
 namespace foresight {
 

@@ -11,7 +11,7 @@
 
 #include <vector>
 
-#include "validation/statistics.h"
+#include "stats/statistics.h"
 #include "validation/strategies.h"
 
 namespace foresight {

@@ -1,5 +1,6 @@
-// Statistics for calibration and fidelity: distribution functions, fits with confidence
-// intervals, a goodness-of-fit test valid with estimated parameters, rank agreement.
+// Statistics for calibration and fidelity: fits with confidence intervals, quantiles and
+// intervals, rank agreement. Distribution functions are in stats/distributions.h, normality
+// tests in stats/goodness_of_fit.h; the conventions below hold for all three.
 //
 // Conventions: `confidence` is the two-sided level in (0, 1), e.g. 0.95. Bootstrap intervals are
 // percentile intervals over `resamples` resamples drawn from RandomStream(StreamKey(seed, r,
@@ -22,13 +23,6 @@ struct Interval {
   double high = 0.0;
   bool Contains(double x) const { return low <= x && x <= high; }
 };
-
-// --- distribution functions ---------------------------------------------------------------
-double NormalCdf(double z);
-double NormalPdf(double z);
-double NormalQuantile(double p);                 // Wichura, AS 241 (1988), |err| < 1e-15
-double StudentTQuantile(double p, double dof);   // dof > 0
-double ChiSquareQuantile(double p, double dof);  // dof > 0
 
 // --- normal model (speeds) ------------------------------------------------------------------
 struct NormalFit {
@@ -56,21 +50,6 @@ CircularFit FitCircular(std::span<const double> angles_rad, double confidence, i
 
 // The angles unwrapped to mean_rad +- pi, for histograms and normal tests of directions.
 std::vector<double> UnwrapAround(std::span<const double> angles_rad, double centre_rad);
-
-// --- goodness of fit ------------------------------------------------------------------------
-// Anderson-Darling test of normality with mean and sd estimated from the same data (Stephens'
-// case 3): A*^2 = A^2 (1 + 0.75/n + 2.25/n^2), p-value from D'Agostino & Stephens (1986),
-// Goodness-of-Fit Techniques, table 4.9. Also the Lilliefors (1967) Kolmogorov-Smirnov
-// statistic with the Dallal & Wilkinson (1986) p-value approximation.
-struct NormalityTest {
-  int n = 0;
-  double anderson_darling = 0.0;  // A*^2
-  double anderson_darling_p = 0.0;
-  double lilliefors_d = 0.0;
-  double lilliefors_p = 0.0;  // capped to [0, 0.1]..1 as the approximation allows
-  bool Rejected(double level) const { return anderson_darling_p < level; }
-};
-NormalityTest TestNormality(std::span<const double> x);  // n >= 8
 
 // Normal QQ plot: sorted sample against N(mean, sd) quantiles at Blom's plotting positions
 // (i - 3/8) / (n + 1/4), both in the data's units.

@@ -1,7 +1,10 @@
 // Statistics: distribution functions against reference values (computed to 30 digits with
 // mpmath from the defining integrals), fits and intervals on fixed-seed samples, the normality
 // tests on a tiny hand-checkable sample, rank agreement on hand-counted cases, and input checks.
-#include "validation/statistics.h"
+#include "stats/statistics.h"
+
+#include "stats/distributions.h"
+#include "stats/goodness_of_fit.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Normality tests of statistics.h with mean and sd estimated from the same data.
+// Normality tests of stats/goodness_of_fit.h with mean and sd estimated from the same data.
 //
 // Formulas and sources (w_i = (x_(i) - mean) / s sorted, s with divisor n - 1, z_i = Phi(w_i)):
 //   Anderson-Darling   A^2 = -n - (1/n) sum_i (2i - 1) [ln z_i + ln(1 - z_{n+1-i})]
@@ -25,6 +25,8 @@
 //                      0.01 of the true p up to 0.1, within 0.04 up to 0.3 and within 0.1 up to
 //                      0.5; above that it is indicative only (for n = 8 it passes 1 before the
 //                      true p reaches 0.9).
+#include "stats/goodness_of_fit.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -32,7 +34,7 @@
 #include <string>
 #include <vector>
 
-#include "validation/statistics.h"
+#include "stats/distributions.h"
 
 namespace foresight {
 namespace {

@@ -1,4 +1,4 @@
-// Fits with confidence intervals, plotting positions and rank agreement of statistics.h.
+// Fits with confidence intervals, plotting positions and rank agreement of stats/statistics.h.
 //
 // Formulas and sources:
 //   Moments          mean, sd with divisor n - 1; skewness g1 = m3 / m2^(3/2) and excess
@@ -22,7 +22,7 @@
 //   Kendall tau-b    (C - D) / sqrt((n0 - n1)(n0 - n2)) (Kendall, Biometrika 33 (1945) 239-251);
 //                    n0 - n1 is simply the number of pairs not tied in a, so the pairs are counted
 //                    directly in O(n^2), which is ample for scorings of a few thousand items.
-#include "validation/statistics.h"
+#include "stats/statistics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "common/random.h"
+#include "stats/distributions.h"
 
 namespace foresight {
 namespace {

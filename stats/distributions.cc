@@ -1,4 +1,4 @@
-// Distribution functions of statistics.h: the standard normal, and the quantiles of Student's t
+// Distribution functions of stats/distributions.h: the standard normal, and the quantiles of Student's t
 // and chi-square, all written here so every platform gives the same numbers.
 //
 // Formulas and sources:
@@ -25,13 +25,13 @@
 //   bisecting whenever a Newton step would leave it.
 // Accuracy against 30-digit references (mpmath): relative error below 1e-12 for dof up to 1e4;
 // for t it grows to about 4e-11 at dof = 1e6, where the log-gamma terms of the prefactor cancel.
+#include "stats/distributions.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
-
-#include "validation/statistics.h"
 
 namespace foresight {
 namespace {
