@@ -7,7 +7,7 @@
 #include "app/report_text.h"
 #include "common/error.h"
 #include "models/model_paths.h"
-#include "validation/atomic_file.h"
+#include "report/atomic_file.h"
 #include "validation/calibration_report.h"
 #include "validation/observed_kicks.h"
 #include "validation/physics_runs.h"

@@ -5,7 +5,7 @@
 #include "app/cli_values.h"
 #include "common/error.h"
 #include "models/model_paths.h"
-#include "validation/atomic_file.h"
+#include "report/atomic_file.h"
 #include "validation/physics_checks.h"
 
 namespace foresight {

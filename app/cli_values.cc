@@ -9,7 +9,7 @@
 #include "app/report_text.h"
 #include "common/checks.h"
 #include "common/error.h"
-#include "validation/atomic_file.h"
+#include "report/atomic_file.h"
 
 namespace foresight {
 

@@ -7,7 +7,7 @@
 #include "common/checks.h"
 #include "common/error.h"
 #include "models/model_paths.h"
-#include "validation/atomic_file.h"
+#include "report/atomic_file.h"
 
 namespace foresight {
 

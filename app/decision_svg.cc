@@ -4,7 +4,7 @@
 
 #include "app/decision_output.h"
 #include "app/report_text.h"
-#include "validation/field_svg.h"
+#include "report/field_svg.h"
 
 namespace foresight {
 

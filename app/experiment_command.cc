@@ -7,7 +7,7 @@
 #include "app/report_text.h"
 #include "common/error.h"
 #include "models/model_paths.h"
-#include "validation/atomic_file.h"
+#include "report/atomic_file.h"
 #include "validation/physics_setup.h"
 #include "validation/stability_report.h"
 #include "validation/strategies_report.h"

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <string>
 
-#include "validation/report_format.h"  // Format
+#include "report/report_format.h"  // Format
 
 namespace foresight {
 

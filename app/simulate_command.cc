@@ -6,7 +6,7 @@
 #include "app/simulation_output.h"
 #include "common/error.h"
 #include "models/model_paths.h"
-#include "validation/atomic_file.h"
+#include "report/atomic_file.h"
 #include "validation/physics_setup.h"
 
 namespace foresight {

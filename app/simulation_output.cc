@@ -4,7 +4,7 @@
 
 #include "app/report_text.h"
 #include "common/geometry.h"
-#include "validation/field_svg.h"
+#include "report/field_svg.h"
 
 namespace foresight {
 

@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "common/quantile.h"
 #include "common/random.h"
 #include "stats/distributions.h"
 
@@ -62,16 +63,6 @@ void CheckConfidence(const char* function, double confidence) {
 
 void CheckResamples(const char* function, int resamples) {
   if (resamples < 2) Fail(function, "need at least 2 resamples, got " + std::to_string(resamples));
-}
-
-// Type-7 quantile of sorted values; equal neighbours (also infinite ones) are returned as they are.
-double SortedQuantile(const std::vector<double>& sorted, double q) {
-  const double position = q * static_cast<double>(sorted.size() - 1);
-  const std::size_t below = static_cast<std::size_t>(std::floor(position));
-  const std::size_t above = std::min(below + 1, sorted.size() - 1);
-  const double fraction = position - static_cast<double>(below);
-  if (fraction == 0.0 || sorted[below] == sorted[above]) return sorted[below];
-  return sorted[below] + fraction * (sorted[above] - sorted[below]);
 }
 
 // An index uniform on [0, n), from resample r's own stream.
@@ -106,7 +97,7 @@ double CircularSd(double resultant_length) {
 Interval PercentileInterval(std::vector<double> values, double confidence) {
   std::sort(values.begin(), values.end());
   const double alpha = 1.0 - confidence;
-  return {SortedQuantile(values, 0.5 * alpha), SortedQuantile(values, 1.0 - 0.5 * alpha)};
+  return {QuantileOfSorted(values, 0.5 * alpha), QuantileOfSorted(values, 1.0 - 0.5 * alpha)};
 }
 
 NormalFit FitNormal(std::span<const double> x, double confidence) {

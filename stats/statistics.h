@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "common/quantile.h"
+
 namespace foresight {
 
 inline constexpr std::uint64_t kBootstrapDomain = 0x626f6f7473747270ULL;
@@ -53,10 +55,6 @@ std::vector<double> UnwrapAround(std::span<const double> angles_rad, double cent
 
 // Normal QQ plot: sorted sample against N(mean, sd) quantiles at Blom's plotting positions
 // (i - 3/8) / (n + 1/4), both in the data's units.
-struct QqPoint {
-  double theoretical = 0.0;
-  double observed = 0.0;
-};
 std::vector<QqPoint> NormalQq(std::span<const double> x, double mean, double sd);
 
 // --- intervals ------------------------------------------------------------------------------

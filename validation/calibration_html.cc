@@ -6,9 +6,9 @@
 #include "common/geometry.h"
 #include "validation/calibration_report.h"
 #include "stats/distributions.h"
-#include "validation/charts.h"
-#include "validation/html_report.h"
-#include "validation/report_format.h"
+#include "report/charts.h"
+#include "report/html_report.h"
+#include "report/report_format.h"
 
 namespace foresight {
 

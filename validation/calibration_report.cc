@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "common/geometry.h"
-#include "validation/report_format.h"
+#include "report/report_format.h"
 
 namespace foresight {
 

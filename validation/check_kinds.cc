@@ -12,7 +12,7 @@
 #include "validation/physics_checks.h"
 #include "validation/physics_runs.h"
 #include "validation/physics_setup.h"
-#include "validation/report_format.h"
+#include "report/report_format.h"
 
 namespace foresight {
 

@@ -3,11 +3,11 @@
 // tau and regret, and the worst ten situations drawn on the field.
 
 #include "common/geometry.h"
-#include "validation/charts.h"
+#include "report/charts.h"
 #include "validation/fidelity_report.h"
-#include "validation/field_svg.h"
-#include "validation/html_report.h"
-#include "validation/report_format.h"
+#include "report/field_svg.h"
+#include "report/html_report.h"
+#include "report/report_format.h"
 
 namespace foresight {
 

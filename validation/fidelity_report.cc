@@ -1,7 +1,7 @@
 #include "validation/fidelity_report.h"
 
 #include "common/geometry.h"
-#include "validation/report_format.h"
+#include "report/report_format.h"
 
 namespace foresight {
 

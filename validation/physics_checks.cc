@@ -6,7 +6,7 @@
 
 #include "common/error.h"
 #include "common/json_reader.h"
-#include "validation/svg_writer.h"
+#include "report/svg_writer.h"
 
 namespace foresight {
 

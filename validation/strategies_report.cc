@@ -1,8 +1,8 @@
 #include "validation/strategies_report.h"
 
-#include "validation/experiment_charts.h"
-#include "validation/experiment_maps.h"
-#include "validation/report_format.h"
+#include "report/experiment_charts.h"
+#include "report/experiment_maps.h"
+#include "report/report_format.h"
 
 namespace foresight {
 

@@ -6,7 +6,7 @@
 
 #include "models/field_spec.h"
 #include "common/geometry.h"
-#include "validation/svg_writer.h"
+#include "report/svg_writer.h"
 
 namespace foresight {
 

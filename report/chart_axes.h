@@ -1,4 +1,4 @@
-// Shared pieces of the statistical charts (validation/charts.h): "nice" axis ticks and their
+// Shared pieces of the statistical charts (report/charts.h): "nice" axis ticks and their
 // labels, the palette and text styles, a legend row, and a Cartesian plot frame with a white
 // background, a light grid, axes, tick labels, axis labels and a title.
 #pragma once
@@ -7,8 +7,8 @@
 #include <string_view>
 #include <vector>
 
-#include "validation/charts.h"
-#include "validation/svg_writer.h"
+#include "report/charts.h"
+#include "report/svg_writer.h"
 
 namespace foresight {
 

@@ -1,4 +1,4 @@
-#include "validation/experiment_maps.h"
+#include "report/experiment_maps.h"
 
 #include <algorithm>
 #include <array>
@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "validation/chart_axes.h"
-#include "validation/field_svg.h"
-#include "validation/svg_writer.h"
+#include "report/chart_axes.h"
+#include "report/field_svg.h"
+#include "report/svg_writer.h"
 
 namespace foresight {
 namespace {

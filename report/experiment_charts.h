@@ -3,8 +3,8 @@
 // several series over shared bins with an optional logarithmic count axis (Fig. 5, rotations
 // around the ball and kicks until goal or out, one series per strategy).
 //
-// Same conventions as validation/charts.h: self-contained SVG documents built on PlotFrame
-// (validation/chart_axes.h), the Okabe-Ito palette, a legend row, "no data" for empty input,
+// Same conventions as report/charts.h: self-contained SVG documents built on PlotFrame
+// (report/chart_axes.h), the Okabe-Ito palette, a legend row, "no data" for empty input,
 // non-finite values skipped. On a logarithmic axis values <= 0 cannot be drawn and are skipped;
 // its ticks are 1, 2, 5 x 10^k (labels printed without exponent, e.g. "0.01", "20", "100").
 #pragma once
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "validation/chart_axes.h"
+#include "report/chart_axes.h"
 
 namespace foresight {
 

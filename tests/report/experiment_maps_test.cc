@@ -1,6 +1,6 @@
 // Field maps of the experiments: the sequential colour scale, cell maps with a colour bar, ball
 // paths with a legend.
-#include "validation/experiment_maps.h"
+#include "report/experiment_maps.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 
 #include "tests/support/svg_inspect.h"
 #include "tests/support/test_situations.h"
-#include "validation/chart_axes.h"
+#include "report/chart_axes.h"
 
 namespace foresight {
 namespace {

@@ -1,5 +1,5 @@
 // The HTML report page: escaping, inline figures, tables, and a page without scripts.
-#include "validation/html_report.h"
+#include "report/html_report.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "validation/svg_writer.h"
+#include "report/svg_writer.h"
 
 namespace foresight {
 namespace {

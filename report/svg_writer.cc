@@ -1,4 +1,4 @@
-#include "validation/svg_writer.h"
+#include "report/svg_writer.h"
 
 #include <cmath>
 #include <cstdio>

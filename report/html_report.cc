@@ -1,9 +1,9 @@
-#include "validation/html_report.h"
+#include "report/html_report.h"
 
 #include <algorithm>
 #include <cctype>
 
-#include "validation/svg_writer.h"
+#include "report/svg_writer.h"
 
 namespace foresight {
 namespace {

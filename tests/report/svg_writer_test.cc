@@ -1,5 +1,5 @@
 // The SVG builder: numbers, escaping, and a well-formed document.
-#include "validation/svg_writer.h"
+#include "report/svg_writer.h"
 
 #include <gtest/gtest.h>
 

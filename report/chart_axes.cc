@@ -1,4 +1,4 @@
-#include "validation/chart_axes.h"
+#include "report/chart_axes.h"
 
 #include <algorithm>
 #include <array>

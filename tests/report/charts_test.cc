@@ -1,5 +1,5 @@
 // Statistical charts: nice ticks, histogram bars and density, QQ plot, direction rose, scatter.
-#include "validation/charts.h"
+#include "report/charts.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "tests/support/svg_inspect.h"
-#include "validation/chart_axes.h"
+#include "report/chart_axes.h"
 
 namespace foresight {
 namespace {

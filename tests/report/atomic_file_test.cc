@@ -1,5 +1,5 @@
 // Output files are written whole or not at all.
-#include "validation/atomic_file.h"
+#include "report/atomic_file.h"
 
 #include <gtest/gtest.h>
 

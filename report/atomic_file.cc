@@ -1,4 +1,4 @@
-#include "validation/atomic_file.h"
+#include "report/atomic_file.h"
 
 #include <unistd.h>
 

@@ -1,6 +1,6 @@
 // Charts of the experiments: logarithmic ticks, line charts on log axes (Fig. 4), grouped bars
 // over shared bins with a linear or logarithmic count axis (Fig. 5).
-#include "validation/experiment_charts.h"
+#include "report/experiment_charts.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "validation/field_svg.h"
+#include "report/field_svg.h"
 
 #include <cmath>
 #include <string>

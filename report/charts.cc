@@ -1,4 +1,4 @@
-#include "validation/charts.h"
+#include "report/charts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,9 @@
 #include <numbers>
 #include <utility>
 
-#include "validation/chart_axes.h"
-#include "validation/svg_writer.h"
+#include "common/quantile.h"
+#include "report/chart_axes.h"
+#include "report/svg_writer.h"
 
 namespace foresight {
 namespace {
@@ -44,16 +45,9 @@ std::string Degrees(double rad) {
   return buffer;
 }
 
-double Quantile(const std::vector<double>& sorted, double p) {
-  const double pos = p * static_cast<double>(sorted.size() - 1);
-  const auto i = static_cast<std::size_t>(std::floor(pos));
-  const std::size_t j = std::min(i + 1, sorted.size() - 1);
-  return sorted[i] + (pos - static_cast<double>(i)) * (sorted[j] - sorted[i]);
-}
-
 int FreedmanDiaconisBins(const std::vector<double>& sorted, double span) {
   const double n = static_cast<double>(sorted.size());
-  const double width = 2.0 * (Quantile(sorted, 0.75) - Quantile(sorted, 0.25)) / std::cbrt(n);
+  const double width = 2.0 * (QuantileOfSorted(sorted, 0.75) - QuantileOfSorted(sorted, 0.25)) / std::cbrt(n);
   const double bins = width > 0.0 ? std::ceil(span / width) : std::ceil(std::sqrt(n));
   return static_cast<int>(std::clamp(bins, 5.0, 60.0));
 }

@@ -1,4 +1,4 @@
-#include "validation/experiment_charts.h"
+#include "report/experiment_charts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "validation/svg_writer.h"
+#include "report/svg_writer.h"
 
 namespace foresight {
 namespace {

@@ -1,4 +1,4 @@
-// Field maps of the paper's experiments, drawn on validation/field_svg.h's FieldCanvas:
+// Field maps of the paper's experiments, drawn on report/field_svg.h's FieldCanvas:
 //   - a cell map: the field cut into square cells, each coloured by a value on a sequential,
 //     colour-blind-safe scale (viridis-like), with a colour bar; used for how stable the
 //     decision is at each position (stability experiment);

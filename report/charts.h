@@ -1,4 +1,4 @@
-// Statistical charts as self-contained SVG documents (validation/svg_writer.h): histograms with
+// Statistical charts as self-contained SVG documents (report/svg_writer.h): histograms with
 // a fitted density, normal QQ plots, a direction rose, scatter plots with intervals.
 //
 // Every chart has axes with "nice" tick labels (1, 2, 5 x 10^k steps), a title and axis labels,
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "stats/statistics.h"
+#include "common/quantile.h"
 
 namespace foresight {
 
