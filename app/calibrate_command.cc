@@ -10,8 +10,8 @@
 #include "report/atomic_file.h"
 #include "validation/calibration_report.h"
 #include "validation/observed_kicks.h"
-#include "validation/physics_runs.h"
-#include "validation/physics_setup.h"
+#include "physics/physics_runs.h"
+#include "physics/physics_setup.h"
 
 namespace foresight {
 

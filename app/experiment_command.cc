@@ -8,7 +8,7 @@
 #include "common/error.h"
 #include "models/model_paths.h"
 #include "report/atomic_file.h"
-#include "validation/physics_setup.h"
+#include "physics/physics_setup.h"
 #include "validation/stability_report.h"
 #include "validation/strategies_report.h"
 

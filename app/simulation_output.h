@@ -10,7 +10,7 @@
 
 #include "models/robot_spec.h"
 #include "models/situation.h"
-#include "validation/physics_runs.h"
+#include "physics/physics_runs.h"
 
 namespace foresight {
 

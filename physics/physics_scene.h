@@ -15,9 +15,10 @@
 #include "models/physics_params.h"
 #include "models/robot_spec.h"
 #include "models/situation.h"
-#include "physics/bullet_world.h"
 
 namespace foresight {
+
+class BulletWorld;  // physics/bullet_world.h; Bullet stays private to physics/
 
 // A circle in the carpet's plane; inside it the ball rolls with the small time step.
 struct NearZone {

@@ -10,8 +10,8 @@
 #include "validation/calibration.h"
 #include "validation/fidelity.h"
 #include "validation/physics_checks.h"
-#include "validation/physics_runs.h"
-#include "validation/physics_setup.h"
+#include "physics/physics_runs.h"
+#include "physics/physics_setup.h"
 #include "report/report_format.h"
 
 namespace foresight {

@@ -9,7 +9,7 @@
 #include "planner/coarse_planner.h"
 #include "validation/candidate_grid.h"
 #include "validation/physics_evaluator.h"
-#include "validation/physics_setup.h"
+#include "physics/physics_setup.h"
 
 namespace foresight {
 

@@ -9,7 +9,7 @@
 #include "physics/physics_simulator.h"
 #include "tests/physics/physics_test_scenes.h"
 #include "tests/support/test_situations.h"
-#include "validation/physics_runs.h"
+#include "physics/physics_runs.h"
 
 namespace foresight {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "planner/coarse_simulator.h"
 #include "tests/support/test_situations.h"
-#include "validation/physics_setup.h"
+#include "physics/physics_setup.h"
 #include "validation/strategy_stats.h"
 
 namespace foresight {

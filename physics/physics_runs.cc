@@ -1,4 +1,4 @@
-#include "validation/physics_runs.h"
+#include "physics/physics_runs.h"
 
 #include <cmath>
 

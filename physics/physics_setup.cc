@@ -1,4 +1,4 @@
-#include "validation/physics_setup.h"
+#include "physics/physics_setup.h"
 
 #include "common/error.h"
 
