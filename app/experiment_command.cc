@@ -9,8 +9,8 @@
 #include "models/model_paths.h"
 #include "report/atomic_file.h"
 #include "physics/physics_setup.h"
-#include "validation/stability_report.h"
-#include "validation/strategies_report.h"
+#include "experiments/stability_report.h"
+#include "experiments/strategies_report.h"
 
 namespace foresight {
 

@@ -11,7 +11,7 @@
 #include "models/kick_model.h"
 #include "common/random.h"
 #include "physics/physics_simulator.h"
-#include "tests/physics/physics_test_scenes.h"
+#include "tests/support/physics_test_scenes.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {

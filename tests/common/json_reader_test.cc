@@ -7,8 +7,8 @@
 #include <string>
 
 #include "common/error.h"
-#include "tests/models/model_test_util.h"
-#include "tests/support/test_situations.h"
+#include "tests/support/model_test_util.h"
+#include "tests/support/temp_files.h"
 
 namespace foresight {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "common/geometry.h"
-#include "tests/models/model_test_util.h"
+#include "tests/support/model_test_util.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {

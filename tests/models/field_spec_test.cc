@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "tests/models/model_test_util.h"
+#include "tests/support/model_test_util.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {

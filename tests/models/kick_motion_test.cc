@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "common/geometry.h"
-#include "tests/models/model_test_util.h"
+#include "tests/support/model_test_util.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {

@@ -3,7 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "tests/models/model_test_util.h"
+#include "tests/support/model_test_util.h"
 
 namespace foresight {
 namespace {

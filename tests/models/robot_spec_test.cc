@@ -11,7 +11,7 @@
 
 #include "common/checks.h"
 #include "common/geometry.h"
-#include "tests/models/model_test_util.h"
+#include "tests/support/model_test_util.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {

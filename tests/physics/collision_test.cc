@@ -7,7 +7,7 @@
 #include "common/geometry.h"
 #include "physics/robot_kinematics.h"
 #include "physics/trial.h"
-#include "tests/physics/physics_test_scenes.h"
+#include "tests/support/physics_test_scenes.h"
 
 namespace foresight {
 namespace {

@@ -9,7 +9,7 @@
 #include "common/random.h"
 #include "physics/bullet_convert.h"
 #include "physics/robot_kinematics.h"
-#include "tests/physics/physics_test_scenes.h"
+#include "tests/support/physics_test_scenes.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {

@@ -1,14 +1,8 @@
 #include "tests/support/test_situations.h"
 
-#include <fstream>
-
 #include "models/model_paths.h"
 
 namespace foresight::testing {
-
-std::filesystem::path ModelsDir() {
-  return FORESIGHT_TEST_MODELS_DIR;
-}
 
 Situation MakeSituation(const StateSpec& spec, std::vector<Obstacle> obstacles,
                         const std::string& field, const std::string& kicks) {
@@ -49,14 +43,6 @@ StateSpec RandomPose(RandomStream& rng, double half_x_m, double half_y_m) {
   spec.y_m = half_y_m * (2.0 * rng.NextUniform() - 1.0);
   spec.theta_deg = 360.0 * rng.NextUniform() - 180.0;
   return Uncertain(spec);
-}
-
-std::filesystem::path WriteTempFile(const std::string& name, const std::string& text) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "foresight_tests";
-  std::filesystem::create_directories(dir);
-  const std::filesystem::path file = dir / name;
-  std::ofstream(file) << text;
-  return file;
 }
 
 }  // namespace foresight::testing

@@ -8,10 +8,9 @@
 
 #include "models/situation.h"
 #include "common/random.h"
+#include "tests/support/temp_files.h"
 
 namespace foresight::testing {
-
-std::filesystem::path ModelsDir();
 
 struct StateSpec {
   double x_m = 0.0, y_m = 0.0, theta_deg = 0.0;
@@ -32,8 +31,5 @@ StateSpec Uncertain(StateSpec state);
 // A random robot pose, uniform over [-half_x, half_x] x [-half_y, half_y] and all headings,
 // with the paper's uncertainty (Uncertain()).
 StateSpec RandomPose(RandomStream& rng, double half_x_m, double half_y_m);
-
-// Writes `text` to a fresh file in a per-test temporary folder and returns its path.
-std::filesystem::path WriteTempFile(const std::string& name, const std::string& text);
 
 }  // namespace foresight::testing

@@ -1,13 +1,13 @@
 // The strategies experiment (Mellmann & Schlotter, sec. V-B, Figs. 3 and 5): every strategy
 // plays the ball from the same random start positions with the same seeds until goal or out
-// (validation/strategy_run.h), on the coarse model or, with a physics executor, in Bullet.
+// (experiments/strategy_run.h), on the coarse model or, with a physics executor, in Bullet.
 #pragma once
 
 #include <cstdint>
 #include <functional>
 #include <vector>
 
-#include "validation/strategy_run.h"
+#include "experiments/strategy_run.h"
 
 namespace foresight {
 

@@ -1,4 +1,4 @@
-#include "validation/strategy_stats.h"
+#include "experiments/strategy_stats.h"
 
 #include <algorithm>
 #include <cmath>

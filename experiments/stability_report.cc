@@ -1,4 +1,4 @@
-#include "validation/stability_report.h"
+#include "experiments/stability_report.h"
 
 #include <algorithm>
 #include <cmath>

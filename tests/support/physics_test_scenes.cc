@@ -1,4 +1,4 @@
-#include "tests/physics/physics_test_scenes.h"
+#include "tests/support/physics_test_scenes.h"
 
 #include "tests/support/test_situations.h"
 

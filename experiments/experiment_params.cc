@@ -1,4 +1,4 @@
-#include "validation/experiment_params.h"
+#include "experiments/experiment_params.h"
 
 #include <algorithm>
 #include <charconv>

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "common/error.h"
-#include "tests/support/test_situations.h"
+#include "tests/support/temp_files.h"
 
 namespace foresight::testing {
 

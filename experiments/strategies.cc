@@ -1,4 +1,4 @@
-#include "validation/strategies.h"
+#include "experiments/strategies.h"
 
 #include "common/parallel_for.h"
 

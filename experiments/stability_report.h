@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "validation/stability.h"
+#include "experiments/stability.h"
 
 namespace foresight {
 

@@ -1,14 +1,13 @@
-// The strategies experiment (validation/strategy_run.h, strategies.h, strategy_stats.h): exact
-// times on a scripted start, the strategies' invariants over random starts, determinism, and
-// the physics executor through the same code.
-#include "validation/strategies.h"
+// The strategies experiment (experiments/strategy_run.h, strategies.h, strategy_stats.h): exact
+// times on a scripted start, the strategies' invariants over random starts, determinism. The
+// physics executor through the same code is tested in tests/app/strategies_physics_test.cc.
+#include "experiments/strategies.h"
 
 #include <gtest/gtest.h>
 
 #include "planner/coarse_simulator.h"
 #include "tests/support/test_situations.h"
-#include "physics/physics_setup.h"
-#include "validation/strategy_stats.h"
+#include "experiments/strategy_stats.h"
 
 namespace foresight {
 namespace {
@@ -179,21 +178,6 @@ TEST_F(StrategiesRunTest, SameSeedSameRunsWithOneThread) {
       EXPECT_EQ(a.rotations_rad, b.rotations_rad);
     }
   }
-}
-
-// The physics executor goes through the same seam: a few kicks of the real NAO.
-TEST(StrategiesPhysicsTest, PhysicsExecutesTheKicks) {
-  StrategiesParams p = Params(testing::MakeSituation(testing::Uncertain({})), 2);
-  p.strategies = {Strategy::kFast};
-  p.max_steps = 2;
-  const auto setup = LoadPhysicsSetup(p.situation, testing::ModelsDir());
-  const StrategiesResult r = RunStrategies(p, &*setup->simulator, 3, 2);
-  const StrategyRun& run = r.strategies[0].example;
-  ASSERT_FALSE(run.steps_taken.empty());
-  const StrategyStep& first = run.steps_taken[0];
-  ASSERT_GE(first.kick_index, 0);
-  // Physics launches the ball (about 0.5-0.8 m/s for the NAO's kicks): it moves a few dm at least.
-  EXPECT_GT((first.outcome.p_F_rest - first.p_F_ball).norm(), 0.2);
 }
 
 }  // namespace

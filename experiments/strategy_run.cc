@@ -1,4 +1,4 @@
-#include "validation/strategy_run.h"
+#include "experiments/strategy_run.h"
 
 #include <cmath>
 

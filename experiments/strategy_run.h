@@ -20,7 +20,7 @@
 
 #include "models/outcome.h"
 #include "planner/coarse_planner.h"
-#include "validation/experiment_params.h"
+#include "experiments/experiment_params.h"
 
 namespace foresight {
 

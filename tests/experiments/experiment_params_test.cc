@@ -1,6 +1,6 @@
 // The experiments' parameter files: the shipped ones hold the paper's defaults; bad files fail
 // with a message naming the file, the field and the value.
-#include "validation/experiment_params.h"
+#include "experiments/experiment_params.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

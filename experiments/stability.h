@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "common/geometry.h"
-#include "validation/experiment_params.h"
+#include "experiments/experiment_params.h"
 
 namespace foresight {
 

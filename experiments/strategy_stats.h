@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "stats/statistics.h"
-#include "validation/strategies.h"
+#include "experiments/strategies.h"
 
 namespace foresight {
 

@@ -1,4 +1,4 @@
-#include "validation/stability.h"
+#include "experiments/stability.h"
 
 #include <algorithm>
 #include <cmath>

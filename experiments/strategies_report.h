@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "validation/strategy_stats.h"
+#include "experiments/strategy_stats.h"
 
 namespace foresight {
 

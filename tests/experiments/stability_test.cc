@@ -1,5 +1,5 @@
-// The stability experiment (validation/stability.h) on small grids with fixed seeds.
-#include "validation/stability.h"
+// The stability experiment (experiments/stability.h) on small grids with fixed seeds.
+#include "experiments/stability.h"
 
 #include <gtest/gtest.h>
 

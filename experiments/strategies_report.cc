@@ -1,4 +1,4 @@
-#include "validation/strategies_report.h"
+#include "experiments/strategies_report.h"
 
 #include "report/experiment_charts.h"
 #include "report/experiment_maps.h"

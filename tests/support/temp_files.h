@@ -1,0 +1,23 @@
+// Files for tests at every layer (header-only, so common_tests and stats_tests need no library
+// above theirs): the shipped data folder and per-test temporary files.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace foresight::testing {
+
+// The shipped models/ folder (FORESIGHT_TEST_MODELS_DIR is set by tests/CMakeLists.txt).
+inline std::filesystem::path ModelsDir() { return FORESIGHT_TEST_MODELS_DIR; }
+
+// Writes `text` to a fresh file in a per-test temporary folder and returns its path.
+inline std::filesystem::path WriteTempFile(const std::string& name, const std::string& text) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "foresight_tests";
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path file = dir / name;
+  std::ofstream(file) << text;
+  return file;
+}
+
+}  // namespace foresight::testing
