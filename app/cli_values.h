@@ -16,8 +16,8 @@ int ParseCount(const std::string& flag, const std::string& text, int lo, int hi)
 std::uint64_t ParseSeed(const std::string& text);  // for --seed: 0 .. 2^64 - 1
 double ParseNumber(const std::string& flag, const std::string& text, double lo, double hi);
 
-// Progress "LABEL done / total UNIT" on stderr, only when stderr is a terminal (DESIGN.md,
-// "Output").
+// Progress "LABEL done / total UNIT" on stderr, only when stderr is a terminal
+// (docs/ARCHITECTURE.md, "Output").
 std::function<void(int, int)> TerminalProgress(const std::string& label, const std::string& unit);
 
 // Creates a report folder (and its parents); InputError naming the flag and folder if it fails.

@@ -1,5 +1,5 @@
 // The `foresight` command line: one binary, one subcommand per job. Bad input of any kind ends
-// in one line "foresight: error: ..." on stderr and exit code 2 (DESIGN.md, "Errors").
+// in one line "foresight: error: ..." on stderr and exit code 2 (docs/ARCHITECTURE.md, "Errors").
 #include <CLI/CLI.hpp>
 #include <iostream>
 

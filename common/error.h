@@ -1,8 +1,8 @@
 // The project's error type for bad input from a user (a file, a flag, a value).
 //
-// DESIGN.md, "Errors": a programmer's bug is an assertion; bad user input is an InputError whose
-// message names the file, the field and the value (the CLI prints it as one line and exits 2);
-// an expected outcome (ball out, nothing acceptable) is a value, never an exception.
+// docs/ARCHITECTURE.md, "Errors": a programmer's bug is an assertion; bad user input is an
+// InputError whose message names the file, the field and the value (the CLI prints it as one line
+// and exits 2); an expected outcome (ball out, nothing acceptable) is a value, never an exception.
 #pragma once
 
 #include <stdexcept>

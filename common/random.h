@@ -1,10 +1,10 @@
 // Counter-based random streams and the project's own normal sampler.
 //
-// Determinism (DESIGN.md): trial or sample i of a run draws only from its own stream, keyed by
-// (seed, i), so results do not depend on the number of threads or the order of work. A stream
-// is SplitMix64 (Steele, Lea & Flood, "Fast splittable pseudorandom number generators", 2014):
-// draw k is Mix64(key + k * golden_gamma). Normals come from the ziggurat method with 128 layers
-// (Marsaglia & Tsang 2000, in Doornik's ZIGNOR form, 2005), written here so every platform
+// Determinism (docs/ARCHITECTURE.md): trial or sample i of a run draws only from its own stream,
+// keyed by (seed, i), so results do not depend on the number of threads or the order of work. A
+// stream is SplitMix64 (Steele, Lea & Flood, "Fast splittable pseudorandom number generators",
+// 2014): draw k is Mix64(key + k * golden_gamma). Normals come from the ziggurat method with 128
+// layers (Marsaglia & Tsang 2000, in Doornik's ZIGNOR form, 2005), written here so every platform
 // draws the same numbers (the standard library's distributions differ between implementations).
 #pragma once
 

@@ -8,7 +8,7 @@
 // the world axes (bullet3 issue #2117), which is why it is not used.
 //
 // a varies: by a factor per trial (the day's carpet, wear) and by a factor per square patch of
-// carpet (a fixed layout drawn from the patch seed). DESIGN.md, "The physics".
+// carpet (a fixed layout drawn from the patch seed). docs/ARCHITECTURE.md, "One physics trial".
 #pragma once
 
 #include "common/geometry.h"

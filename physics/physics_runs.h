@@ -1,7 +1,8 @@
 // Running many physics trials of one kick in parallel, and what they add up to.
 //
 // Trial i draws from stream StreamKey(seed, i, kPhysicsTrialDomain) and writes result slot i, so
-// the results are the same whatever the thread count (DESIGN.md, "Randomness and determinism").
+// the results are the same whatever the thread count (docs/ARCHITECTURE.md, "Randomness and
+// determinism").
 #pragma once
 
 #include <array>

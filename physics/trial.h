@@ -1,8 +1,9 @@
 // One physics trial: a robot kicks the ball (or a ball is set rolling) and the ball comes to rest.
 //
 // The variation between trials comes only from physical causes, drawn from the trial's own
-// stream (DESIGN.md: never from the kick model's sigmas): the robot's placement relative to the
-// ball (x, y in R, heading), the motion's playback speed, and the carpet's deceleration factor.
+// stream (docs/ARCHITECTURE.md, "One physics trial": never from the kick model's sigmas): the
+// robot's placement relative to the ball (x, y in R, heading), the motion's playback speed, and the
+// carpet's deceleration factor.
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Writing output files whole or not at all (DESIGN.md, "Output"): the content goes to a
+// Writing output files whole or not at all (docs/ARCHITECTURE.md, "Output"): the content goes to a
 // temporary file beside the target, which is renamed into place only when fully written.
 #pragma once
 

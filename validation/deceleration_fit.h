@@ -1,8 +1,9 @@
 // The rolling deceleration from ball trajectories, by least squares.
 //
-// Model (DESIGN.md, the coarse model): a freely rolling ball's speed falls linearly,
-// v_ij = v_i - a t_ij for sample j of trial i. Each trial has its own intercept v_i (its launch),
-// all share the slope a, so the least-squares estimate is the pooled within-trial slope
+// Model (docs/ARCHITECTURE.md, "OutcomeSimulator": the coarse model): a freely rolling ball's speed
+// falls linearly, v_ij = v_i - a t_ij for sample j of trial i. Each trial has its own intercept v_i
+// (its launch), all share the slope a, so the least-squares estimate is the pooled within-trial
+// slope
 //   a = - sum_ij (t_ij - tbar_i)(v_ij - vbar_i) / sum_ij (t_ij - tbar_i)^2.
 // The carpet varies from trial to trial, so the points of one trial are not independent of each
 // other; the interval is therefore a cluster bootstrap that resamples whole trials.

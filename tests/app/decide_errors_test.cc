@@ -1,6 +1,7 @@
 // Bad input to `foresight decide`: each case must end in exactly one line "foresight: error: ..."
 // on stderr that names the problem, exit code 2, nothing on stdout, and no file written (not
-// even a temporary one) although every case asks for an SVG (DESIGN.md, "Errors", "Output").
+// even a temporary one) although every case asks for an SVG (docs/ARCHITECTURE.md, "Errors",
+// "Output").
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 

@@ -151,7 +151,7 @@ TEST(JsonReaderTest, ArrayItemsMustBeObjects) {
 
 TEST(JsonReaderTest, OverflowingNumberCannotEnterAsInfinity) {
   // nlohmann::json throws json::out_of_range (406) for a number that overflows a double; the
-  // reader must wrap it in the project's InputError (DESIGN.md, "Errors").
+  // reader must wrap it in the project's InputError (docs/ARCHITECTURE.md, "Errors").
   const std::string message = InputErrorMessage([] {
     const JsonDocument doc = JsonDocument::Parse(R"({"speed_mps": 1e999})", "inf.json");
     doc.Root().Number("speed_mps");
