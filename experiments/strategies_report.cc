@@ -53,6 +53,8 @@ Json SummaryJson(const StrategySummary& s) {
               {"step_limit", s.step_limits},
               {"step_limit_stopped_at_contact", s.step_limits_at_contact}}},
             {"ended_runs", s.ended},
+            {"kicks_missed", s.kick_status.missed},
+            {"kicks_not_settled", s.kick_status.not_settled},
             {"goal_share", static_cast<double>(s.goals) / s.runs},
             {"goal_share_95", IntervalJson(s.goal_share_95)},
             {"kicks",
@@ -130,6 +132,13 @@ std::string StrategiesText(const StrategiesRun& run) {
         s.max_turn_deg);
   }
   text += "  (kicks, time and turns over the runs that ended in a goal or out)\n";
+  if (!run.physics_file.empty()) {
+    for (const StrategySummary& s : run.summaries) {
+      text += Format("  physics kicks of %s: %s (still played as they happened)\n",
+                     std::string(StrategyName(s.strategy)).c_str(),
+                     StatusCountsText(s.kick_status).c_str());
+    }
+  }
   return text;
 }
 
@@ -147,7 +156,7 @@ std::string StrategiesRunsCsv(const StrategiesRun& run) {
   std::string csv =
       "start,strategy,end,kicks,steps,time_s,walk_s,turn_s,around_ball_s,"
       "turns_nonzero,max_turn_deg,start_robot_x_m,start_robot_y_m,"
-      "start_robot_theta_deg,start_ball_x_m,start_ball_y_m\n";
+      "start_robot_theta_deg,start_ball_x_m,start_ball_y_m,kicks_missed,kicks_not_settled\n";
   for (const StrategyRuns& runs : run.result.strategies) {
     for (std::size_t i = 0; i < runs.runs.size(); ++i) {
       const StrategyRun& r = runs.runs[i];
@@ -158,12 +167,12 @@ std::string StrategiesRunsCsv(const StrategiesRun& run) {
         nonzero += rho != 0.0;
         max_turn = std::max(max_turn, std::abs(rho) * kRadToDeg);
       }
-      csv += Format("%zu,%s,%s,%d,%d,%.3f,%.3f,%.3f,%.3f,%d,%.2f,%.3f,%.3f,%.2f,%.3f,%.3f\n", i,
+      csv += Format("%zu,%s,%s,%d,%d,%.3f,%.3f,%.3f,%.3f,%d,%.2f,%.3f,%.3f,%.2f,%.3f,%.3f,%d,%d\n", i,
                     std::string(StrategyName(runs.strategy)).c_str(),
                     std::string(RunEndName(r.end)).c_str(), r.kicks, r.steps, r.TotalTime(),
                     r.walk_s, r.turn_s, r.around_ball_s, nonzero, max_turn, start.robot.p_F.x(),
                     start.robot.p_F.y(), start.robot.theta_rad * kRadToDeg, start.p_F_ball.x(),
-                    start.p_F_ball.y());
+                    start.p_F_ball.y(), r.kick_status.missed, r.kick_status.not_settled);
     }
   }
   return csv;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "common/enum_names.h"
 #include "common/random.h"
 #include "planner/sampling.h"
 
@@ -60,17 +61,13 @@ RunEnd EndOf(Category category) {
 }  // namespace
 
 std::string_view RunEndName(RunEnd end) {
-  switch (end) {
-    case RunEnd::kGoal:
-      return "goal";
-    case RunEnd::kOwnGoal:
-      return "own_goal";
-    case RunEnd::kOut:
-      return "out";
-    case RunEnd::kStepLimit:
-      return "step_limit";
-  }
-  return "?";
+  static constexpr EnumNames<RunEnd, 4> kNames{{{
+      {RunEnd::kGoal, "goal"},
+      {RunEnd::kOwnGoal, "own_goal"},
+      {RunEnd::kOut, "out"},
+      {RunEnd::kStepLimit, "step_limit"},
+  }}};
+  return kNames.Name(end);
 }
 
 StartPosition DrawStart(const FieldSpec& field, std::uint64_t seed, int start) {
@@ -112,6 +109,7 @@ StrategyRun RunStrategy(const StrategyRunContext& context, Strategy strategy,
       ++run.kicks;
       run.rotations_rad.push_back(d.rotation_rad);
       run.last_contact = taken.outcome.first_contact;
+      run.kick_status.Add(CountStatuses({&taken.outcome, 1}));
     } else {
       taken.outcome.p_F_rest = ball;
     }

@@ -51,6 +51,7 @@ struct StrategyRun {
   double walk_s = 0.0;
   double around_ball_s = 0.0;             // turning around the ball before kicks
   Contact last_contact = Contact::kNone;  // the last kick's first contact
+  StatusCounts kick_status;  // kicks the executor missed or that did not settle (physics)
   std::vector<double> rotations_rad;      // the turn around the ball of every kick, signed
   std::vector<StrategyStep> steps_taken;  // only when recorded
 

@@ -34,6 +34,7 @@ void CountEnds(const StrategyRuns& runs, StrategySummary& s) {
     s.outs += run.end == RunEnd::kOut;
     s.step_limits += run.end == RunEnd::kStepLimit;
     s.step_limits_at_contact += run.end == RunEnd::kStepLimit && run.last_contact != Contact::kNone;
+    s.kick_status.Add(run.kick_status);
   }
   s.ended = s.runs - s.step_limits;
   s.goal_share_95 = WilsonInterval(s.goals, s.runs, kConfidence);

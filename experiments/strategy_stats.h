@@ -38,6 +38,7 @@ struct StrategySummary {
   double mean_walk_s = 0.0, mean_turn_s = 0.0, mean_around_ball_s = 0.0;
 
   int kicks_total = 0;
+  StatusCounts kick_status;  // over all runs: kicks that missed the ball or did not settle
   int turns_zero = 0;  // kicks without a turn around the ball
   double max_turn_deg = 0.0;
   double p95_turn_deg = 0.0;  // of the kicks with a turn

@@ -1,35 +1,54 @@
 #include "models/outcome.h"
 
-namespace foresight {
+#include "common/enum_names.h"
 
-std::string_view CategoryName(Category category) {
-  switch (category) {
-    case Category::kInfield:
-      return "infield";
-    case Category::kOppGoal:
-      return "opp_goal";
-    case Category::kOwnGoal:
-      return "own_goal";
-    case Category::kOut:
-      return "out";
-  }
-  return "?";
+namespace foresight {
+namespace {
+
+constexpr EnumNames<Category, kCategoryCount> kCategoryNames{{{
+    {Category::kInfield, "infield"},
+    {Category::kOppGoal, "opp_goal"},
+    {Category::kOwnGoal, "own_goal"},
+    {Category::kOut, "out"},
+}}};
+
+constexpr EnumNames<Contact, kContactCount> kContactNames{{{
+    {Contact::kNone, "none"},
+    {Contact::kPost, "post"},
+    {Contact::kNet, "net"},
+    {Contact::kObstacle, "obstacle"},
+    {Contact::kRobot, "robot"},
+}}};
+
+constexpr EnumNames<OutcomeStatus, kOutcomeStatusCount> kStatusNames{{{
+    {OutcomeStatus::kOk, "ok"},
+    {OutcomeStatus::kMissed, "missed"},
+    {OutcomeStatus::kNotSettled, "not_settled"},
+}}};
+
+}  // namespace
+
+std::string_view CategoryName(Category category) { return kCategoryNames.Name(category); }
+std::string_view ContactName(Contact contact) { return kContactNames.Name(contact); }
+std::string_view OutcomeStatusName(OutcomeStatus status) { return kStatusNames.Name(status); }
+
+void StatusCounts::Add(const StatusCounts& other) {
+  missed += other.missed;
+  not_settled += other.not_settled;
 }
 
-std::string_view ContactName(Contact contact) {
-  switch (contact) {
-    case Contact::kNone:
-      return "none";
-    case Contact::kPost:
-      return "post";
-    case Contact::kNet:
-      return "net";
-    case Contact::kObstacle:
-      return "obstacle";
-    case Contact::kRobot:
-      return "robot";
+std::string StatusCountsText(const StatusCounts& counts) {
+  return std::to_string(counts.missed) + " missed the ball, " +
+         std::to_string(counts.not_settled) + " did not settle";
+}
+
+StatusCounts CountStatuses(std::span<const Outcome> outcomes) {
+  StatusCounts counts;
+  for (const Outcome& o : outcomes) {
+    counts.missed += o.status == OutcomeStatus::kMissed ? 1 : 0;
+    counts.not_settled += o.status == OutcomeStatus::kNotSettled ? 1 : 0;
   }
-  return "?";
+  return counts;
 }
 
 }  // namespace foresight

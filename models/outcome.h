@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "models/field_spec.h"
@@ -22,9 +23,18 @@ inline constexpr int kCategoryCount = 4;
 
 // The first thing the ball touched; kNone when it stopped by rolling resistance.
 enum class Contact : std::uint8_t { kNone, kPost, kNet, kObstacle, kRobot };
+inline constexpr int kContactCount = 5;
+
+// Whether the outcome is what the action asked for. A physics trial can go wrong in ways the
+// coarse model cannot: the robot's foot missed the ball (it then lies where it was), or the
+// ball did not come to rest within the time limit (it is reported where it was then). Such
+// outcomes still count as what physically happened; the status lets a reader count them.
+enum class OutcomeStatus : std::uint8_t { kOk, kMissed, kNotSettled };
+inline constexpr int kOutcomeStatusCount = 3;
 
 std::string_view CategoryName(Category category);
 std::string_view ContactName(Contact contact);
+std::string_view OutcomeStatusName(OutcomeStatus status);
 
 // The static scene a simulator is built for. Non-owning: the field and obstacles must outlive it.
 struct Scene {
@@ -56,7 +66,19 @@ struct Outcome {
   Category category = Category::kInfield;
   Contact first_contact = Contact::kNone;
   double time_s = 0.0;  // from the launch until the ball rests
+  OutcomeStatus status = OutcomeStatus::kOk;
 };
+
+// How many of a set of outcomes ended with each status (physics trials that missed the ball or
+// did not settle are counted, not dropped: a reader must see them).
+struct StatusCounts {
+  int missed = 0;
+  int not_settled = 0;
+  void Add(const StatusCounts& other);
+};
+StatusCounts CountStatuses(std::span<const Outcome> outcomes);
+// "2 missed the ball, 0 did not settle"
+std::string StatusCountsText(const StatusCounts& counts);
 
 class OutcomeSimulator {
  public:

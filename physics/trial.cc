@@ -16,6 +16,12 @@ double ClippedNormal(RandomStream& stream) {
   return std::clamp(stream.NextNormal(), -3.0, 3.0);
 }
 
+// A missed ball is what went wrong first: it then lies still, so it also settles.
+OutcomeStatus StatusOf(bool touched, bool settled) {
+  if (!touched) return OutcomeStatus::kMissed;
+  return settled ? OutcomeStatus::kOk : OutcomeStatus::kNotSettled;
+}
+
 Outcome Finish(const BallMonitor& monitor, const PhaseEnd& end, double t_zero_s) {
   Outcome outcome;
   outcome.p_F_rest = end.ball.Planar();
@@ -75,6 +81,7 @@ TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request) 
   const PhaseEnd roll = RunRollPhase(scene, carpet, kick.ball, kick.t_s, monitor);
   result.settled = roll.settled;
   result.outcome = Finish(monitor, roll, t_zero);
+  result.outcome.status = StatusOf(result.touched, result.settled);
   result.trace = std::move(monitor.trace());
   return result;
 }
@@ -92,6 +99,7 @@ TrialResult RunRollTrial(const PhysicsScene& scene, const BallState& start, std:
   result.p_F_launch = start.Planar();
   result.settled = roll.settled;
   result.outcome = Finish(monitor, roll, 0.0);
+  result.outcome.status = StatusOf(true, result.settled);
   result.trace = std::move(monitor.trace());
   return result;
 }

@@ -2,6 +2,7 @@
 // twice in one namespace with different contents is a compile error here, not a silent
 // one-definition-rule violation. scripts/check_layers.sh fails when a header is missing.
 #include "common/checks.h"
+#include "common/enum_names.h"
 #include "common/error.h"
 #include "common/fast_math.h"
 #include "common/geometry.h"

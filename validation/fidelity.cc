@@ -89,6 +89,8 @@ SituationFidelity RunOne(const FidelityCase& fc, const std::vector<double>& rota
       const PhysicsHypothesis& h = physics.Hypothesis(k, rotation);
       c.physics = h.evaluation;
       c.physics_ci = MeanTInterval(h.utilities, settings.confidence);
+      c.physics_status = CountStatuses(h.outcomes);
+      s.physics_status.Add(c.physics_status);
       s.candidates.push_back(c);
     }
   }
@@ -195,6 +197,7 @@ FidelityResult RunFidelity(const FidelitySet& set, const std::filesystem::path& 
     if (i == 0) result.coarse_samples = n;
     result.situations.push_back(RunOne(fc, set.rotations_rad, models_dir, settings, n));
     result.physics_trials_run += result.situations.back().physics_trials_run;
+    result.physics_status.Add(result.situations.back().physics_status);
     if (settings.progress) settings.progress(i + 1, total);
   }
   Aggregate(result, settings.confidence);

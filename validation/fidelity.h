@@ -42,7 +42,8 @@ struct CandidateScore {
   int kick_index = 0;
   double rotation_rad = 0.0;
   ActionEvaluation coarse, converged, physics;
-  Interval physics_ci;  // of the physics utility
+  Interval physics_ci;          // of the physics utility
+  StatusCounts physics_status;  // trials that missed the ball or did not settle (still scored)
 };
 
 struct StrategyAgreement {
@@ -71,6 +72,7 @@ struct SituationFidelity {
   std::vector<Outcome> coarse_outcomes;   // the coarse choice's N coarse samples
   std::vector<Outcome> physics_outcomes;  // ... and its physics trials
   long long physics_trials_run = 0;
+  StatusCounts physics_status;  // over all candidates
 };
 
 struct MeanWithInterval {
@@ -98,6 +100,7 @@ struct FidelityResult {
   std::vector<StrategyAgreementSummary> strategies;
   int coarse_samples = 0;
   long long physics_trials_run = 0;
+  StatusCounts physics_status;  // over all situations
 };
 
 FidelityResult RunFidelity(const FidelitySet& set, const std::filesystem::path& models_dir,

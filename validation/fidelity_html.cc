@@ -147,7 +147,8 @@ std::string FidelityHtml(const FidelityRun& run) {
        {"coarse samples N", std::to_string(r.coarse_samples)},
        {"converged samples", std::to_string(run.settings.converged_samples)},
        {"physics trials M", std::to_string(run.settings.physics_trials) + " per candidate (" +
-                                std::to_string(r.physics_trials_run) + " in all)"},
+                                std::to_string(r.physics_trials_run) + " in all; " +
+                                StatusCountsText(r.physics_status) + ")"},
        {"seed", std::to_string(run.settings.seed)},
        {"physics", run.physics_file},
        {"version", run.version},

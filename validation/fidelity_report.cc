@@ -42,7 +42,9 @@ Json SituationJson(const SituationFidelity& s) {
                                {"utility", best.physics.utility},
                                {"ci", Json::array({best.physics_ci.low, best.physics_ci.high})}}},
          {"coarse", ChoiceJson(s, s.coarse)},
-         {"converged", ChoiceJson(s, s.converged)}};
+         {"converged", ChoiceJson(s, s.converged)},
+         {"physics_missed", s.physics_status.missed},
+         {"physics_not_settled", s.physics_status.not_settled}};
   j["decisions"] = Json::array();
   for (const StrategyAgreement& a : s.decisions) {
     j["decisions"].push_back(Json{{"strategy", StrategyName(a.strategy)},
@@ -61,7 +63,9 @@ Json SituationJson(const SituationFidelity& s) {
              {"coarse", EvaluationJson(c.coarse)},
              {"converged", EvaluationJson(c.converged)},
              {"physics", EvaluationJson(c.physics)},
-             {"physics_ci", Json::array({c.physics_ci.low, c.physics_ci.high})}});
+             {"physics_ci", Json::array({c.physics_ci.low, c.physics_ci.high})},
+             {"physics_missed", c.physics_status.missed},
+             {"physics_not_settled", c.physics_status.not_settled}});
   }
   return j;
 }
@@ -74,7 +78,8 @@ std::string FidelityText(const FidelityRun& run) {
                     " situations, coarse N = " + std::to_string(r.coarse_samples) +
                     ", converged N = " + std::to_string(run.settings.converged_samples) +
                     ", physics M = " + std::to_string(run.settings.physics_trials) + " (" +
-                    std::to_string(r.physics_trials_run) + " trials)\n";
+                    std::to_string(r.physics_trials_run) + " trials, " +
+                    StatusCountsText(r.physics_status) + ")\n";
   out +=
       "  class              n   tau_b coarse  tau_b conv.  top-1 coarse  top-1 conv.  regret "
       "coarse  regret conv.\n";
@@ -111,6 +116,8 @@ Json FidelityJson(const FidelityRun& run) {
          {"confidence", run.settings.confidence},
          {"rotations_deg", rotations_deg},
          {"physics_trials_run", r.physics_trials_run},
+         {"physics_missed", r.physics_status.missed},
+         {"physics_not_settled", r.physics_status.not_settled},
          {"run_time_s", run.run_time_s}};
   j["classes"] = Json::array();
   for (const ClassSummary& c : r.classes) {
@@ -137,7 +144,8 @@ Json FidelityJson(const FidelityRun& run) {
 std::string FidelityCandidatesCsv(const FidelityRun& run) {
   std::string out =
       "situation,class,kick,rotation_deg,coarse_utility,converged_utility,physics_utility,"
-      "physics_ci_low,physics_ci_high,coarse_p_goal,physics_p_goal,coarse_p_out,physics_p_out\n";
+      "physics_ci_low,physics_ci_high,coarse_p_goal,physics_p_goal,coarse_p_out,physics_p_out,"
+      "physics_missed,physics_not_settled\n";
   for (const SituationFidelity& s : run.result.situations) {
     for (const CandidateScore& c : s.candidates) {
       out += s.situation.name + "," + s.situation_class + "," +
@@ -146,7 +154,8 @@ std::string FidelityCandidatesCsv(const FidelityRun& run) {
              Fixed(c.physics.utility, 6) + "," + Fixed(c.physics_ci.low, 6) + "," +
              Fixed(c.physics_ci.high, 6) + "," + Fixed(c.coarse.p_opp_goal, 4) + "," +
              Fixed(c.physics.p_opp_goal, 4) + "," + Fixed(c.coarse.p_out, 4) + "," +
-             Fixed(c.physics.p_out, 4) + "\n";
+             Fixed(c.physics.p_out, 4) + "," + std::to_string(c.physics_status.missed) + "," +
+             std::to_string(c.physics_status.not_settled) + "\n";
     }
   }
   return out;
