@@ -7,11 +7,12 @@
 #include "app/report_text.h"
 #include "common/error.h"
 #include "models/model_paths.h"
-#include "report/atomic_file.h"
-#include "validation/calibration_report.h"
-#include "validation/observed_kicks.h"
 #include "physics/physics_runs.h"
 #include "physics/physics_setup.h"
+#include "report/atomic_file.h"
+#include "validation/calibration_html.h"
+#include "validation/calibration_report.h"
+#include "validation/observed_kicks.h"
 
 namespace foresight {
 

@@ -8,6 +8,7 @@
 #include "common/error.h"
 #include "models/model_paths.h"
 #include "report/atomic_file.h"
+#include "validation/fidelity_html.h"
 #include "validation/fidelity_report.h"
 
 namespace foresight {

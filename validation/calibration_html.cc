@@ -1,14 +1,15 @@
 // The calibration report as one HTML page: per kick a table of the fit against the committed
 // model, the speed histogram with the fitted normal, its QQ plot, the direction rose and the
 // direction histogram; then the rolling deceleration.
+#include "validation/calibration_html.h"
+
 #include <cmath>
 
 #include "common/geometry.h"
-#include "validation/calibration_report.h"
-#include "stats/distributions.h"
 #include "report/charts.h"
 #include "report/html_report.h"
 #include "report/report_format.h"
+#include "stats/distributions.h"
 
 namespace foresight {
 

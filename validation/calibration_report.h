@@ -47,6 +47,5 @@ std::string CalibrationText(const CalibrationRun& run);
 nlohmann::ordered_json CalibrationJson(const CalibrationRun& run);
 std::string CalibrationObservationsCsv(const CalibrationRun& run);
 std::string CalibrationSummaryCsv(const CalibrationRun& run);
-std::string CalibrationHtml(const CalibrationRun& run);
 
 }  // namespace foresight

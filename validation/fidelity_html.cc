@@ -1,10 +1,10 @@
 // The fidelity report as one HTML page: aggregates per situation class with intervals, the
 // strategies' decision agreement, the coarse-vs-physics utility scatter, the distributions of
 // tau and regret, and the worst ten situations drawn on the field.
+#include "validation/fidelity_html.h"
 
 #include "common/geometry.h"
 #include "report/charts.h"
-#include "validation/fidelity_report.h"
 #include "report/field_svg.h"
 #include "report/html_report.h"
 #include "report/report_format.h"

@@ -23,6 +23,5 @@ std::string FidelityText(const FidelityRun& run);
 nlohmann::ordered_json FidelityJson(const FidelityRun& run);
 std::string FidelityCandidatesCsv(const FidelityRun& run);
 std::string FidelitySituationsCsv(const FidelityRun& run);
-std::string FidelityHtml(const FidelityRun& run);
 
 }  // namespace foresight
