@@ -7,11 +7,12 @@
 #include "app/report_text.h"
 #include "common/error.h"
 #include "models/model_paths.h"
-#include "report/atomic_file.h"
-#include "validation/calibration_report.h"
-#include "validation/observed_kicks.h"
 #include "physics/physics_runs.h"
 #include "physics/physics_setup.h"
+#include "report/atomic_file.h"
+#include "validation/calibration_html.h"
+#include "validation/calibration_report.h"
+#include "validation/observed_kicks.h"
 
 namespace foresight {
 
@@ -54,8 +55,8 @@ void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem
   const std::vector<std::string> kicks =
       ChosenKicks(options, available, "the motions of robot '" + options.robot + "'");
   run.source = "physics";
-  run.situation_file = DisplayPath(situation_file, models);
-  run.physics_file = DisplayPath(setup->physics_file, models);
+  run.provenance.SetInput("situation", DisplayPath(situation_file, models));
+  run.provenance.SetInput("physics", DisplayPath(setup->physics_file, models));
   run.carpet_deceleration_mps2 = setup->params.carpet.rolling_deceleration_mps2;
   run.trials_per_kick = ParseCount("--trials", options.trials, 8, kMaxTrials);
   const double radius = setup->situation.field.ball.radius_m;
@@ -65,7 +66,7 @@ void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem
     request.state = setup->state;
     request.kick_index = *setup->situation.kicks.Find(kicks[k]);
     request.trials = run.trials_per_kick;
-    request.seed = CalibrationSeed(run.seed, request.kick_index);
+    request.seed = CalibrationSeed(run.provenance.seed, request.kick_index);
     request.threads = threads;
     request.record_trace = true;
     request.progress = TerminalProgress("calibrate " + kicks[k] + ":", "trials");
@@ -91,7 +92,7 @@ void CalibrateFromCsv(const CalibrateOptions& options, CalibrationRun& run, cons
   for (const std::string& name : ChosenKicks(options, observed.kick_names, options.from_csv)) {
     if (!base.Find(name)) {
       throw InputError(options.from_csv + ": kick: '" + name + "' is not a kick of " +
-                       run.base_kicks_file);
+                       run.provenance.Input("base_kicks"));
     }
     CalibratedKick kick;
     kick.observations = observed.by_kick.at(name);
@@ -115,11 +116,12 @@ void Fit(CalibrationRun& run) {
 std::string ModelNotes(const CalibrationRun& run) {
   std::string kicks;
   for (const CalibratedKick& k : run.kicks) kicks += (kicks.empty() ? "" : ", ") + k.fit.kick;
-  return "Calibrated by foresight calibrate " + run.version + " from " + run.source +
+  const RunProvenance& p = run.provenance;
+  return "Calibrated by foresight calibrate " + p.version + " from " + run.source +
          (run.trials_per_kick > 0 ? " (" + std::to_string(run.trials_per_kick) + " trials per kick)"
                                   : "") +
-         ", seed " + std::to_string(run.seed) + ", kicks: " + kicks + "; other values from " +
-         run.base_kicks_file + ".";
+         ", seed " + std::to_string(p.seed) + ", kicks: " + kicks + "; other values from " +
+         p.Input("base_kicks") + ".";
 }
 
 }  // namespace
@@ -155,10 +157,10 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
   const std::filesystem::path models =
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
   CalibrationRun run;
-  run.version = FORESIGHT_VERSION;
+  run.provenance.version = FORESIGHT_VERSION;
   run.robot = options.robot;
-  run.seed = ParseSeed(options.seed);
-  run.settings.seed = run.seed;
+  run.provenance.seed = ParseSeed(options.seed);
+  run.settings.seed = run.provenance.seed;
   run.settings.confidence = ParseNumber("--confidence", options.confidence, 0.5, 0.999);
   run.settings.resamples = ParseCount("--resamples", options.resamples, 100, 100000);
   const std::filesystem::path base_file = options.kicks_file.empty()
@@ -169,8 +171,11 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
     throw InputError(base_file.string() + ": robot: the kick model is for '" + run.base.robot +
                      "', not --robot '" + options.robot + "'");
   }
-  run.base_kicks_file = DisplayPath(base_file, models);
-  run.out_file = options.out_file;
+  // The report's order; physics fills in the first two, a CSV leaves them empty.
+  run.provenance.inputs = {{"situation", ""},
+                           {"physics", ""},
+                           {"base_kicks", DisplayPath(base_file, models)},
+                           {"out", options.out_file}};
   if (options.from_csv.empty()) {
     if (options.kick.empty() && !options.all) throw InputError("--kick or --all: say which kicks");
     CalibrateFromPhysics(options, models, run, run.base);
@@ -178,7 +183,8 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
     CalibrateFromCsv(options, run, run.base);
   }
   Fit(run);
-  run.run_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.provenance.run_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   // Everything is made before anything is written.
   const std::string model = KickModelJson(run.fitted, ModelNotes(run));

@@ -5,6 +5,9 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "app/cli_values.h"
+#include "validation/calibration.h"
+
 namespace foresight {
 
 struct CalibrateOptions {
@@ -12,7 +15,7 @@ struct CalibrateOptions {
   std::string kick;  // one kick, or --all
   bool all = false;
   std::string trials = "1000";
-  std::string seed = "1";
+  std::string seed = std::to_string(CalibrationSettings{}.seed);
   std::string threads = "0";
   std::string out_file;
   std::string report_dir;
@@ -20,8 +23,9 @@ struct CalibrateOptions {
   std::string kicks_file;      // the committed model to start from (default: the situation's)
   std::string physics_file;
   std::string from_csv;
-  std::string confidence = "0.95";
-  std::string resamples = "2000";
+  // The defaults of the fit are CalibrationSettings' (shown by --help).
+  std::string confidence = DefaultText(CalibrationSettings{}.confidence);
+  std::string resamples = std::to_string(CalibrationSettings{}.resamples);
 };
 
 void AddCalibrateCommand(CLI::App& app, CalibrateOptions& options);

@@ -96,4 +96,10 @@ void CheckReportDir(const std::string& dir, const std::string& flag) {
   }
 }
 
+std::string DefaultText(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.15g", value);
+  return text;
+}
+
 }  // namespace foresight

@@ -16,6 +16,10 @@ int ParseCount(const std::string& flag, const std::string& text, int lo, int hi)
 std::uint64_t ParseSeed(const std::string& text);  // for --seed: 0 .. 2^64 - 1
 double ParseNumber(const std::string& flag, const std::string& text, double lo, double hi);
 
+// A library setting's default as the command line shows it, so the default lives in one place
+// (the settings struct): integers in full, numbers in the shortest form ("0.95", not "0.950000").
+std::string DefaultText(double value);
+
 // Progress "LABEL done / total UNIT" on stderr, only when stderr is a terminal
 // (docs/ARCHITECTURE.md, "Output").
 std::function<void(int, int)> TerminalProgress(const std::string& label, const std::string& unit);

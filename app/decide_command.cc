@@ -3,7 +3,9 @@
 #include <iostream>
 
 #include "app/cli_values.h"
-#include "app/decision_output.h"
+#include "app/decision_json.h"
+#include "app/decision_svg.h"
+#include "app/decision_text.h"
 #include "common/checks.h"
 #include "common/error.h"
 #include "models/model_paths.h"

@@ -1,6 +1,7 @@
+#include "app/decision_json.h"
+
 #include <string>
 
-#include "app/decision_output.h"
 #include "app/report_text.h"
 
 namespace foresight {

@@ -1,10 +1,10 @@
-// What `foresight decide` shows of a decision: a text table, JSON (the contract), and an SVG
-// drawing of the hypotheses in the manner of Mellmann & Schlotter's Fig. 2.
+// What `foresight decide` shows of a decision: the decided run that its text table
+// (app/decision_text.h), JSON (the contract, app/decision_json.h) and SVG drawing of the
+// hypotheses in the manner of Mellmann & Schlotter's Fig. 2 (app/decision_svg.h) are made from.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <string>
 
 #include "planner/coarse_planner.h"
@@ -22,9 +22,5 @@ struct DecisionRun {
 
 // The name of kick `index` of the run's model, or "none" for -1.
 std::string KickName(const DecisionRun& run, int kick_index);
-
-std::string DecisionText(const DecisionRun& run);
-nlohmann::ordered_json DecisionJson(const DecisionRun& run);
-std::string DecisionSvg(const DecisionRun& run);
 
 }  // namespace foresight

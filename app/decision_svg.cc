@@ -1,8 +1,9 @@
+#include "app/decision_svg.h"
+
 #include <cstdio>
 #include <string>
 #include <vector>
 
-#include "app/decision_output.h"
 #include "app/report_text.h"
 #include "report/field_svg.h"
 

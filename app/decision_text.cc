@@ -1,16 +1,12 @@
+#include "app/decision_text.h"
+
 #include <cmath>
 #include <cstdio>
 #include <string>
 
-#include "app/decision_output.h"
 #include "app/report_text.h"
 
 namespace foresight {
-
-std::string KickName(const DecisionRun& run, int kick_index) {
-  if (kick_index < 0) return "none";
-  return run.planner->situation().kicks.kicks[static_cast<std::size_t>(kick_index)].name;
-}
 
 namespace {
 

@@ -6,11 +6,11 @@
 #include "app/cli_values.h"
 #include "app/report_text.h"
 #include "common/error.h"
-#include "models/model_paths.h"
-#include "report/atomic_file.h"
-#include "physics/physics_setup.h"
 #include "experiments/stability_report.h"
 #include "experiments/strategies_report.h"
+#include "models/model_paths.h"
+#include "physics/physics_setup.h"
+#include "report/atomic_file.h"
 
 namespace foresight {
 
@@ -22,6 +22,18 @@ std::filesystem::path ModelsFolder(const std::string& models_dir) {
 
 double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// An experiment's version, seed and inputs: its params file, its scene's name and kick model.
+RunProvenance ExperimentProvenance(const std::filesystem::path& params_file, const Situation& scene,
+                                   std::uint64_t seed, const std::filesystem::path& models) {
+  RunProvenance provenance;
+  provenance.version = FORESIGHT_VERSION;
+  provenance.seed = seed;
+  provenance.inputs = {{"file", DisplayPath(params_file, models)},
+                       {"situation", scene.name},
+                       {"kicks", DisplayPath(scene.kicks_file, models)}};
+  return provenance;
 }
 
 // Every output is computed before the first is written; each file is replaced atomically.
@@ -93,14 +105,10 @@ int RunStability(const StabilityOptions& o, const std::filesystem::path& models)
   CheckReportDir(o.out_dir, "--out");  // before hours of work, not after
 
   StabilityRun run;
-  run.version = FORESIGHT_VERSION;
-  run.params_file = DisplayPath(params.file, models);
-  run.situation_name = params.situation.name;
-  run.kicks_file = DisplayPath(params.situation.kicks_file, models);
+  run.provenance = ExperimentProvenance(params.file, params.situation, seed, models);
   run.params = &params;
-  run.seed = seed;
   run.result = RunStability(params, seed, threads, TerminalProgress("stability:", "poses"));
-  run.run_time_s = SecondsSince(start);
+  run.provenance.run_time_s = SecondsSince(start);
 
   const std::filesystem::path dir(o.out_dir);
   const ReportFiles files = {{dir / "stability.json", StabilityJson(run).dump(2) + "\n"},
@@ -124,27 +132,23 @@ int RunStrategiesExperiment(const StrategiesOptions& o, const std::filesystem::p
   }
 
   StrategiesRun run;
-  run.version = FORESIGHT_VERSION;
-  run.params_file = DisplayPath(params.file, models);
-  run.situation_name = params.situation.name;
-  run.kicks_file = DisplayPath(params.situation.kicks_file, models);
+  run.provenance = ExperimentProvenance(params.file, params.situation, seed, models);
   run.params = &params;
-  run.seed = seed;
   const auto progress = TerminalProgress("strategies:", "runs");
   if (o.physics) {
     auto setup = LoadPhysicsSetup(params.situation, models, o.physics_file);
-    RequireAllKickMotions(*setup, run.kicks_file);
+    RequireAllKickMotions(*setup, run.provenance.Input("kicks"));
     CheckReportDir(o.out_dir, "--out");  // before the work, not after
-    run.executor = "physics";
-    run.physics_file = DisplayPath(setup->physics_file, models);
+    run.provenance.SetInput("executor", "physics");
+    run.provenance.SetInput("physics", DisplayPath(setup->physics_file, models));
     run.result = RunStrategies(params, &*setup->simulator, seed, threads, progress);
   } else {
     CheckReportDir(o.out_dir, "--out");
-    run.executor = "coarse";
+    run.provenance.SetInput("executor", "coarse");
     run.result = RunStrategies(params, nullptr, seed, threads, progress);
   }
   run.summaries = SummariseStrategies(run.result);
-  run.run_time_s = SecondsSince(start);
+  run.provenance.run_time_s = SecondsSince(start);
 
   const std::filesystem::path dir(o.out_dir);
   const ReportFiles files = {{dir / "strategies.json", StrategiesJson(run).dump(2) + "\n"},

@@ -8,6 +8,7 @@
 #include "common/error.h"
 #include "models/model_paths.h"
 #include "report/atomic_file.h"
+#include "validation/fidelity_html.h"
 #include "validation/fidelity_report.h"
 
 namespace foresight {
@@ -38,21 +39,23 @@ int RunFidelityCommand(const FidelityOptions& options, const std::string& models
   const std::filesystem::path models =
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
   FidelityRun run;
-  run.version = FORESIGHT_VERSION;
+  run.provenance.version = FORESIGHT_VERSION;
   run.settings.physics_trials = ParseCount("--trials", options.trials, 2, 100000);
   run.settings.coarse_samples = ParseCount("--samples", options.samples, 0, 1000000);
   run.settings.converged_samples = ParseCount("--converged", options.converged, 1, 10000000);
-  run.settings.seed = ParseSeed(options.seed);
+  run.settings.seed = run.provenance.seed = ParseSeed(options.seed);
   run.settings.threads = ParseCount("--threads", options.threads, 0, 1024);
   run.settings.physics_file = options.physics_file;
   run.settings.progress = TerminalProgress("fidelity:", "situations");
   const FidelitySet set = LoadFidelitySet(options.situations, models, options.kicks_file);
-  run.set_name = set.name;
-  run.set_file = DisplayPath(set.file, models);
-  run.physics_file = options.physics_file.empty() ? "physics/<field>.json" : options.physics_file;
+  run.provenance.inputs = {{"situations_set", set.name},
+                           {"set_file", DisplayPath(set.file, models)},
+                           {"physics_file", options.physics_file.empty() ? "physics/<field>.json"
+                                                                         : options.physics_file}};
   run.rotations_rad = set.rotations_rad;
   run.result = RunFidelity(set, models, run.settings);
-  run.run_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.provenance.run_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const std::filesystem::path dir(options.out_dir);
   const ReportFiles files = {{dir / "fidelity.json", FidelityJson(run).dump(2) + "\n"},

@@ -5,15 +5,21 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "app/cli_values.h"
+#include "validation/fidelity.h"
+
 namespace foresight {
 
+// The defaults are FidelitySettings' (shown by --help).
 struct FidelityOptions {
   std::string situations = "default";  // a set file, or a name in MODELS/fidelity/
-  std::string trials = "30";           // physics trials per candidate
-  std::string samples = "0";           // coarse samples (0: the evaluation file's N)
-  std::string converged = "2000";      // samples of the converged coarse model
-  std::string seed = "1";
-  std::string threads = "0";
+  std::string trials = std::to_string(FidelitySettings{}.physics_trials);  // per candidate
+  // Coarse samples (0: the evaluation file's N).
+  std::string samples = std::to_string(FidelitySettings{}.coarse_samples);
+  // Samples of the converged coarse model.
+  std::string converged = std::to_string(FidelitySettings{}.converged_samples);
+  std::string seed = std::to_string(FidelitySettings{}.seed);
+  std::string threads = std::to_string(FidelitySettings{}.threads);
   std::string kicks_file;
   std::string physics_file;
   std::string out_dir;

@@ -24,16 +24,15 @@ int MapCountIndex(const StabilityRun& run) {
 
 Json ParamsJson(const StabilityRun& run) {
   const StabilityParams& p = *run.params;
-  return {{"file", run.params_file},
-          {"situation", run.situation_name},
-          {"kicks", run.kicks_file},
-          {"strategy", StrategyName(p.strategy)},
-          {"samples_per_decision", p.sample_counts},
-          {"grid_step_m", p.grid_step_m},
-          {"heading_step_deg", p.heading_step_rad * kRadToDeg},
-          {"repeats", p.repeats},
-          {"map_samples", p.map_samples},
-          {"rotation_bin_deg", p.rotation_bin_rad * kRadToDeg}};
+  Json j = InputsJson(run.provenance);
+  j.update({{"strategy", StrategyName(p.strategy)},
+            {"samples_per_decision", p.sample_counts},
+            {"grid_step_m", p.grid_step_m},
+            {"heading_step_deg", p.heading_step_rad * kRadToDeg},
+            {"repeats", p.repeats},
+            {"map_samples", p.map_samples},
+            {"rotation_bin_deg", p.rotation_bin_rad * kRadToDeg}});
+  return j;
 }
 
 // naoth never turns: with k kicks it chooses among k + 1 decisions, so its most likely one has
@@ -96,8 +95,8 @@ Json StabilityJson(const StabilityRun& run) {
   }
   const double worst = WorstUncertainShareFrom(r, 20);
   Json j = {{"experiment", "stability"},
-            {"version", run.version},
-            {"seed", run.seed},
+            {"version", run.provenance.version},
+            {"seed", run.provenance.seed},
             {"params", ParamsJson(run)},
             {"grid",
              {{"positions", r.grid.positions_F.size()},
@@ -108,7 +107,7 @@ Json StabilityJson(const StabilityRun& run) {
   j["max_share_at_most_20_from_20_samples"] = std::isfinite(worst) ? Json(worst) : Json(nullptr);
   const std::string note = ConstructionNote(run);
   if (!note.empty()) j["note"] = note;
-  j["run_time_s"] = run.run_time_s;
+  j["run_time_s"] = run.provenance.run_time_s;
   return j;
 }
 

@@ -3,23 +3,19 @@
 // field map, and a short text for the terminal.
 #pragma once
 
-#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "experiments/stability.h"
+#include "report/provenance.h"
 
 namespace foresight {
 
 struct StabilityRun {
-  std::string version;
-  std::string params_file;     // as displayed (relative to the models folder when inside it)
-  std::string situation_name;  // the scene (its situation's name)
-  std::string kicks_file;
+  // Inputs: "file" (the params file), "situation" (the scene's name), "kicks".
+  RunProvenance provenance;
   const StabilityParams* params = nullptr;
-  std::uint64_t seed = 0;
   StabilityResult result;
-  double run_time_s = 0.0;
 };
 
 // The largest share of poses with a most likely decision of <= 20 % over the sample counts

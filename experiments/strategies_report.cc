@@ -18,11 +18,7 @@ Json ParamsJson(const StrategiesRun& run) {
   const StrategiesParams& p = *run.params;
   Json strategies = Json::array();
   for (Strategy s : p.strategies) strategies.push_back(StrategyName(s));
-  Json j = {{"file", run.params_file},
-            {"situation", run.situation_name},
-            {"kicks", run.kicks_file},
-            {"executor", run.executor}};
-  if (!run.physics_file.empty()) j["physics"] = run.physics_file;
+  Json j = InputsJson(run.provenance);
   j.update({{"strategies", strategies},
             {"starts", p.starts},
             {"max_steps", p.max_steps},
@@ -118,7 +114,7 @@ std::vector<double> BinEdges(int bins, double width, double first = 0.0) {
 
 std::string StrategiesText(const StrategiesRun& run) {
   std::string text = Format("strategies: %d starts, kicks executed by %s\n", run.params->starts,
-                            run.executor.c_str());
+                            run.provenance.Input("executor").c_str());
   text +=
       "  strategy        goal    out  own goal  limit  kicks (mean)  time (s)  turn > 0  "
       "max turn\n";
@@ -147,9 +143,10 @@ Json StrategiesJson(const StrategiesRun& run) {
   for (const StrategySummary& s : run.summaries) summaries.push_back(SummaryJson(s));
   Json examples = Json::array();
   for (const StrategyRuns& runs : run.result.strategies) examples.push_back(ExampleJson(runs));
-  return {{"experiment", "strategies"},  {"version", run.version},  {"seed", run.seed},
-          {"params", ParamsJson(run)},   {"strategies", summaries}, {"example_runs", examples},
-          {"run_time_s", run.run_time_s}};
+  const RunProvenance& p = run.provenance;
+  return {{"experiment", "strategies"}, {"version", p.version},    {"seed", p.seed},
+          {"params", ParamsJson(run)},  {"strategies", summaries}, {"example_runs", examples},
+          {"run_time_s", p.run_time_s}};
 }
 
 std::string StrategiesRunsCsv(const StrategiesRun& run) {

@@ -4,25 +4,22 @@
 // (Fig. 5 bottom), the ball paths of every strategy from one start (Fig. 3), and a terminal text.
 #pragma once
 
-#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "experiments/strategy_stats.h"
+#include "report/provenance.h"
 
 namespace foresight {
 
 struct StrategiesRun {
-  std::string version;
-  std::string params_file, situation_name, kicks_file;  // files as displayed
-  std::string executor;                                 // "coarse" or "physics"
-  std::string physics_file;                             // with physics, as displayed
+  // Inputs: "file" (the params file), "situation" (the scene's name), "kicks", "executor"
+  // ("coarse" or "physics": what executed the kicks) and, with physics, "physics" (its file).
+  RunProvenance provenance;
   const StrategiesParams* params = nullptr;
-  std::uint64_t seed = 0;
   StrategiesResult result;
   std::vector<StrategySummary> summaries;
-  double run_time_s = 0.0;
 };
 
 std::string StrategiesText(const StrategiesRun& run);

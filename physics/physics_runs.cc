@@ -2,8 +2,9 @@
 
 #include <cmath>
 
-#include "common/random.h"
 #include "common/parallel_for.h"
+#include "common/random.h"
+#include "stats/statistics.h"
 
 namespace foresight {
 
@@ -23,48 +24,33 @@ std::vector<TrialResult> RunKickTrials(const PhysicsSimulator& simulator,
   return results;
 }
 
-namespace {
-
-double SampleSd(double sum, double sum_sq, int n) {
-  if (n < 2) return 0.0;
-  const double mean = sum / n;
-  return std::sqrt(std::max(0.0, (sum_sq - n * mean * mean) / (n - 1)));
-}
-
-}  // namespace
-
 TrialSummary Summarize(std::span<const TrialResult> results) {
   TrialSummary s;
   s.trials = static_cast<int>(results.size());
-  Vec2 sum(0, 0), sum_sq(0, 0);
-  double speed = 0.0, speed_sq = 0.0, cos_sum = 0.0, sin_sum = 0.0, time = 0.0;
+  std::vector<double> rest_x, rest_y, times, speeds, directions;
   for (const TrialResult& r : results) {
     ++s.categories[static_cast<int>(r.outcome.category)];
     ++s.first_contacts[static_cast<int>(r.outcome.first_contact)];
     s.launched += r.launched;
     s.settled += r.settled;
-    sum += r.outcome.p_F_rest;
-    sum_sq += r.outcome.p_F_rest.cwiseProduct(r.outcome.p_F_rest);
-    time += r.outcome.time_s;
+    rest_x.push_back(r.outcome.p_F_rest.x());
+    rest_y.push_back(r.outcome.p_F_rest.y());
+    times.push_back(r.outcome.time_s);
     if (!r.touched) continue;
     ++s.touched;
-    speed += r.launch_speed_mps;
-    speed_sq += r.launch_speed_mps * r.launch_speed_mps;
-    cos_sum += std::cos(r.launch_direction_rad);
-    sin_sum += std::sin(r.launch_direction_rad);
+    speeds.push_back(r.launch_speed_mps);
+    directions.push_back(r.launch_direction_rad);
   }
-  if (s.trials == 0) return s;
-  s.rest_mean_F = sum / s.trials;
-  s.rest_sd_F =
-      Vec2(SampleSd(sum.x(), sum_sq.x(), s.trials), SampleSd(sum.y(), sum_sq.y(), s.trials));
-  s.time_mean_s = time / s.trials;
-  if (s.touched > 0) {
-    s.launch_speed_mean_mps = speed / s.touched;
-    s.launch_speed_sd_mps = SampleSd(speed, speed_sq, s.touched);
-    s.launch_direction_mean_rad = std::atan2(sin_sum, cos_sum);
-    const double resultant = std::hypot(cos_sum, sin_sum) / s.touched;
-    s.launch_direction_sd_rad = std::sqrt(-2.0 * std::log(std::max(resultant, 1e-300)));
-  }
+  // The statistics' own mean, two-pass sd and circular summary (stats/statistics.h).
+  const MeanSd x = SampleMeanSd(rest_x), y = SampleMeanSd(rest_y), speed = SampleMeanSd(speeds);
+  s.rest_mean_F = Vec2(x.mean, y.mean);
+  s.rest_sd_F = Vec2(x.sd, y.sd);
+  s.time_mean_s = SampleMeanSd(times).mean;
+  s.launch_speed_mean_mps = speed.mean;
+  s.launch_speed_sd_mps = speed.sd;
+  const CircularSummary direction = SummarizeCircular(directions);
+  s.launch_direction_mean_rad = direction.mean_rad;
+  s.launch_direction_sd_rad = direction.sd_rad;
   return s;
 }
 

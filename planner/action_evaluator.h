@@ -61,6 +61,13 @@ inline void AddOutcome(HypothesisAccumulator& hypothesis, const Outcome& outcome
   }
 }
 
+// One simulated outcome's utility (eq. 5 for one sample), valuing an infield rest position.
+inline double OutcomeUtility(const Outcome& outcome, const PositionValue& value,
+                             const EvaluationParams& params) {
+  const bool infield = outcome.category == Category::kInfield;
+  return OutcomeUtility(outcome.category, infield ? value.Value(outcome.p_F_rest) : 0.0, params);
+}
+
 class SeamActionEvaluator final : public ActionEvaluator {
  public:
   SeamActionEvaluator(const Situation& situation, const OutcomeSimulator& simulator,

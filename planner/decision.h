@@ -20,22 +20,14 @@
 // and says so in `note`.
 #pragma once
 
-#include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "planner/action_evaluator.h"
 #include "planner/rotation_search.h"
+#include "planner/strategy_names.h"
 
 namespace foresight {
-
-enum class Strategy { kFast, kOptimalValue, kOptimalAll, kOptimalOne, kNaoth };
-
-std::string_view StrategyName(Strategy strategy);
-std::optional<Strategy> ParseStrategy(std::string_view name);
-std::vector<Strategy> AllStrategies();
-std::string StrategyNames();  // "fast, optimal_value, ..." for help texts and messages
 
 // Step 1's result for one kick.
 struct KickOption {

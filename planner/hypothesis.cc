@@ -17,7 +17,7 @@ ActionEvaluation HypothesisAccumulator::Finish(const EvaluationParams& params) c
     e.value_avg = value_sum_ / infield;
     e.potential_avg = potential_sum_ / infield;
   }
-  e.utility = e.value_avg * e.p_infield + params.goal_value * e.p_opp_goal;
+  e.utility = Utility(e.value_avg, e.p_infield, e.p_opp_goal, params);
   e.too_risky = e.p_out > params.max_out_share || e.Count(Category::kOwnGoal) > 0;
   e.trimmed_utility = e.too_risky ? 0.0 : e.utility;
   return e;

@@ -13,6 +13,21 @@
 
 namespace foresight {
 
+// Eq. 5 from the value of the infield samples and the shares; v_max is params.goal_value.
+inline double Utility(double value_avg, double p_infield, double p_opp_goal,
+                      const EvaluationParams& params) {
+  return value_avg * p_infield + params.goal_value * p_opp_goal;
+}
+
+// Eq. 5 for one outcome (a hypothesis of one sample): the rest position's value `value` when
+// infield, v_max for an opponent goal, 0 otherwise. Its mean over a hypothesis is the
+// hypothesis's utility; physics reports use it per trial for intervals.
+inline double OutcomeUtility(Category category, double value, const EvaluationParams& params) {
+  const bool infield = category == Category::kInfield;
+  return Utility(infield ? value : 0.0, infield ? 1.0 : 0.0,
+                 category == Category::kOppGoal ? 1.0 : 0.0, params);
+}
+
 struct ActionEvaluation {
   int samples = 0;
   std::array<int, kCategoryCount> counts{};  // indexed by Category

@@ -1,4 +1,4 @@
-#include "planner/decision.h"
+#include "planner/strategy_names.h"
 
 namespace foresight {
 

@@ -94,6 +94,28 @@ double CircularSd(double resultant_length) {
 
 }  // namespace
 
+MeanSd SampleMeanSd(std::span<const double> x) {
+  if (x.empty()) return {};
+  MeanSd s;
+  s.mean = Mean(x);
+  if (x.size() < 2) return s;
+  double m2 = 0.0;
+  for (double v : x) m2 += (v - s.mean) * (v - s.mean);
+  s.sd = std::sqrt(m2 / (static_cast<double>(x.size()) - 1.0));
+  return s;
+}
+
+CircularSummary SummarizeCircular(std::span<const double> angles_rad) {
+  if (angles_rad.empty()) return {};
+  double cos_sum = 0.0, sin_sum = 0.0;
+  for (double a : angles_rad) {
+    cos_sum += std::cos(a);
+    sin_sum += std::sin(a);
+  }
+  const Resultant all = FromSums(cos_sum, sin_sum, angles_rad.size());
+  return {all.mean_rad, all.length, CircularSd(all.length)};
+}
+
 Interval PercentileInterval(std::vector<double> values, double confidence) {
   std::sort(values.begin(), values.end());
   const double alpha = 1.0 - confidence;
@@ -107,7 +129,9 @@ NormalFit FitNormal(std::span<const double> x, double confidence) {
   NormalFit fit;
   fit.n = static_cast<int>(x.size());
   const double n = static_cast<double>(x.size());
-  fit.mean = Mean(x);
+  const MeanSd mean_sd = SampleMeanSd(x);
+  fit.mean = mean_sd.mean;
+  fit.sd = mean_sd.sd;
   double m2 = 0.0, m3 = 0.0, m4 = 0.0;  // two-pass central moments, accurate for any offset
   for (double v : x) {
     const double d = v - fit.mean, d2 = d * d;
@@ -115,7 +139,6 @@ NormalFit FitNormal(std::span<const double> x, double confidence) {
     m3 += d2 * d;
     m4 += d2 * d2;
   }
-  fit.sd = std::sqrt(m2 / (n - 1.0));
   m2 /= n;
   m3 /= n;
   m4 /= n;
@@ -138,20 +161,18 @@ CircularFit FitCircular(std::span<const double> angles_rad, double confidence, i
   CheckConfidence("FitCircular", confidence);
   CheckResamples("FitCircular", resamples);
   const std::size_t n = angles_rad.size();
+  CircularFit fit;
+  fit.n = static_cast<int>(n);
+  const CircularSummary all = SummarizeCircular(angles_rad);
+  fit.mean_rad = all.mean_rad;
+  fit.resultant_length = all.resultant_length;
+  fit.sd_rad = all.sd_rad;
+  // The bootstrap resamples the cosines and sines rather than the angles.
   std::vector<double> cosines(n), sines(n);
-  double cos_sum = 0.0, sin_sum = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     cosines[i] = std::cos(angles_rad[i]);
     sines[i] = std::sin(angles_rad[i]);
-    cos_sum += cosines[i];
-    sin_sum += sines[i];
   }
-  CircularFit fit;
-  fit.n = static_cast<int>(n);
-  const Resultant all = FromSums(cos_sum, sin_sum, n);
-  fit.mean_rad = all.mean_rad;
-  fit.resultant_length = all.length;
-  fit.sd_rad = CircularSd(all.length);
   std::vector<double> means(resamples), sds(resamples);
   for (int r = 0; r < resamples; ++r) {
     RandomStream stream(StreamKey(seed, static_cast<std::uint64_t>(r), kBootstrapDomain));

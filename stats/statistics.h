@@ -26,6 +26,24 @@ struct Interval {
   bool Contains(double x) const { return low <= x && x <= high; }
 };
 
+// --- summaries without intervals ------------------------------------------------------------
+// Mean and sample standard deviation (n - 1), in two passes (sum of squared deviations from the
+// mean), so values far from 0 lose no precision. No values: {0, 0}; one value: sd 0.
+struct MeanSd {
+  double mean = 0.0;
+  double sd = 0.0;
+};
+MeanSd SampleMeanSd(std::span<const double> x);
+
+// Circular mean atan2(sum sin, sum cos) in (-pi, pi], mean resultant length R in [0, 1] and
+// circular standard deviation sqrt(-2 ln R) (infinite for R = 0). No angles: all 0.
+struct CircularSummary {
+  double mean_rad = 0.0;
+  double resultant_length = 0.0;
+  double sd_rad = 0.0;
+};
+CircularSummary SummarizeCircular(std::span<const double> angles_rad);
+
 // --- normal model (speeds) ------------------------------------------------------------------
 struct NormalFit {
   int n = 0;

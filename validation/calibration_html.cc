@@ -1,14 +1,15 @@
 // The calibration report as one HTML page: per kick a table of the fit against the committed
 // model, the speed histogram with the fitted normal, its QQ plot, the direction rose and the
 // direction histogram; then the rolling deceleration.
+#include "validation/calibration_html.h"
+
 #include <cmath>
 
 #include "common/geometry.h"
-#include "validation/calibration_report.h"
-#include "stats/distributions.h"
 #include "report/charts.h"
 #include "report/html_report.h"
 #include "report/report_format.h"
+#include "stats/distributions.h"
 
 namespace foresight {
 
@@ -118,19 +119,21 @@ void DecelerationSection(HtmlReport& html, const CalibrationRun& run) {
 }  // namespace
 
 std::string CalibrationHtml(const CalibrationRun& run) {
+  const RunProvenance& p = run.provenance;
   HtmlReport html("Kick calibration: " + run.robot);
-  html.KeyValues({{"source", run.source},
-                  {"robot", run.robot},
-                  {"seed", std::to_string(run.seed)},
-                  {"trials per kick", std::to_string(run.trials_per_kick)},
-                  {"intervals", Fixed(run.settings.confidence * 100.0, 0) + " %, bootstrap " +
-                                    std::to_string(run.settings.resamples) + " resamples"},
-                  {"situation", run.situation_file},
-                  {"physics", run.physics_file},
-                  {"committed model", run.base_kicks_file},
-                  {"fitted model written to", run.out_file},
-                  {"version", run.version},
-                  {"run time", Fixed(run.run_time_s, 1) + " s"}});
+  std::vector<std::pair<std::string, std::string>> header{
+      {"source", run.source},
+      {"robot", run.robot},
+      {"seed", std::to_string(p.seed)},
+      {"trials per kick", std::to_string(run.trials_per_kick)},
+      {"intervals", Fixed(run.settings.confidence * 100.0, 0) + " %, bootstrap " +
+                        std::to_string(run.settings.resamples) + " resamples"},
+      {"situation", p.Input("situation")},
+      {"physics", p.Input("physics")},
+      {"committed model", p.Input("base_kicks")},
+      {"fitted model written to", p.Input("out")}};
+  for (auto& row : ProvenanceRows(p)) header.push_back(std::move(row));
+  html.KeyValues(header);
   for (const std::string& w : CalibrationWarnings(run)) html.Warning(w);
   for (const CalibratedKick& kick : run.kicks) {
     html.Heading(

@@ -133,20 +133,18 @@ std::string CalibrationText(const CalibrationRun& run) {
 }
 
 Json CalibrationJson(const CalibrationRun& run) {
+  const RunProvenance& p = run.provenance;
   Json j{{"tool", "foresight calibrate"},
-         {"version", run.version},
+         {"version", p.version},
          {"robot", run.robot},
          {"source", run.source},
-         {"seed", run.seed},
+         {"seed", p.seed},
          {"trials_per_kick", run.trials_per_kick},
          {"confidence", run.settings.confidence},
          {"bootstrap_resamples", run.settings.resamples},
          {"normality_level", run.settings.normality_level},
-         {"files", Json{{"situation", run.situation_file},
-                        {"physics", run.physics_file},
-                        {"base_kicks", run.base_kicks_file},
-                        {"out", run.out_file}}},
-         {"run_time_s", run.run_time_s}};
+         {"files", InputsJson(p)},
+         {"run_time_s", p.run_time_s}};
   j["kicks"] = Json::array();
   for (const CalibratedKick& kick : run.kicks) j["kicks"].push_back(KickJson(run, kick));
   j["deceleration"] = run.deceleration ? DecelerationJson(*run.deceleration) : Json(nullptr);

@@ -2,7 +2,6 @@
 // per fitted kick), a self-contained HTML page, and a short text for the terminal.
 #pragma once
 
-#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -10,6 +9,7 @@
 
 #include "models/kick_model.h"
 #include "physics/trial.h"
+#include "report/provenance.h"
 #include "validation/calibration.h"
 
 namespace foresight {
@@ -24,12 +24,11 @@ struct CalibratedKick {
 };
 
 struct CalibrationRun {
-  std::string version;
+  // Inputs: "situation", "physics" (both "" for a CSV), "base_kicks", "out" (the model written).
+  RunProvenance provenance;
   std::string robot;
-  std::string source;  // "physics" or the CSV file
-  std::string situation_file, physics_file, base_kicks_file, out_file;
+  std::string source;       // "physics" or the CSV file
   int trials_per_kick = 0;  // physics only
-  std::uint64_t seed = 0;
   CalibrationSettings settings;
   std::optional<double> carpet_deceleration_mps2;  // physics: the carpet's truth
   int speeds_from_rest = 0;                        // CSV: speeds derived from rest positions
@@ -37,7 +36,6 @@ struct CalibrationRun {
   KickModel fitted;
   std::vector<CalibratedKick> kicks;
   std::optional<DecelerationFit> deceleration;  // pooled over all kicks
-  double run_time_s = 0.0;
 };
 
 // Plain statements of what does not fit (for text and HTML): an empty list means none.
@@ -47,6 +45,5 @@ std::string CalibrationText(const CalibrationRun& run);
 nlohmann::ordered_json CalibrationJson(const CalibrationRun& run);
 std::string CalibrationObservationsCsv(const CalibrationRun& run);
 std::string CalibrationSummaryCsv(const CalibrationRun& run);
-std::string CalibrationHtml(const CalibrationRun& run);
 
 }  // namespace foresight

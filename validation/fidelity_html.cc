@@ -1,10 +1,10 @@
 // The fidelity report as one HTML page: aggregates per situation class with intervals, the
 // strategies' decision agreement, the coarse-vs-physics utility scatter, the distributions of
 // tau and regret, and the worst ten situations drawn on the field.
+#include "validation/fidelity_html.h"
 
 #include "common/geometry.h"
 #include "report/charts.h"
-#include "validation/fidelity_report.h"
 #include "report/field_svg.h"
 #include "report/html_report.h"
 #include "report/report_format.h"
@@ -140,19 +140,20 @@ std::string FidelityHtml(const FidelityRun& run) {
     if (!rotations.empty()) rotations += ' ';
     rotations += Fixed(rot * kRadToDeg, 0);
   }
-  html.KeyValues(
-      {{"situations",
-        run.set_name + " (" + std::to_string(r.situations.size()) + ", " + run.set_file + ")"},
-       {"candidate rotations (deg)", rotations},
-       {"coarse samples N", std::to_string(r.coarse_samples)},
-       {"converged samples", std::to_string(run.settings.converged_samples)},
-       {"physics trials M", std::to_string(run.settings.physics_trials) + " per candidate (" +
-                                std::to_string(r.physics_trials_run) + " in all; " +
+  const RunProvenance& p = run.provenance;
+  std::vector<std::pair<std::string, std::string>> header{
+      {"situations", p.Input("situations_set") + " (" + std::to_string(r.situations.size()) + ", " +
+                         p.Input("set_file") + ")"},
+      {"candidate rotations (deg)", rotations},
+      {"coarse samples N", std::to_string(r.coarse_samples)},
+      {"converged samples", std::to_string(run.settings.converged_samples)},
+      {"physics trials M", std::to_string(run.settings.physics_trials) + " per candidate (" +
+                               std::to_string(r.physics_trials_run) + " in all; " +
                                 StatusCountsText(r.physics_status) + ")"},
-       {"seed", std::to_string(run.settings.seed)},
-       {"physics", run.physics_file},
-       {"version", run.version},
-       {"run time", Fixed(run.run_time_s, 1) + " s"}});
+      {"seed", std::to_string(p.seed)},
+      {"physics", p.Input("physics_file")}};
+  for (auto& row : ProvenanceRows(p)) header.push_back(std::move(row));
+  html.KeyValues(header);
   html.Heading(2, "Agreement");
   SummaryTables(html, r);
   Distributions(html, r);

@@ -74,7 +74,8 @@ Json SituationJson(const SituationFidelity& s) {
 
 std::string FidelityText(const FidelityRun& run) {
   const FidelityResult& r = run.result;
-  std::string out = "fidelity on '" + run.set_name + "': " + std::to_string(r.situations.size()) +
+  std::string out = "fidelity on '" + run.provenance.Input("situations_set") +
+                    "': " + std::to_string(r.situations.size()) +
                     " situations, coarse N = " + std::to_string(r.coarse_samples) +
                     ", converged N = " + std::to_string(run.settings.converged_samples) +
                     ", physics M = " + std::to_string(run.settings.physics_trials) + " (" +
@@ -104,21 +105,19 @@ Json FidelityJson(const FidelityRun& run) {
   const FidelityResult& r = run.result;
   std::vector<double> rotations_deg;
   for (double rot : run.rotations_rad) rotations_deg.push_back(rot * kRadToDeg);
-  Json j{{"tool", "foresight fidelity"},
-         {"version", run.version},
-         {"situations_set", run.set_name},
-         {"set_file", run.set_file},
-         {"physics_file", run.physics_file},
-         {"seed", run.settings.seed},
-         {"coarse_samples", r.coarse_samples},
-         {"converged_samples", run.settings.converged_samples},
-         {"physics_trials", run.settings.physics_trials},
-         {"confidence", run.settings.confidence},
-         {"rotations_deg", rotations_deg},
-         {"physics_trials_run", r.physics_trials_run},
-         {"physics_missed", r.physics_status.missed},
-         {"physics_not_settled", r.physics_status.not_settled},
-         {"run_time_s", run.run_time_s}};
+  const RunProvenance& p = run.provenance;
+  Json j{{"tool", "foresight fidelity"}, {"version", p.version}};
+  AddInputsJson(j, p);
+  j.update({{"seed", p.seed},
+            {"coarse_samples", r.coarse_samples},
+            {"converged_samples", run.settings.converged_samples},
+            {"physics_trials", run.settings.physics_trials},
+            {"confidence", run.settings.confidence},
+            {"rotations_deg", rotations_deg},
+            {"physics_trials_run", r.physics_trials_run},
+            {"physics_missed", r.physics_status.missed},
+            {"physics_not_settled", r.physics_status.not_settled},
+            {"run_time_s", p.run_time_s}});
   j["classes"] = Json::array();
   for (const ClassSummary& c : r.classes) {
     j["classes"].push_back(Json{{"class", c.situation_class},

@@ -2,27 +2,26 @@
 // with inline SVG, and a short text for the terminal.
 #pragma once
 
-#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "report/provenance.h"
 #include "validation/fidelity.h"
 
 namespace foresight {
 
 struct FidelityRun {
-  std::string version;
-  std::string set_name, set_file, physics_file;
+  // Inputs: "situations_set" (the set's name), "set_file", "physics_file"; the seed is the
+  // settings' seed.
+  RunProvenance provenance;
   FidelitySettings settings;
   std::vector<double> rotations_rad;
   FidelityResult result;
-  double run_time_s = 0.0;
 };
 
 std::string FidelityText(const FidelityRun& run);
 nlohmann::ordered_json FidelityJson(const FidelityRun& run);
 std::string FidelityCandidatesCsv(const FidelityRun& run);
 std::string FidelitySituationsCsv(const FidelityRun& run);
-std::string FidelityHtml(const FidelityRun& run);
 
 }  // namespace foresight

@@ -28,10 +28,7 @@ PhysicsHypothesis PhysicsActionEvaluator::Run(int kick_index, double rotation_ra
   HypothesisAccumulator hypothesis;
   for (const Outcome& outcome : h.outcomes) {
     AddOutcome(hypothesis, outcome, value_);
-    double utility = 0.0;
-    if (outcome.category == Category::kInfield) utility = value_.Value(outcome.p_F_rest);
-    if (outcome.category == Category::kOppGoal) utility = situation_.evaluation.goal_value;
-    h.utilities.push_back(utility);
+    h.utilities.push_back(OutcomeUtility(outcome, value_, situation_.evaluation));
   }
   h.evaluation = hypothesis.Finish(situation_.evaluation);
   return h;

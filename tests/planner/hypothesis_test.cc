@@ -53,5 +53,19 @@ TEST(HypothesisTest, AllInGoalIsWorthTheGoalValue) {
   EXPECT_EQ(e.value_avg, 0.0);
 }
 
+TEST(HypothesisTest, OutcomeUtilityIsEq5ForOneSample) {
+  const EvaluationParams p = Params();
+  EXPECT_EQ(OutcomeUtility(Category::kInfield, 0.37, p), 0.37);
+  EXPECT_EQ(OutcomeUtility(Category::kOppGoal, 0.37, p), p.goal_value);
+  EXPECT_EQ(OutcomeUtility(Category::kOut, 0.37, p), 0.0);
+  EXPECT_EQ(OutcomeUtility(Category::kOwnGoal, 0.37, p), 0.0);
+  // Its mean over a hypothesis is the hypothesis's utility.
+  const ActionEvaluation e = Make(2, 0.5, 1, 0, 1);
+  const double mean = (2 * OutcomeUtility(Category::kInfield, 0.5, p) +
+                       OutcomeUtility(Category::kOppGoal, 0.0, p)) /
+                      4.0;
+  EXPECT_DOUBLE_EQ(e.utility, mean);
+}
+
 }  // namespace
 }  // namespace foresight

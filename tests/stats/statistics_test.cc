@@ -320,5 +320,27 @@ TEST(StatisticsInvalidInputTest, ThrowsNamingTheFunction) {
   ExpectInvalid([&] { return KendallTauB(with_nan, with_nan); }, "KendallTauB");
 }
 
+TEST(SummaryTest, MeanSdIsTwoPassAndStableFarFromZero) {
+  // A sum of squares would lose every digit of this sd at an offset of 1e9.
+  const std::vector<double> x = {1e9 + 1.0, 1e9 + 2.0, 1e9 + 3.0};
+  const MeanSd s = SampleMeanSd(x);
+  EXPECT_DOUBLE_EQ(s.mean, 1e9 + 2.0);
+  EXPECT_DOUBLE_EQ(s.sd, 1.0);
+  EXPECT_EQ(SampleMeanSd(std::vector<double>{4.0}).sd, 0.0);
+  EXPECT_EQ(SampleMeanSd(std::vector<double>{}).mean, 0.0);
+}
+
+TEST(SummaryTest, CircularSummaryWrapsAndMatchesTheFit) {
+  const std::vector<double> angles = {std::numbers::pi - 0.1, -std::numbers::pi + 0.1,
+                                      std::numbers::pi - 0.05, -std::numbers::pi + 0.05};
+  const CircularSummary s = SummarizeCircular(angles);
+  EXPECT_NEAR(std::abs(s.mean_rad), std::numbers::pi, 1e-12);
+  const CircularFit fit = FitCircular(angles, 0.95, 100, 1);
+  EXPECT_EQ(s.mean_rad, fit.mean_rad);
+  EXPECT_EQ(s.sd_rad, fit.sd_rad);
+  EXPECT_EQ(s.resultant_length, fit.resultant_length);
+  EXPECT_EQ(SummarizeCircular(std::vector<double>{}).sd_rad, 0.0);
+}
+
 }  // namespace
 }  // namespace foresight
