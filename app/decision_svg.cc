@@ -103,7 +103,7 @@ std::string DecisionSvg(const DecisionRun& run) {
       DrawKickSamples(canvas, run, evaluator, k);
   }
   canvas.DrawDot(ball, canvas.Px(s.field.ball.radius_m), "fill:#ff7f00;stroke:#000;stroke-width:1");
-  if (run.decision.kick_index >= 0) {
+  if (run.decision.kick_index != kNoKick) {
     const KickSpec& kick = s.kicks.kicks[static_cast<std::size_t>(run.decision.kick_index)];
     const double heading = s.state.robot.theta_rad + run.decision.rotation_rad + kick.direction_rad;
     canvas.DrawArrow(ball, ball + 0.6 * UnitVector(heading), "#000000");

@@ -51,7 +51,7 @@ std::string DecisionText(const DecisionRun& run) {
                              std::string(k.choice.evaluation.too_risky ? " (too risky)" : "");
     out += Row(name, Format("%+.1f", k.choice.rotation_rad * kRadToDeg), k.choice.evaluation, mark);
   }
-  out += Row("none", "0.0", d.none, d.kick_index < 0 ? "<- chosen" : "");
+  out += Row("none", "0.0", d.none, d.kick_index == kNoKick ? "<- chosen" : "");
   return out;
 }
 

@@ -16,12 +16,6 @@ namespace {
 constexpr int kMaxTrials = 1000000;
 constexpr int kMaxThreads = 1024;
 
-std::string KickNames(const KickModel& kicks) {
-  std::string names;
-  for (const KickSpec& k : kicks.kicks) names += (names.empty() ? "" : ", ") + k.name;
-  return names;
-}
-
 }  // namespace
 
 void AddSimulateCommand(CLI::App& app, SimulateOptions& options) {
@@ -56,7 +50,7 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
   const std::optional<int> kick = situation.kicks.Find(options.kick);
   if (!kick) {
     throw InputError("--kick: no kick '" + options.kick + "' in " + situation.kicks_file.string() +
-                     " (one of: " + KickNames(situation.kicks) + ")");
+                     " (one of: " + situation.kicks.Names() + ")");
   }
   const auto setup = LoadPhysicsSetup(std::move(situation), models, options.physics_file);
   if (!setup->robot.FindMotion(options.kick)) {

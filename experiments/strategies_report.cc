@@ -128,7 +128,7 @@ std::string StrategiesText(const StrategiesRun& run) {
         s.max_turn_deg);
   }
   text += "  (kicks, time and turns over the runs that ended in a goal or out)\n";
-  if (!run.physics_file.empty()) {
+  if (run.provenance.Input("executor") == "physics") {
     for (const StrategySummary& s : run.summaries) {
       text += Format("  physics kicks of %s: %s (still played as they happened)\n",
                      std::string(StrategyName(s.strategy)).c_str(),
@@ -220,7 +220,7 @@ std::string StrategiesPathsSvg(const StrategiesRun& run) {
     BallPath path;
     path.balls_F.push_back(run.result.starts[static_cast<std::size_t>(start)].p_F_ball);
     for (const StrategyStep& step : runs.example.steps_taken) {
-      if (step.kick_index >= 0) path.balls_F.push_back(step.outcome.p_F_rest);
+      if (step.kick_index != kNoKick) path.balls_F.push_back(step.outcome.p_F_rest);
     }
     path.name = Format("%s: %d kicks, %s", std::string(StrategyName(runs.strategy)).c_str(),
                        runs.example.kicks, std::string(RunEndName(runs.example.end)).c_str());

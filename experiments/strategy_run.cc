@@ -102,7 +102,7 @@ StrategyRun RunStrategy(const StrategyRunContext& context, Strategy strategy,
     // Turning around the ball: the ball stays, the robot's heading changes by the rotation.
     run.around_ball_s += std::abs(d.rotation_rad) / params.turn_around_ball_speed_radps;
     const double heading = WrapAngle(robot.theta_rad + d.rotation_rad);
-    if (d.kick_index >= 0) {
+    if (d.kick_index != kNoKick) {
       taken.outcome =
           Execute(context, robot, ball, d.kick_index, d.rotation_rad,
                   StreamKey(run_key, static_cast<std::uint64_t>(step), kExecutionDomain));
@@ -115,7 +115,7 @@ StrategyRun RunStrategy(const StrategyRunContext& context, Strategy strategy,
     }
     robot = {SpotFor(ball, heading, params.situation.state.p_R_ball), heading};
     if (record_steps) run.steps_taken.push_back(taken);
-    if (d.kick_index >= 0 && taken.outcome.category != Category::kInfield) {
+    if (d.kick_index != kNoKick && taken.outcome.category != Category::kInfield) {
       run.end = EndOf(taken.outcome.category);
       return run;
     }

@@ -18,6 +18,17 @@ std::optional<int> KickModel::Find(const std::string& name) const {
   return std::nullopt;
 }
 
+std::string KickModel::NameOf(int kick_index) const {
+  if (kick_index == kNoKick) return "none";
+  return kicks.at(static_cast<std::size_t>(kick_index)).name;
+}
+
+std::string KickModel::Names() const {
+  std::string names;
+  for (const KickSpec& k : kicks) names += (names.empty() ? "" : ", ") + k.name;
+  return names;
+}
+
 void KickModel::Validate() const {
   RequireInRange("rolling_deceleration_mps2", rolling_deceleration_mps2, 1e-3, 100.0);
   if (kicks.empty()) throw InputError("kicks: must list at least one kick");

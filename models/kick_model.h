@@ -20,6 +20,9 @@ struct KickSpec {
   double sigma_direction_rad = 0.0;
 };
 
+// The kick index of the `none` action: no kick, the ball stays where it lies.
+inline constexpr int kNoKick = -1;
+
 struct KickModel {
   std::string robot;
   double rolling_deceleration_mps2 = 0.0;
@@ -27,6 +30,10 @@ struct KickModel {
 
   // Index of the kick called `name`, if there is one.
   std::optional<int> Find(const std::string& name) const;
+  // The name of kick `kick_index`, or "none" for kNoKick.
+  std::string NameOf(int kick_index) const;
+  // "forward, side_kick_left, ..." for messages and help texts.
+  std::string Names() const;
   void Validate() const;
 };
 

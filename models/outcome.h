@@ -49,12 +49,12 @@ struct DrawnState {
   Vec2 p_F_ball{0.0, 0.0};
 };
 
-// One concrete action. kick_index < 0 is the `none` action (the ball stays). The robot first
+// One concrete action. kick_index == kNoKick (models/kick_model.h) is the `none` action (the ball stays). The robot first
 // turns around the ball by rotation_rad (the ball stays put, the robot's heading changes by it),
 // then kicks. launch_* are the coarse model's drawn launch in the turned robot frame; a physics
 // simulator ignores them and draws its physical perturbations from `stream` instead.
 struct ConcreteAction {
-  int kick_index = -1;
+  int kick_index = kNoKick;
   double rotation_rad = 0.0;
   double launch_speed_mps = 0.0;
   double launch_direction_rad = 0.0;

@@ -24,7 +24,7 @@ Outcome PhysicsSimulator::Simulate(const DrawnState& state, const ConcreteAction
 
 TrialResult PhysicsSimulator::Run(const DrawnState& state, const ConcreteAction& action,
                                   bool record_trace) const {
-  if (action.kick_index < 0) {
+  if (action.kick_index == kNoKick) {
     TrialResult result;
     result.outcome.p_F_rest = state.p_F_ball;
     result.outcome.category = ClassifyPosition(scene_.lines, state.p_F_ball);

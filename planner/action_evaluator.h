@@ -29,7 +29,7 @@ class ActionEvaluator {
       : situation_(situation), state_(state) {}
   virtual ~ActionEvaluator() = default;
 
-  // kick_index < 0: the `none` action (the ball stays where it is).
+  // kick_index == kNoKick: the `none` action (the ball stays where it is).
   virtual ActionEvaluation Evaluate(int kick_index, double rotation_rad) = 0;
   // For searches over rotations: may stop simulating as soon as the action is certain to be
   // trimmed, and then only too_risky and trimmed_utility (0) are meaningful.

@@ -26,7 +26,7 @@ CoarseActionEvaluator::CoarseActionEvaluator(const Situation& situation, const S
 
 Outcome CoarseActionEvaluator::SimulateOne(int kick_index, std::size_t sample, double cos_rho,
                                            double sin_rho) const {
-  if (kick_index < 0) return RollBall(world_, p_F_ball_[sample], Vec2(1.0, 0.0), 0.0);
+  if (kick_index == kNoKick) return RollBall(world_, p_F_ball_[sample], Vec2(1.0, 0.0), 0.0);
   const Launch& launch =
       launches_[static_cast<std::size_t>(kick_index) * p_F_ball_.size() + sample];
   const Vec2& u = launch.direction_F;

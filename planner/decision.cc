@@ -213,7 +213,7 @@ Decision Decide(ActionEvaluator& evaluator, Strategy strategy) {
           ApplyNaothRule(situation.evaluation.naoth_rule, decision.kicks, ctx.none);
       decision.kick_index = choice.kick_index;
       decision.rotation_rad =
-          choice.kick_index < 0 ? FaceGoalRotation(situation.field, evaluator.state()) : 0.0;
+          choice.kick_index == kNoKick ? FaceGoalRotation(situation.field, evaluator.state()) : 0.0;
       break;
     }
   }

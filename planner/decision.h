@@ -39,7 +39,7 @@ struct KickOption {
 
 struct Decision {
   Strategy strategy = Strategy::kOptimalValue;
-  int kick_index = -1;  // -1: none
+  int kick_index = kNoKick;
   double rotation_rad = 0.0;
   std::vector<KickOption> kicks;  // one per kick of the model, in its order
   ActionEvaluation none;          // leaving the ball where it is

@@ -18,7 +18,7 @@
 namespace foresight {
 
 struct NaothChoice {
-  int kick_index = -1;  // -1: none
+  int kick_index = kNoKick;
 };
 
 NaothChoice ApplyNaothRule(const NaothRuleParams& params, const std::vector<KickOption>& kicks,

@@ -35,7 +35,7 @@ ConcreteAction MakeAction(const KickModel& kicks, int kick_index, double rotatio
   // A key of its own: the sample's stream already drew the state and the kick noise, and a
   // simulator that draws more (physics) must not repeat those numbers.
   action.stream = StreamKey(sample.stream, 0, kActionStreamDomain);
-  if (kick_index >= 0) {
+  if (kick_index != kNoKick) {
     const KickSpec& kick = kicks.kicks[static_cast<std::size_t>(kick_index)];
     action.launch_speed_mps = kick.speed_mps + kick.sigma_speed_mps * sample.z_speed;
     action.launch_direction_rad =

@@ -1,40 +1,23 @@
 #include "planner/strategy_names.h"
 
+#include "common/enum_names.h"
+
 namespace foresight {
+namespace {
 
-std::string_view StrategyName(Strategy strategy) {
-  switch (strategy) {
-    case Strategy::kFast:
-      return "fast";
-    case Strategy::kOptimalValue:
-      return "optimal_value";
-    case Strategy::kOptimalAll:
-      return "optimal_all";
-    case Strategy::kOptimalOne:
-      return "optimal_one";
-    case Strategy::kNaoth:
-      return "naoth";
-  }
-  return "?";
-}
+constexpr EnumNames<Strategy, 5> kStrategyNames{{{
+    {Strategy::kFast, "fast"},
+    {Strategy::kOptimalValue, "optimal_value"},
+    {Strategy::kOptimalAll, "optimal_all"},
+    {Strategy::kOptimalOne, "optimal_one"},
+    {Strategy::kNaoth, "naoth"},
+}}};
 
-std::vector<Strategy> AllStrategies() {
-  return {Strategy::kFast, Strategy::kOptimalValue, Strategy::kOptimalAll, Strategy::kOptimalOne,
-          Strategy::kNaoth};
-}
+}  // namespace
 
-std::string StrategyNames() {
-  std::string names;
-  for (Strategy s : AllStrategies())
-    names += (names.empty() ? "" : ", ") + std::string(StrategyName(s));
-  return names;
-}
-
-std::optional<Strategy> ParseStrategy(std::string_view name) {
-  for (Strategy s : AllStrategies()) {
-    if (StrategyName(s) == name) return s;
-  }
-  return std::nullopt;
-}
+std::string_view StrategyName(Strategy strategy) { return kStrategyNames.Name(strategy); }
+std::optional<Strategy> ParseStrategy(std::string_view name) { return kStrategyNames.Parse(name); }
+std::vector<Strategy> AllStrategies() { return kStrategyNames.All(); }
+std::string StrategyNames() { return kStrategyNames.List(); }
 
 }  // namespace foresight

@@ -30,14 +30,14 @@ double CandidateGridEvaluator::Snap(double rotation_rad) const {
 
 ActionEvaluation CandidateGridEvaluator::Evaluate(int kick_index, double rotation_rad) {
   ++evaluations_;
-  const std::pair<int, double> key{kick_index, kick_index < 0 ? 0.0 : Snap(rotation_rad)};
+  const std::pair<int, double> key{kick_index, kick_index == kNoKick ? 0.0 : Snap(rotation_rad)};
   auto it = done_.find(key);
   if (it == done_.end()) it = done_.emplace(key, inner_.Evaluate(key.first, key.second)).first;
   return it->second;
 }
 
 std::vector<Outcome> CandidateGridEvaluator::Outcomes(int kick_index, double rotation_rad) const {
-  return inner_.Outcomes(kick_index, kick_index < 0 ? 0.0 : Snap(rotation_rad));
+  return inner_.Outcomes(kick_index, kick_index == kNoKick ? 0.0 : Snap(rotation_rad));
 }
 
 }  // namespace foresight

@@ -52,8 +52,8 @@ std::vector<StrategyAgreement> CompareDecisions(ActionEvaluator& coarse,
     a.strategy = strategy;
     a.coarse_kick = c.kick_index;
     a.physics_kick = p.kick_index;
-    a.coarse_rotation_rad = c.kick_index < 0 ? 0.0 : coarse_grid.Snap(c.rotation_rad);
-    a.physics_rotation_rad = p.kick_index < 0 ? 0.0 : physics_grid.Snap(p.rotation_rad);
+    a.coarse_rotation_rad = c.kick_index == kNoKick ? 0.0 : coarse_grid.Snap(c.rotation_rad);
+    a.physics_rotation_rad = p.kick_index == kNoKick ? 0.0 : physics_grid.Snap(p.rotation_rad);
     a.agree = a.coarse_kick == a.physics_kick &&
               std::abs(a.coarse_rotation_rad - a.physics_rotation_rad) < 1e-9;
     a.regret = physics_grid.Evaluate(a.physics_kick, a.physics_rotation_rad).utility -

@@ -48,7 +48,7 @@ struct CandidateScore {
 
 struct StrategyAgreement {
   Strategy strategy = Strategy::kOptimalAll;
-  int coarse_kick = -1, physics_kick = -1;  // -1: none
+  int coarse_kick = kNoKick, physics_kick = kNoKick;
   double coarse_rotation_rad = 0.0, physics_rotation_rad = 0.0;
   bool agree = false;
   double regret = 0.0;  // physics utility of the physics decision minus the coarse decision's

@@ -19,7 +19,7 @@ std::string MeanText(const MeanWithInterval& m, int decimals) {
 }
 
 std::string ActionText(const Situation& s, int kick, double rotation_rad) {
-  return (kick < 0 ? std::string("none") : s.kicks.kicks[kick].name) + " " +
+  return s.kicks.NameOf(kick) + " " +
          Fixed(rotation_rad * kRadToDeg, 0) + " deg";
 }
 

@@ -9,10 +9,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-std::string KickName(const Situation& s, int kick) {
-  return kick < 0 ? "none" : s.kicks.kicks[kick].name;
-}
-
 Json MeanJson(const MeanWithInterval& m) {
   return Json{{"n", m.n}, {"mean", m.mean}, {"ci", Json::array({m.ci.low, m.ci.high})}};
 }
@@ -25,7 +21,7 @@ Json EvaluationJson(const ActionEvaluation& e) {
 
 Json ChoiceJson(const SituationFidelity& s, const ChoiceMetrics& m) {
   const CandidateScore& c = s.candidates[m.choice];
-  return Json{{"kick", KickName(s.situation, c.kick_index)},
+  return Json{{"kick", s.situation.kicks.NameOf(c.kick_index)},
               {"rotation_deg", c.rotation_rad * kRadToDeg},
               {"tau_b", m.tau_b},
               {"top1", m.top1},
@@ -37,7 +33,7 @@ Json SituationJson(const SituationFidelity& s) {
   Json j{{"name", s.situation.name},
          {"class", s.situation_class},
          {"file", s.file},
-         {"physics_best", Json{{"kick", KickName(s.situation, best.kick_index)},
+         {"physics_best", Json{{"kick", s.situation.kicks.NameOf(best.kick_index)},
                                {"rotation_deg", best.rotation_rad * kRadToDeg},
                                {"utility", best.physics.utility},
                                {"ci", Json::array({best.physics_ci.low, best.physics_ci.high})}}},
@@ -48,9 +44,9 @@ Json SituationJson(const SituationFidelity& s) {
   j["decisions"] = Json::array();
   for (const StrategyAgreement& a : s.decisions) {
     j["decisions"].push_back(Json{{"strategy", StrategyName(a.strategy)},
-                                  {"coarse_kick", KickName(s.situation, a.coarse_kick)},
+                                  {"coarse_kick", s.situation.kicks.NameOf(a.coarse_kick)},
                                   {"coarse_rotation_deg", a.coarse_rotation_rad * kRadToDeg},
-                                  {"physics_kick", KickName(s.situation, a.physics_kick)},
+                                  {"physics_kick", s.situation.kicks.NameOf(a.physics_kick)},
                                   {"physics_rotation_deg", a.physics_rotation_rad * kRadToDeg},
                                   {"agree", a.agree},
                                   {"regret", a.regret}});
@@ -58,7 +54,7 @@ Json SituationJson(const SituationFidelity& s) {
   j["candidates"] = Json::array();
   for (const CandidateScore& c : s.candidates) {
     j["candidates"].push_back(
-        Json{{"kick", KickName(s.situation, c.kick_index)},
+        Json{{"kick", s.situation.kicks.NameOf(c.kick_index)},
              {"rotation_deg", c.rotation_rad * kRadToDeg},
              {"coarse", EvaluationJson(c.coarse)},
              {"converged", EvaluationJson(c.converged)},
@@ -148,7 +144,7 @@ std::string FidelityCandidatesCsv(const FidelityRun& run) {
   for (const SituationFidelity& s : run.result.situations) {
     for (const CandidateScore& c : s.candidates) {
       out += s.situation.name + "," + s.situation_class + "," +
-             KickName(s.situation, c.kick_index) + "," + Fixed(c.rotation_rad * kRadToDeg, 2) +
+             s.situation.kicks.NameOf(c.kick_index) + "," + Fixed(c.rotation_rad * kRadToDeg, 2) +
              "," + Fixed(c.coarse.utility, 6) + "," + Fixed(c.converged.utility, 6) + "," +
              Fixed(c.physics.utility, 6) + "," + Fixed(c.physics_ci.low, 6) + "," +
              Fixed(c.physics_ci.high, 6) + "," + Fixed(c.coarse.p_opp_goal, 4) + "," +

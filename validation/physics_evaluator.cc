@@ -17,14 +17,14 @@ PhysicsHypothesis PhysicsActionEvaluator::Run(int kick_index, double rotation_ra
   h.outcomes.resize(samples_.size());
   const auto run_trial = [&](int i) {
     const DrawnSample& sample = samples_[static_cast<std::size_t>(i)];
-    if (kick_index < 0) {  // `none`: the ball stays where it lies
+    if (kick_index == kNoKick) {  // `none`: the ball stays where it lies
       h.outcomes[i].p_F_rest = sample.state.p_F_ball;
       return;
     }
     const ConcreteAction action = MakeAction(situation_.kicks, kick_index, rotation_rad, sample);
     h.outcomes[i] = simulator_.Simulate(sample.state, action);
   };
-  ParallelFor(static_cast<int>(samples_.size()), kick_index < 0 ? 1 : threads_, run_trial);
+  ParallelFor(static_cast<int>(samples_.size()), kick_index == kNoKick ? 1 : threads_, run_trial);
   HypothesisAccumulator hypothesis;
   for (const Outcome& outcome : h.outcomes) {
     AddOutcome(hypothesis, outcome, value_);
@@ -35,8 +35,8 @@ PhysicsHypothesis PhysicsActionEvaluator::Run(int kick_index, double rotation_ra
 }
 
 const PhysicsHypothesis& PhysicsActionEvaluator::Hypothesis(int kick_index, double rotation_rad) {
-  const std::pair<int, double> key{kick_index < 0 ? -1 : kick_index,
-                                   kick_index < 0 ? 0.0 : rotation_rad};
+  const std::pair<int, double> key{kick_index,
+                                   kick_index == kNoKick ? 0.0 : rotation_rad};
   auto it = done_.find(key);
   if (it == done_.end()) {
     it = done_.emplace(key, Run(key.first, key.second)).first;
@@ -52,7 +52,7 @@ ActionEvaluation PhysicsActionEvaluator::Evaluate(int kick_index, double rotatio
 
 std::vector<Outcome> PhysicsActionEvaluator::Outcomes(int kick_index, double rotation_rad) const {
   const auto it =
-      done_.find({kick_index < 0 ? -1 : kick_index, kick_index < 0 ? 0.0 : rotation_rad});
+      done_.find({kick_index, kick_index == kNoKick ? 0.0 : rotation_rad});
   return it != done_.end() ? it->second.outcomes : Run(kick_index, rotation_rad).outcomes;
 }
 
