@@ -24,7 +24,7 @@ int RunCheckCommand(const CheckOptions& options, const std::string& models_dir) 
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
   const int threads = ParseCount("--threads", options.threads, 0, 1024);
   const std::filesystem::path spec_file = options.spec_file.empty()
-                                              ? models / "check_specs" / "default.json"
+                                              ? DataFile(models, DataFolder::kCheckSpecs, "default")
                                               : std::filesystem::path(options.spec_file);
   const CheckSuite suite = LoadCheckSuite(spec_file);
   int failed = 0;

@@ -16,7 +16,7 @@ namespace {
 constexpr int kMaxSampless = 1000;
 
 std::filesystem::path ParamsFile(const std::string& params, const std::filesystem::path& models) {
-  return ResolveModelFile(params, "experiments", std::filesystem::current_path(), models);
+  return ResolveModelFile(params, DataFolder::kExperiments, std::filesystem::current_path(), models);
 }
 
 JsonDocument LoadParamsFile(const std::filesystem::path& file) {
@@ -31,7 +31,7 @@ Situation LoadScene(const JsonObject& root, const std::filesystem::path& file,
                     const std::filesystem::path& models_dir,
                     const std::filesystem::path& kicks_override) {
   const std::filesystem::path situation_file =
-      ResolveModelFile(root.String("situation"), "situations", file.parent_path(), models_dir);
+      ResolveModelFile(root.String("situation"), DataFolder::kSituations, file.parent_path(), models_dir);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(situation_file, ec)) {
     root.Fail("situation", "refers to " + situation_file.string() + ", which does not exist");

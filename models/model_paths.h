@@ -8,13 +8,35 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace foresight {
 
 std::filesystem::path DefaultModelsDir();
 
-// Resolves `reference` from a file in `referring_dir`; `kind` is the sub-folder ("fields").
-std::filesystem::path ResolveModelFile(const std::string& reference, const std::string& kind,
+// The folders of MODELS_DIR, by what they hold; the one place their names are spelled.
+enum class DataFolder {
+  kFields,
+  kKicks,
+  kEvaluation,
+  kSituations,
+  kPhysics,
+  kRobots,
+  kCalibration,
+  kFidelity,
+  kCheckSpecs,
+  kExperiments,
+};
+std::string_view DataFolderName(DataFolder folder);  // "fields", "kicks", ...
+
+// MODELS_DIR/<folder>, and the shipped file MODELS_DIR/<folder>/<name>.json.
+std::filesystem::path DataFolderPath(const std::filesystem::path& models_dir, DataFolder folder);
+std::filesystem::path DataFile(const std::filesystem::path& models_dir, DataFolder folder,
+                               const std::string& name);
+
+// Resolves `reference` (a bare name in `folder`, or a path ending in ".json") from a file in
+// `referring_dir`.
+std::filesystem::path ResolveModelFile(const std::string& reference, DataFolder folder,
                                        const std::filesystem::path& referring_dir,
                                        const std::filesystem::path& models_dir);
 

@@ -7,6 +7,7 @@
 
 #include "common/checks.h"
 #include "common/error.h"
+#include "models/model_paths.h"
 #include "common/geometry.h"
 #include "common/json_reader.h"
 
@@ -159,7 +160,7 @@ std::vector<double> Robot::StandingPositions() const {
 }
 
 Robot LoadRobot(const std::string& name, const std::filesystem::path& models_dir) {
-  const std::filesystem::path robots_dir = models_dir / "robots";
+  const std::filesystem::path robots_dir = DataFolderPath(models_dir, DataFolder::kRobots);
   const std::filesystem::path spec_file = robots_dir / name / "robot.json";
   std::error_code ec;
   if (name.empty() || name.find('/') != std::string::npos ||

@@ -95,10 +95,10 @@ Situation LoadSituation(const std::filesystem::path& file, const std::filesystem
 
   Situation situation;
   situation.name = root.StringOr("name", file.stem().string());
-  situation.field_file = ResolveModelFile(root.String("field"), "fields", dir, models_dir);
+  situation.field_file = ResolveModelFile(root.String("field"), DataFolder::kFields, dir, models_dir);
   situation.field = LoadReferenced(root, "field", situation.field_file, LoadFieldSpec);
   if (overrides.kicks_file.empty()) {
-    situation.kicks_file = ResolveModelFile(root.String("kicks"), "kicks", dir, models_dir);
+    situation.kicks_file = ResolveModelFile(root.String("kicks"), DataFolder::kKicks, dir, models_dir);
     situation.kicks = LoadReferenced(root, "kicks", situation.kicks_file, LoadKickModel);
   } else {
     situation.kicks_file = overrides.kicks_file;
@@ -110,7 +110,7 @@ Situation LoadSituation(const std::filesystem::path& file, const std::filesystem
   }
   // Without an "evaluation" key, the evaluation shipped for the field's name applies.
   situation.evaluation_file = ResolveModelFile(root.StringOr("evaluation", situation.field.name),
-                                               "evaluation", dir, models_dir);
+                                               DataFolder::kEvaluation, dir, models_dir);
   std::error_code ec;
   if (!root.Has("evaluation") && !std::filesystem::is_regular_file(situation.evaluation_file, ec)) {
     throw InputError(file.string() + ": no evaluation for field '" + situation.field.name + "' (" +

@@ -1,6 +1,7 @@
 #include "physics/physics_setup.h"
 
 #include "common/error.h"
+#include "models/model_paths.h"
 
 namespace foresight {
 
@@ -12,7 +13,7 @@ std::unique_ptr<PhysicsSetup> LoadPhysicsSetup(Situation situation,
   const Situation& s = setup->situation;
   setup->robot = LoadRobot(s.kicks.robot, models_dir);
   setup->physics_file =
-      physics_file.empty() ? models_dir / "physics" / (s.field.name + ".json") : physics_file;
+      physics_file.empty() ? DataFile(models_dir, DataFolder::kPhysics, s.field.name) : physics_file;
   setup->params = LoadPhysicsParams(setup->physics_file);
   setup->state = DrawnState{s.state.robot, s.state.MeanBallInField()};
   setup->simulator.emplace(

@@ -249,7 +249,9 @@ Axis CountAxis(bool log, double lo, double hi) {
     AxisTicks ticks = CoveringTicks(&r, 5, true);
     return LinearAxis(r, std::move(ticks));
   }
-  if (!(lo > 0.0)) return LogAxis({1.0, 10.0});
+  // No positive count (lo is then +inf, the minimum over nothing): a default decade, not the
+  // int conversion of an infinite log that UBSan rightly rejects.
+  if (!(lo > 0.0 && std::isfinite(lo) && std::isfinite(hi))) return LogAxis({1.0, 10.0});
   const int k = static_cast<int>(std::ceil(std::log10(lo) - kTolerance)) - 1;
   return LogAxis({Decade(k, 1.0), Ceil125(hi)});
 }

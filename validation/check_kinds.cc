@@ -34,8 +34,8 @@ struct UniformWorld {
 UniformWorld LoadUniformWorld(const CheckSpec& spec, const std::filesystem::path& models) {
   const std::string& name = spec.text.at("field");
   UniformWorld w;
-  w.field = LoadFieldSpec(ResolveModelFile(name, "fields", spec.dir, models));
-  w.params = LoadPhysicsParams(models / "physics" / (w.field.name + ".json"));
+  w.field = LoadFieldSpec(ResolveModelFile(name, DataFolder::kFields, spec.dir, models));
+  w.params = LoadPhysicsParams(DataFile(models, DataFolder::kPhysics, w.field.name));
   w.params.carpet.deceleration_sigma_rel = 0.0;
   w.params.carpet.patch_sigma_rel = 0.0;
   return w;
@@ -112,9 +112,9 @@ CheckResult NoTunnelling(const CheckSpec& spec, const std::filesystem::path& mod
 std::unique_ptr<PhysicsSetup> CalibrationSetup(const CheckSpec& spec,
                                                const std::filesystem::path& models) {
   SituationOverrides overrides;
-  overrides.kicks_file = ResolveModelFile(spec.text.at("kicks"), "kicks", spec.dir, models);
+  overrides.kicks_file = ResolveModelFile(spec.text.at("kicks"), DataFolder::kKicks, spec.dir, models);
   const std::filesystem::path situation =
-      models / "calibration" / (spec.text.at("robot") + ".json");
+      DataFile(models, DataFolder::kCalibration, spec.text.at("robot"));
   return LoadPhysicsSetup(LoadSituation(situation, models, overrides), models);
 }
 
@@ -188,7 +188,7 @@ CheckResult CalibrationBand(const CheckSpec& spec, const std::filesystem::path& 
 
 CheckResult FidelityFloor(const CheckSpec& spec, const std::filesystem::path& models, int threads) {
   const std::filesystem::path kicks =
-      ResolveModelFile(spec.text.at("kicks"), "kicks", spec.dir, models);
+      ResolveModelFile(spec.text.at("kicks"), DataFolder::kKicks, spec.dir, models);
   const FidelitySet set = LoadFidelitySet(spec.text.at("situations"), models, kicks);
   FidelitySettings settings;
   settings.physics_trials = static_cast<int>(spec.number.at("trials"));

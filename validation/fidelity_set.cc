@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/error.h"
+#include "models/model_paths.h"
 #include "common/geometry.h"
 #include "common/json_reader.h"
 
@@ -12,7 +13,7 @@ namespace {
 
 std::filesystem::path SetFile(const std::string& set, const std::filesystem::path& models_dir) {
   if (set.size() > 5 && set.ends_with(".json")) return set;
-  return models_dir / "fidelity" / (set + ".json");
+  return DataFile(models_dir, DataFolder::kFidelity, set);
 }
 
 }  // namespace

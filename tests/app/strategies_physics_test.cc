@@ -4,27 +4,18 @@
 
 #include "experiments/strategies.h"
 #include "physics/physics_setup.h"
+#include "tests/experiments/strategies_test_params.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {
 namespace {
 
-StrategiesParams Params(Situation situation, int starts) {
-  StrategiesParams p;
-  p.situation = std::move(situation);
-  p.strategies = {Strategy::kFast};
-  p.starts = starts;
-  p.max_steps = 2;
-  p.walk_speed_mps = 0.2;
-  p.turn_speed_radps = 60.0 * kDegToRad;
-  p.turn_around_ball_speed_radps = 30.0 * kDegToRad;
-  p.Validate();
-  return p;
-}
-
 // The physics executor goes through the same seam: a few kicks of the real NAO.
 TEST(StrategiesPhysicsTest, PhysicsExecutesTheKicks) {
-  StrategiesParams p = Params(testing::MakeSituation(testing::Uncertain({})), 2);
+  StrategiesParams p =
+      testing::TestStrategiesParams(testing::MakeSituation(testing::Uncertain({})), 2);
+  p.strategies = {Strategy::kFast};
+  p.max_steps = 2;
   const auto setup = LoadPhysicsSetup(p.situation, testing::ModelsDir());
   const StrategiesResult r = RunStrategies(p, &*setup->simulator, 3, 2);
   const StrategyRun& run = r.strategies[0].example;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "planner/coarse_simulator.h"
+#include "tests/experiments/strategies_test_params.h"
 #include "tests/support/test_situations.h"
 #include "experiments/strategy_stats.h"
 
@@ -15,17 +16,7 @@ namespace {
 constexpr int kForward = 0;
 
 StrategiesParams Params(Situation situation, int starts) {
-  StrategiesParams p;
-  p.situation = std::move(situation);
-  p.strategies = {Strategy::kFast, Strategy::kOptimalValue, Strategy::kOptimalAll,
-                  Strategy::kOptimalOne};
-  p.starts = starts;
-  p.max_steps = 60;
-  p.walk_speed_mps = 0.2;
-  p.turn_speed_radps = 60.0 * kDegToRad;
-  p.turn_around_ball_speed_radps = 30.0 * kDegToRad;
-  p.Validate();
-  return p;
+  return testing::TestStrategiesParams(std::move(situation), starts);
 }
 
 TEST(StrategiesTest, StartsLieOnTheFieldAndRepeat) {
