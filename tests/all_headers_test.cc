@@ -67,6 +67,7 @@
 #include "validation/fidelity_report.h"
 #include "validation/fidelity_set.h"
 #include "validation/observed_kicks.h"
+#include "validation/physics_calibration.h"
 #include "validation/physics_checks.h"
 #include "validation/physics_evaluator.h"
 #include "experiments/experiment_params.h"

@@ -2,17 +2,16 @@
 #include <cmath>
 
 #include "common/error.h"
-#include "models/field_spec.h"
 #include "common/geometry.h"
+#include "models/field_spec.h"
 #include "models/model_paths.h"
 #include "physics/physics_scene.h"
 #include "physics/trial.h"
+#include "report/report_format.h"
 #include "validation/calibration.h"
 #include "validation/fidelity.h"
+#include "validation/physics_calibration.h"
 #include "validation/physics_checks.h"
-#include "physics/physics_runs.h"
-#include "physics/physics_setup.h"
-#include "report/report_format.h"
 
 namespace foresight {
 
@@ -109,63 +108,57 @@ CheckResult NoTunnelling(const CheckSpec& spec, const std::filesystem::path& mod
                         std::string(ContactName(trial.outcome.first_contact)));
 }
 
-std::unique_ptr<PhysicsSetup> CalibrationSetup(const CheckSpec& spec,
-                                               const std::filesystem::path& models) {
-  SituationOverrides overrides;
-  overrides.kicks_file = ResolveModelFile(spec.text.at("kicks"), "kicks", spec.dir, models);
-  const std::filesystem::path situation =
-      models / "calibration" / (spec.text.at("robot") + ".json");
-  return LoadPhysicsSetup(LoadSituation(situation, models, overrides), models);
+// The calibration situation of the spec's robot with the spec's kick model, as `foresight
+// calibrate --kicks` plays it.
+PhysicsCalibrationSettings CalibrationSettingsOf(const CheckSpec& spec,
+                                                 const std::filesystem::path& models, int threads) {
+  PhysicsCalibrationSettings settings;
+  settings.robot = spec.text.at("robot");
+  settings.kicks_file = ResolveModelFile(spec.text.at("kicks"), "kicks", spec.dir, models);
+  settings.trials = static_cast<int>(spec.number.at("trials"));
+  settings.threads = threads;
+  return settings;
 }
 
-std::vector<TrialResult> KickTrials(const PhysicsSetup& setup, int kick, int trials, int threads,
-                                    std::uint64_t seed) {
-  KickTrialsRequest request;
-  request.state = setup.state;
-  request.kick_index = kick;
-  request.trials = trials;
-  request.seed = CalibrationSeed(seed, kick);
-  request.threads = threads;
-  request.record_trace = true;
-  return RunKickTrials(*setup.simulator, request);
+// The circular mean of the launch directions, summed in trial order as Summarize sums them.
+double MeanDirection(const std::vector<KickObservation>& observations) {
+  double cos_sum = 0.0, sin_sum = 0.0;
+  for (const KickObservation& o : observations) {
+    cos_sum += std::cos(o.launch_direction_rad);
+    sin_sum += std::sin(o.launch_direction_rad);
+  }
+  return std::atan2(sin_sum, cos_sum);
 }
 
 CheckResult KickDirection(const CheckSpec& spec, const std::filesystem::path& models, int threads) {
-  const auto setup = CalibrationSetup(spec, models);
-  const std::optional<int> kick = setup->situation.kicks.Find(spec.text.at("kick"));
-  if (!kick || !setup->simulator->HasMotion(*kick)) {
-    throw InputError(spec.where + ": kick: no kick '" + spec.text.at("kick") + "' with a motion");
-  }
-  const auto results =
-      KickTrials(*setup, *kick, static_cast<int>(spec.number.at("trials")), threads, 1);
-  const TrialSummary s = Summarize(results);
-  const double expected = setup->situation.kicks.kicks[*kick].direction_rad;
-  const double error_deg = std::abs(WrapAngle(s.launch_direction_mean_rad - expected)) * kRadToDeg;
-  const bool ok = s.touched == s.trials && error_deg <= spec.number.at("max_error_deg");
-  return Result(ok, std::to_string(s.touched) + " of " + std::to_string(s.trials) +
-                        " trials touched the ball; mean direction " +
-                        Fixed(s.launch_direction_mean_rad * kRadToDeg, 1) + " deg, model " +
-                        Fixed(expected * kRadToDeg, 1) + " deg (off by " + Fixed(error_deg, 1) +
-                        ", limit " + Fixed(spec.number.at("max_error_deg"), 1) + ")");
+  PhysicsCalibrationSettings settings = CalibrationSettingsOf(spec, models, threads);
+  settings.kick = spec.text.at("kick");
+  settings.kick_field = spec.where + ": kick";
+  const PhysicsCalibration physics = RunPhysicsCalibration(settings, models);
+  const PhysicsKickTrials& kick = physics.kicks.front();
+  const int touched = static_cast<int>(kick.observations.size());
+  const double mean = touched > 0 ? MeanDirection(kick.observations) : 0.0;
+  const double expected = physics.model.kicks[kick.kick_index].direction_rad;
+  const double error_deg = std::abs(WrapAngle(mean - expected)) * kRadToDeg;
+  const bool ok = kick.missed == 0 && error_deg <= spec.number.at("max_error_deg");
+  return Result(ok, std::to_string(touched) + " of " + std::to_string(settings.trials) +
+                        " trials touched the ball; mean direction " + Fixed(mean * kRadToDeg, 1) +
+                        " deg, model " + Fixed(expected * kRadToDeg, 1) + " deg (off by " +
+                        Fixed(error_deg, 1) + ", limit " +
+                        Fixed(spec.number.at("max_error_deg"), 1) + ")");
 }
 
 CheckResult CalibrationBand(const CheckSpec& spec, const std::filesystem::path& models,
                             int threads) {
-  const auto setup = CalibrationSetup(spec, models);
-  const KickModel& model = setup->situation.kicks;
+  PhysicsCalibrationSettings settings = CalibrationSettingsOf(spec, models, threads);
+  settings.seed = static_cast<std::uint64_t>(spec.number.at("seed"));
+  const PhysicsCalibration physics = RunPhysicsCalibration(settings, models);
   const double band = spec.number.at("band_rel");
   bool ok = true;
   std::string detail;
-  for (int k = 0; k < static_cast<int>(model.kicks.size()); ++k) {
-    if (!setup->simulator->HasMotion(k)) continue;
-    std::vector<KickObservation> observed;
-    for (const TrialResult& t :
-         KickTrials(*setup, k, static_cast<int>(spec.number.at("trials")), threads,
-                    static_cast<std::uint64_t>(spec.number.at("seed")))) {
-      if (t.touched) observed.push_back(ObservationOf(t, setup->situation.field.ball.radius_m));
-    }
-    const KickSpec& m = model.kicks[k];
-    const KickCalibration c = CalibrateKick(m.name, observed, CalibrationSettings{});
+  for (const PhysicsKickTrials& kick : physics.kicks) {
+    const KickSpec& m = physics.model.kicks[kick.kick_index];
+    const KickCalibration c = CalibrateKick(m.name, kick.observations, CalibrationSettings{});
     const auto within = [&](double fitted, double committed) {
       return std::abs(fitted - committed) <= band * std::abs(committed);
     };
