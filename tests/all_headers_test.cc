@@ -62,6 +62,7 @@
 #include "validation/calibration.h"
 #include "validation/calibration_report.h"
 #include "validation/candidate_grid.h"
+#include "validation/check_kinds.h"
 #include "validation/deceleration_fit.h"
 #include "validation/fidelity.h"
 #include "validation/fidelity_report.h"
