@@ -7,12 +7,11 @@
 #include "app/report_text.h"
 #include "common/error.h"
 #include "models/model_paths.h"
-#include "physics/physics_runs.h"
-#include "physics/physics_setup.h"
 #include "report/atomic_file.h"
 #include "validation/calibration_html.h"
 #include "validation/calibration_report.h"
 #include "validation/observed_kicks.h"
+#include "validation/physics_calibration.h"
 
 namespace foresight {
 
@@ -25,62 +24,36 @@ constexpr int kMaxThreads = 1024;
 std::vector<std::string> ChosenKicks(const CalibrateOptions& options,
                                      const std::vector<std::string>& available,
                                      const std::string& where) {
-  if (options.all || options.kick.empty()) return available;
-  for (const std::string& name : available) {
-    if (name == options.kick) return {name};
-  }
-  std::string names;
-  for (const std::string& name : available) names += (names.empty() ? "" : ", ") + name;
-  throw InputError("--kick: no kick '" + options.kick + "' in " + where + " (one of: " + names +
-                   ")");
+  return ChooseKicks(options.all ? "" : options.kick, available, "--kick", where);
 }
 
 void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem::path& models,
-                          CalibrationRun& run, const KickModel& base) {
-  const std::filesystem::path situation_file =
-      options.situation_file.empty() ? models / "calibration" / (options.robot + ".json")
-                                     : std::filesystem::path(options.situation_file);
-  SituationOverrides overrides;
-  overrides.kicks_file = options.kicks_file;
-  auto setup = LoadPhysicsSetup(LoadSituation(situation_file, models, overrides), models,
-                                options.physics_file);
-  if (setup->situation.kicks.robot != options.robot) {
-    throw InputError(situation_file.string() + ": kicks: the kick model is for robot '" +
-                     setup->situation.kicks.robot + "', not '" + options.robot + "'");
-  }
-  std::vector<std::string> available;
-  for (const KickSpec& k : base.kicks) {
-    if (setup->robot.FindMotion(k.name)) available.push_back(k.name);
-  }
-  const std::vector<std::string> kicks =
-      ChosenKicks(options, available, "the motions of robot '" + options.robot + "'");
+                          CalibrationRun& run) {
+  PhysicsCalibrationSettings settings;
+  settings.robot = options.robot;
+  settings.kick = options.all ? "" : options.kick;
+  settings.trials = ParseCount("--trials", options.trials, 8, kMaxTrials);
+  settings.seed = run.provenance.seed;
+  settings.threads = ParseCount("--threads", options.threads, 0, kMaxThreads);
+  settings.situation_file = options.situation_file;
+  settings.kicks_file = options.kicks_file;
+  settings.physics_file = options.physics_file;
+  settings.progress = [](const std::string& kick) {
+    return TerminalProgress("calibrate " + kick + ":", "trials");
+  };
+  PhysicsCalibration physics = RunPhysicsCalibration(settings, models);
   run.source = "physics";
-  run.provenance.SetInput("situation", DisplayPath(situation_file, models));
-  run.provenance.SetInput("physics", DisplayPath(setup->physics_file, models));
-  run.carpet_deceleration_mps2 = setup->params.carpet.rolling_deceleration_mps2;
-  run.trials_per_kick = ParseCount("--trials", options.trials, 8, kMaxTrials);
-  const double radius = setup->situation.field.ball.radius_m;
-  const int threads = ParseCount("--threads", options.threads, 0, kMaxThreads);
-  for (std::size_t k = 0; k < kicks.size(); ++k) {
-    KickTrialsRequest request;
-    request.state = setup->state;
-    request.kick_index = *setup->situation.kicks.Find(kicks[k]);
-    request.trials = run.trials_per_kick;
-    request.seed = CalibrationSeed(run.provenance.seed, request.kick_index);
-    request.threads = threads;
-    request.record_trace = true;
-    request.progress = TerminalProgress("calibrate " + kicks[k] + ":", "trials");
+  run.provenance.SetInput("situation", DisplayPath(physics.situation_file, models));
+  run.provenance.SetInput("physics", DisplayPath(physics.physics_file, models));
+  run.carpet_deceleration_mps2 = physics.carpet_deceleration_mps2;
+  run.trials_per_kick = settings.trials;
+  for (PhysicsKickTrials& trials : physics.kicks) {
     CalibratedKick kick;
-    for (TrialResult& trial : RunKickTrials(*setup->simulator, request)) {
-      if (!trial.touched) {
-        ++kick.missed;
-        continue;
-      }
-      kick.observations.push_back(ObservationOf(trial, radius));
-      kick.draws.push_back(trial.draw);
-    }
+    kick.fit.kick = trials.kick;
+    kick.observations = std::move(trials.observations);
+    kick.draws = std::move(trials.draws);
+    kick.missed = trials.missed;
     run.kicks.push_back(std::move(kick));
-    run.kicks.back().fit.kick = kicks[k];
   }
 }
 
@@ -164,7 +137,7 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
   run.settings.confidence = ParseNumber("--confidence", options.confidence, 0.5, 0.999);
   run.settings.resamples = ParseCount("--resamples", options.resamples, 100, 100000);
   const std::filesystem::path base_file = options.kicks_file.empty()
-                                              ? models / "kicks" / (options.robot + ".json")
+                                              ? DataFile(models, DataFolder::kKicks, options.robot)
                                               : std::filesystem::path(options.kicks_file);
   run.base = LoadKickModel(base_file);
   if (run.base.robot != options.robot) {
@@ -178,7 +151,7 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
                            {"out", options.out_file}};
   if (options.from_csv.empty()) {
     if (options.kick.empty() && !options.all) throw InputError("--kick or --all: say which kicks");
-    CalibrateFromPhysics(options, models, run, run.base);
+    CalibrateFromPhysics(options, models, run);
   } else {
     CalibrateFromCsv(options, run, run.base);
   }

@@ -1,18 +1,23 @@
-// The kinds of `foresight check` (validation/physics_checks.h says what each expects).
-#include <cmath>
+#include "validation/check_kinds.h"
 
+#include "stats/statistics.h"
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <variant>
+
+#include "common/checks.h"
 #include "common/error.h"
-#include "models/field_spec.h"
 #include "common/geometry.h"
+#include "models/field_spec.h"
 #include "models/model_paths.h"
 #include "physics/physics_scene.h"
 #include "physics/trial.h"
+#include "report/report_format.h"
 #include "validation/calibration.h"
 #include "validation/fidelity.h"
-#include "validation/physics_checks.h"
-#include "physics/physics_runs.h"
-#include "physics/physics_setup.h"
-#include "report/report_format.h"
+#include "validation/physics_calibration.h"
 
 namespace foresight {
 
@@ -31,23 +36,24 @@ struct UniformWorld {
   PhysicsParams params;
 };
 
-UniformWorld LoadUniformWorld(const CheckSpec& spec, const std::filesystem::path& models) {
-  const std::string& name = spec.text.at("field");
+UniformWorld LoadUniformWorld(const std::string& field, const CheckSpec& spec,
+                              const std::filesystem::path& models) {
   UniformWorld w;
-  w.field = LoadFieldSpec(ResolveModelFile(name, DataFolder::kFields, spec.dir, models));
+  w.field = LoadFieldSpec(ResolveModelFile(field, DataFolder::kFields, spec.dir, models));
   w.params = LoadPhysicsParams(DataFile(models, DataFolder::kPhysics, w.field.name));
   w.params.carpet.deceleration_sigma_rel = 0.0;
   w.params.carpet.patch_sigma_rel = 0.0;
   return w;
 }
 
-CheckResult FreeRoll(const CheckSpec& spec, const std::filesystem::path& models) {
-  const UniformWorld w = LoadUniformWorld(spec, models);
+CheckResult Run(const FreeRollCheck& c, const CheckSpec& spec, const std::filesystem::path& models,
+                int) {
+  const UniformWorld w = LoadUniformWorld(c.field, spec, models);
   const PhysicsScene scene = MakePhysicsScene(w.field, w.params, nullptr, {}, Vec2(0, 0));
-  const double v = spec.number.at("speed_mps");
+  const double v = c.speed_mps;
   const double a = w.params.carpet.rolling_deceleration_mps2;
   const double expected = v * v / (2.0 * a);
-  const double heading = spec.number.at("heading_deg") * kDegToRad;
+  const double heading = c.heading_deg * kDegToRad;
   const Vec2 dir = UnitVector(heading);
   const Vec2 start = -0.5 * expected * dir;
   const double r = w.field.ball.radius_m;
@@ -59,31 +65,30 @@ CheckResult FreeRoll(const CheckSpec& spec, const std::filesystem::path& models)
     const Vec2 q = p.p_F.head<2>() - start;
     lateral = std::max(lateral, std::abs(dir.x() * q.y() - dir.y() * q.x()));
   }
-  const bool ok = trial.settled && error_rel <= spec.number.at("max_error_rel") &&
-                  lateral <= spec.number.at("max_lateral_m");
+  const bool ok = trial.settled && error_rel <= c.max_error_rel && lateral <= c.max_lateral_m;
   return Result(ok, "rolled " + Fixed(travel.norm(), 4) + " m, v^2/2a = " + Fixed(expected, 4) +
                         " m (error " + Fixed(error_rel * 100.0, 2) + " %, limit " +
-                        Fixed(spec.number.at("max_error_rel") * 100.0, 2) + " %), off the line " +
+                        Fixed(c.max_error_rel * 100.0, 2) + " %), off the line " +
                         Fixed(lateral * 1000.0, 1) + " mm (limit " +
-                        Fixed(spec.number.at("max_lateral_m") * 1000.0, 1) + " mm)" +
+                        Fixed(c.max_lateral_m * 1000.0, 1) + " mm)" +
                         (trial.settled ? "" : ", did not settle"));
 }
 
-CheckResult NoTunnelling(const CheckSpec& spec, const std::filesystem::path& models) {
-  const UniformWorld w = LoadUniformWorld(spec, models);
+CheckResult Run(const NoTunnellingCheck& c, const CheckSpec& spec,
+                const std::filesystem::path& models, int) {
+  const UniformWorld w = LoadUniformWorld(c.field, spec, models);
   const PhysicsScene scene = MakePhysicsScene(w.field, w.params, nullptr, {}, Vec2(0, 0));
   const GoalSpec& g = w.field.goal;
   const double r = w.field.ball.radius_m;
-  const std::string& target = spec.text.at("target");
   Vec2 start;
   double heading = 0.0;
   // clearance(p): how far the ball's surface is from the target's surface (negative: inside).
   std::function<double(const Vec2&)> clearance;
-  if (target == "post") {
+  if (c.target == TunnellingTarget::kPost) {
     const Vec2 post(g.post_centre_x_m, g.post_centre_y_m);
     start = post - Vec2(1.0, 0.0);
     clearance = [=](const Vec2& p) { return (p - post).norm() - g.post_radius_m - r; };
-  } else if (target == "back_net") {
+  } else if (c.target == TunnellingTarget::kBackNet) {
     const double back_x = g.post_centre_x_m + g.net_depth_m;
     start = Vec2(g.post_centre_x_m - 1.0, 0.1 * g.post_centre_y_m);
     clearance = [=](const Vec2& p) { return back_x - p.x() - r; };
@@ -93,7 +98,7 @@ CheckResult NoTunnelling(const CheckSpec& spec, const std::filesystem::path& mod
     heading = -0.5 * kPi;
     clearance = [=](const Vec2& p) { return p.y() - outer_y - r; };
   }
-  const double v = spec.number.at("speed_mps");
+  const double v = c.speed_mps;
   const TrialResult trial = RunRollTrial(scene, RollingBall(start, r, v, heading), 1, true);
   double penetration = 0.0;
   for (const TracePoint& p : trial.trace) {
@@ -101,118 +106,143 @@ CheckResult NoTunnelling(const CheckSpec& spec, const std::filesystem::path& mod
     penetration = std::max(penetration, -clearance(p.p_F.head<2>()));
   }
   const bool touched = trial.outcome.first_contact != Contact::kNone;
-  const bool ok = touched && penetration <= spec.number.at("max_penetration_m");
-  return Result(ok, "ball at " + Fixed(v, 1) + " m/s into the " + target + ": deepest " +
+  const bool ok = touched && penetration <= c.max_penetration_m;
+  return Result(ok, "ball at " + Fixed(v, 1) + " m/s into the " +
+                        std::string(TunnellingTargetName(c.target)) + ": deepest " +
                         Fixed(penetration * 1000.0, 1) + " mm into it (limit " +
-                        Fixed(spec.number.at("max_penetration_m") * 1000.0, 1) +
-                        " mm), first contact " +
+                        Fixed(c.max_penetration_m * 1000.0, 1) + " mm), first contact " +
                         std::string(ContactName(trial.outcome.first_contact)));
 }
 
-std::unique_ptr<PhysicsSetup> CalibrationSetup(const CheckSpec& spec,
-                                               const std::filesystem::path& models) {
-  SituationOverrides overrides;
-  overrides.kicks_file = ResolveModelFile(spec.text.at("kicks"), DataFolder::kKicks, spec.dir, models);
-  const std::filesystem::path situation =
-      DataFile(models, DataFolder::kCalibration, spec.text.at("robot"));
-  return LoadPhysicsSetup(LoadSituation(situation, models, overrides), models);
+// The calibration situation of the spec's robot with the spec's kick model, as `foresight
+// calibrate --kicks` plays it.
+PhysicsCalibrationSettings CalibrationSettingsOf(const std::string& robot, const std::string& kicks,
+                                                 int trials, const CheckSpec& spec,
+                                                 const std::filesystem::path& models, int threads) {
+  PhysicsCalibrationSettings settings;
+  settings.robot = robot;
+  settings.kicks_file = ResolveModelFile(kicks, DataFolder::kKicks, spec.dir, models);
+  settings.trials = trials;
+  settings.threads = threads;
+  return settings;
 }
 
-std::vector<TrialResult> KickTrials(const PhysicsSetup& setup, int kick, int trials, int threads,
-                                    std::uint64_t seed) {
-  KickTrialsRequest request;
-  request.state = setup.state;
-  request.kick_index = kick;
-  request.trials = trials;
-  request.seed = CalibrationSeed(seed, kick);
-  request.threads = threads;
-  request.record_trace = true;
-  return RunKickTrials(*setup.simulator, request);
+// The circular mean of the launch directions (stats/statistics.h).
+double MeanDirection(const std::vector<KickObservation>& observations) {
+  std::vector<double> directions;
+  for (const KickObservation& o : observations) directions.push_back(o.launch_direction_rad);
+  return SummarizeCircular(directions).mean_rad;
 }
 
-CheckResult KickDirection(const CheckSpec& spec, const std::filesystem::path& models, int threads) {
-  const auto setup = CalibrationSetup(spec, models);
-  const std::optional<int> kick = setup->situation.kicks.Find(spec.text.at("kick"));
-  if (!kick || !setup->simulator->HasMotion(*kick)) {
-    throw InputError(spec.where + ": kick: no kick '" + spec.text.at("kick") + "' with a motion");
-  }
-  const auto results =
-      KickTrials(*setup, *kick, static_cast<int>(spec.number.at("trials")), threads, 1);
-  const TrialSummary s = Summarize(results);
-  const double expected = setup->situation.kicks.kicks[*kick].direction_rad;
-  const double error_deg = std::abs(WrapAngle(s.launch_direction_mean_rad - expected)) * kRadToDeg;
-  const bool ok = s.touched == s.trials && error_deg <= spec.number.at("max_error_deg");
-  return Result(ok, std::to_string(s.touched) + " of " + std::to_string(s.trials) +
-                        " trials touched the ball; mean direction " +
-                        Fixed(s.launch_direction_mean_rad * kRadToDeg, 1) + " deg, model " +
-                        Fixed(expected * kRadToDeg, 1) + " deg (off by " + Fixed(error_deg, 1) +
-                        ", limit " + Fixed(spec.number.at("max_error_deg"), 1) + ")");
+CheckResult Run(const KickDirectionCheck& c, const CheckSpec& spec,
+                const std::filesystem::path& models, int threads) {
+  PhysicsCalibrationSettings settings =
+      CalibrationSettingsOf(c.robot, c.kicks, c.trials, spec, models, threads);
+  settings.kick = c.kick;
+  settings.kick_field = spec.where + ": kick";
+  const PhysicsCalibration physics = RunPhysicsCalibration(settings, models);
+  const PhysicsKickTrials& kick = physics.kicks.front();
+  const int touched = static_cast<int>(kick.observations.size());
+  const double mean = touched > 0 ? MeanDirection(kick.observations) : 0.0;
+  const double expected = physics.model.kicks[kick.kick_index].direction_rad;
+  const double error_deg = std::abs(WrapAngle(mean - expected)) * kRadToDeg;
+  const bool ok = kick.missed == 0 && error_deg <= c.max_error_deg;
+  return Result(ok, std::to_string(touched) + " of " + std::to_string(settings.trials) +
+                        " trials touched the ball; mean direction " + Fixed(mean * kRadToDeg, 1) +
+                        " deg, model " + Fixed(expected * kRadToDeg, 1) + " deg (off by " +
+                        Fixed(error_deg, 1) + ", limit " + Fixed(c.max_error_deg, 1) + ")");
 }
 
-CheckResult CalibrationBand(const CheckSpec& spec, const std::filesystem::path& models,
-                            int threads) {
-  const auto setup = CalibrationSetup(spec, models);
-  const KickModel& model = setup->situation.kicks;
-  const double band = spec.number.at("band_rel");
+CheckResult Run(const CalibrationBandCheck& c, const CheckSpec& spec,
+                const std::filesystem::path& models, int threads) {
+  PhysicsCalibrationSettings settings =
+      CalibrationSettingsOf(c.robot, c.kicks, c.trials, spec, models, threads);
+  settings.seed = c.seed;
+  const PhysicsCalibration physics = RunPhysicsCalibration(settings, models);
+  const double band = c.band_rel;
   bool ok = true;
   std::string detail;
-  for (int k = 0; k < static_cast<int>(model.kicks.size()); ++k) {
-    if (!setup->simulator->HasMotion(k)) continue;
-    std::vector<KickObservation> observed;
-    for (const TrialResult& t :
-         KickTrials(*setup, k, static_cast<int>(spec.number.at("trials")), threads,
-                    static_cast<std::uint64_t>(spec.number.at("seed")))) {
-      if (t.touched) observed.push_back(ObservationOf(t, setup->situation.field.ball.radius_m));
-    }
-    const KickSpec& m = model.kicks[k];
-    const KickCalibration c = CalibrateKick(m.name, observed, CalibrationSettings{});
+  for (const PhysicsKickTrials& kick : physics.kicks) {
+    const KickSpec& m = physics.model.kicks[kick.kick_index];
+    const KickCalibration fit = CalibrateKick(m.name, kick.observations, CalibrationSettings{});
     const auto within = [&](double fitted, double committed) {
       return std::abs(fitted - committed) <= band * std::abs(committed);
     };
-    const bool kick_ok = within(c.speed.mean, m.speed_mps) &&
-                         within(c.speed.sd, m.sigma_speed_mps) &&
-                         within(c.direction.sd_rad, m.sigma_direction_rad) &&
-                         std::abs(WrapAngle(c.direction.mean_rad - m.direction_rad)) * kRadToDeg <=
-                             spec.number.at("band_deg");
+    const bool kick_ok =
+        within(fit.speed.mean, m.speed_mps) && within(fit.speed.sd, m.sigma_speed_mps) &&
+        within(fit.direction.sd_rad, m.sigma_direction_rad) &&
+        std::abs(WrapAngle(fit.direction.mean_rad - m.direction_rad)) * kRadToDeg <= c.band_deg;
     ok = ok && kick_ok;
     detail += (detail.empty() ? "" : "; ") + m.name + (kick_ok ? " ok" : " OUT") + " (v0 " +
-              Fixed(c.speed.mean, 3) + "/" + Fixed(m.speed_mps, 3) + ", sigma_v " +
-              Fixed(c.speed.sd, 3) + "/" + Fixed(m.sigma_speed_mps, 3) + ", alpha " +
-              Fixed(c.direction.mean_rad * kRadToDeg, 1) + "/" +
+              Fixed(fit.speed.mean, 3) + "/" + Fixed(m.speed_mps, 3) + ", sigma_v " +
+              Fixed(fit.speed.sd, 3) + "/" + Fixed(m.sigma_speed_mps, 3) + ", alpha " +
+              Fixed(fit.direction.mean_rad * kRadToDeg, 1) + "/" +
               Fixed(m.direction_rad * kRadToDeg, 1) + ", sigma_alpha " +
-              Fixed(c.direction.sd_rad * kRadToDeg, 2) + "/" +
+              Fixed(fit.direction.sd_rad * kRadToDeg, 2) + "/" +
               Fixed(m.sigma_direction_rad * kRadToDeg, 2) + ")";
   }
   return Result(ok, "fitted/committed: " + detail);
 }
 
-CheckResult FidelityFloor(const CheckSpec& spec, const std::filesystem::path& models, int threads) {
-  const std::filesystem::path kicks =
-      ResolveModelFile(spec.text.at("kicks"), DataFolder::kKicks, spec.dir, models);
-  const FidelitySet set = LoadFidelitySet(spec.text.at("situations"), models, kicks);
+CheckResult Run(const FidelityFloorCheck& c, const CheckSpec& spec,
+                const std::filesystem::path& models, int threads) {
+  const std::filesystem::path kicks = ResolveModelFile(c.kicks, DataFolder::kKicks, spec.dir, models);
+  const FidelitySet set = LoadFidelitySet(c.situations, models, kicks);
   FidelitySettings settings;
-  settings.physics_trials = static_cast<int>(spec.number.at("trials"));
+  settings.physics_trials = c.trials;
   settings.converged_samples = 500;
   settings.threads = threads;
   const FidelityResult r = RunFidelity(set, models, settings);
   const ClassSummary& all = r.classes.front();
-  const bool ok = all.tau_coarse.mean >= spec.number.at("min_tau_b") &&
-                  all.regret_coarse.mean <= spec.number.at("max_regret");
+  const bool ok = all.tau_coarse.mean >= c.min_tau_b && all.regret_coarse.mean <= c.max_regret;
   return Result(ok, std::to_string(all.situations) + " situations: mean tau-b " +
-                        Fixed(all.tau_coarse.mean, 3) + " (floor " +
-                        Fixed(spec.number.at("min_tau_b"), 3) + "), mean regret " +
-                        Fixed(all.regret_coarse.mean, 4) + " (ceiling " +
-                        Fixed(spec.number.at("max_regret"), 4) + ")");
+                        Fixed(all.tau_coarse.mean, 3) + " (floor " + Fixed(c.min_tau_b, 3) +
+                        "), mean regret " + Fixed(all.regret_coarse.mean, 4) + " (ceiling " +
+                        Fixed(c.max_regret, 4) + ")");
 }
 
 }  // namespace
 
+void FreeRollCheck::Validate() const {
+  RequirePositive("speed_mps", speed_mps);
+}
+
+void NoTunnellingCheck::Validate() const {
+  RequirePositive("speed_mps", speed_mps);
+}
+
+void KickDirectionCheck::Validate() const {
+  RequireInRange("trials", trials, kMinCheckTrials, kMaxCheckTrials);
+}
+
+void CalibrationBandCheck::Validate() const {
+  RequireInRange("trials", trials, kMinCheckTrials, kMaxCheckTrials);
+  RequireInRange("seed", static_cast<double>(seed), 0.0, kMaxCheckSeed);
+}
+
+void FidelityFloorCheck::Validate() const {
+  RequireInRange("trials", trials, kMinCheckTrials, kMaxCheckTrials);
+}
+
+std::string_view TunnellingTargetName(TunnellingTarget target) {
+  switch (target) {
+    case TunnellingTarget::kPost:
+      return "post";
+    case TunnellingTarget::kBackNet:
+      return "back_net";
+    case TunnellingTarget::kSideNet:
+      return "side_net";
+  }
+  return "?";
+}
+
+std::string_view KindName(const CheckKind& kind) {
+  return std::visit([](const auto& check) { return check.kKind; }, kind);
+}
+
 CheckResult RunCheck(const CheckSpec& spec, const std::filesystem::path& models_dir, int threads) {
-  if (spec.kind == "free_roll") return FreeRoll(spec, models_dir);
-  if (spec.kind == "no_tunnelling") return NoTunnelling(spec, models_dir);
-  if (spec.kind == "kick_direction") return KickDirection(spec, models_dir, threads);
-  if (spec.kind == "calibration_band") return CalibrationBand(spec, models_dir, threads);
-  return FidelityFloor(spec, models_dir, threads);
+  return std::visit([&](const auto& check) { return Run(check, spec, models_dir, threads); },
+                    spec.kind);
 }
 
 }  // namespace foresight

@@ -2,7 +2,10 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <string_view>
+#include <variant>
 
 #include "common/error.h"
 #include "common/json_reader.h"
@@ -12,66 +15,150 @@ namespace foresight {
 
 namespace {
 
-struct KindKeys {
-  const char* kind;
-  std::vector<std::string> text;
-  std::vector<std::string> number;
+// A number the spec must give whole, as the whole number it is: JSON has only doubles.
+double WholeNumber(const JsonObject& item, std::string_view key, double value, double lo, double hi,
+                   const std::string& range) {
+  if (value < lo || value > hi || value != std::floor(value)) {
+    item.Fail(key, "must be a whole number in " + range + ", got " + std::to_string(value));
+  }
+  return value;
+}
+
+int Trials(const JsonObject& item, double value) {
+  // Built with += : GCC 12 warns (-Wrestrict, a false positive) on "[" + std::to_string(...).
+  std::string range = "[";
+  range += std::to_string(kMinCheckTrials);
+  range += ", ";
+  range += std::to_string(kMaxCheckTrials);
+  range += "]";
+  return static_cast<int>(
+      WholeNumber(item, "trials", value, kMinCheckTrials, kMaxCheckTrials, range));
+}
+
+TunnellingTarget Target(const JsonObject& item, const std::string& text) {
+  for (TunnellingTarget t :
+       {TunnellingTarget::kPost, TunnellingTarget::kBackNet, TunnellingTarget::kSideNet}) {
+    if (text == TunnellingTargetName(t)) return t;
+  }
+  item.Fail("target", "must be post, back_net or side_net, got '" + text + "'");
+}
+
+// Each reader takes the strings first, then the numbers, then turns them into their types: a
+// spec with several faults reports the first in that order.
+CheckKind ReadFreeRoll(const JsonObject& item) {
+  FreeRollCheck c;
+  c.field = item.String("field");
+  c.speed_mps = item.Number("speed_mps");
+  c.heading_deg = item.Number("heading_deg");
+  c.max_error_rel = item.Number("max_error_rel");
+  c.max_lateral_m = item.Number("max_lateral_m");
+  return c;
+}
+
+CheckKind ReadNoTunnelling(const JsonObject& item) {
+  NoTunnellingCheck c;
+  c.field = item.String("field");
+  const std::string target = item.String("target");
+  c.speed_mps = item.Number("speed_mps");
+  c.max_penetration_m = item.Number("max_penetration_m");
+  c.target = Target(item, target);
+  return c;
+}
+
+CheckKind ReadKickDirection(const JsonObject& item) {
+  KickDirectionCheck c;
+  c.robot = item.String("robot");
+  c.kick = item.String("kick");
+  c.kicks = item.String("kicks");
+  const double trials = item.Number("trials");
+  c.max_error_deg = item.Number("max_error_deg");
+  c.trials = Trials(item, trials);
+  return c;
+}
+
+CheckKind ReadCalibrationBand(const JsonObject& item) {
+  CalibrationBandCheck c;
+  c.robot = item.String("robot");
+  c.kicks = item.String("kicks");
+  const double trials = item.Number("trials");
+  const double seed = item.Number("seed");
+  c.band_rel = item.Number("band_rel");
+  c.band_deg = item.Number("band_deg");
+  c.trials = Trials(item, trials);
+  c.seed =
+      static_cast<std::uint64_t>(WholeNumber(item, "seed", seed, 0.0, kMaxCheckSeed, "[0, 2^53]"));
+  return c;
+}
+
+CheckKind ReadFidelityFloor(const JsonObject& item) {
+  FidelityFloorCheck c;
+  c.situations = item.String("situations");
+  c.kicks = item.String("kicks");
+  const double trials = item.Number("trials");
+  c.min_tau_b = item.Number("min_tau_b");
+  c.max_regret = item.Number("max_regret");
+  c.trials = Trials(item, trials);
+  return c;
+}
+
+struct KindReader {
+  std::string_view kind;
+  std::vector<std::string_view> keys;  // besides name, kind and notes
+  CheckKind (*read)(const JsonObject& item);
 };
 
-const std::vector<KindKeys>& Kinds() {
-  static const std::vector<KindKeys> kinds = {
-      {"free_roll", {"field"}, {"speed_mps", "heading_deg", "max_error_rel", "max_lateral_m"}},
-      {"no_tunnelling", {"field", "target"}, {"speed_mps", "max_penetration_m"}},
-      {"kick_direction", {"robot", "kick", "kicks"}, {"trials", "max_error_deg"}},
-      {"calibration_band", {"robot", "kicks"}, {"trials", "seed", "band_rel", "band_deg"}},
-      {"fidelity_floor", {"situations", "kicks"}, {"trials", "min_tau_b", "max_regret"}},
+const std::vector<KindReader>& Readers() {
+  static const std::vector<KindReader> readers = {
+      {FreeRollCheck::kKind,
+       {"field", "speed_mps", "heading_deg", "max_error_rel", "max_lateral_m"},
+       ReadFreeRoll},
+      {NoTunnellingCheck::kKind,
+       {"field", "target", "speed_mps", "max_penetration_m"},
+       ReadNoTunnelling},
+      {KickDirectionCheck::kKind,
+       {"robot", "kick", "kicks", "trials", "max_error_deg"},
+       ReadKickDirection},
+      {CalibrationBandCheck::kKind,
+       {"robot", "kicks", "trials", "seed", "band_rel", "band_deg"},
+       ReadCalibrationBand},
+      {FidelityFloorCheck::kKind,
+       {"situations", "kicks", "trials", "min_tau_b", "max_regret"},
+       ReadFidelityFloor},
   };
-  return kinds;
+  return readers;
+}
+
+const KindReader& ReaderOf(const JsonObject& item, const std::string& kind) {
+  std::string kinds;
+  for (const KindReader& r : Readers()) {
+    if (r.kind == kind) return r;
+    kinds += (kinds.empty() ? "" : ", ") + std::string(r.kind);
+  }
+  item.Fail("kind", "unknown kind '" + kind + "' (one of: " + kinds + ")");
+}
+
+// Validate()'s "field: problem" as the JSON reader words it: "FILE: checks[i].field: problem".
+void ValidateAt(const JsonObject& item, const CheckKind& kind) {
+  try {
+    std::visit([](const auto& check) { check.Validate(); }, kind);
+  } catch (const InputError& e) {
+    throw InputError(item.file() + ": " + item.PathOf(e.what()));
+  }
 }
 
 CheckSpec ReadCheck(const JsonObject& item, const std::string& where) {
   CheckSpec spec;
   spec.where = where;
   spec.name = item.String("name");
-  spec.kind = item.String("kind");
-  const KindKeys* keys = nullptr;
-  for (const KindKeys& k : Kinds()) {
-    if (spec.kind == k.kind) keys = &k;
-  }
-  if (!keys) {
-    item.Fail("kind", "unknown kind '" + spec.kind +
-                          "' (one of: free_roll, no_tunnelling, kick_direction, "
-                          "calibration_band, fidelity_floor)");
-  }
+  const std::string kind = item.String("kind");
+  const KindReader& reader = ReaderOf(item, kind);
   for (const std::string& key : item.Keys()) {
     bool known = key == "name" || key == "kind" || key == "notes";
-    for (const std::string& k : keys->text) known = known || k == key;
-    for (const std::string& k : keys->number) known = known || k == key;
-    if (!known) item.Fail(key, "unknown key for a " + spec.kind + " check");
+    for (std::string_view k : reader.keys) known = known || k == key;
+    if (!known) item.Fail(key, "unknown key for a " + kind + " check");
   }
-  for (const std::string& k : keys->text) spec.text[k] = item.String(k);
-  for (const std::string& k : keys->number) spec.number[k] = item.Number(k);
-  if (spec.number.count("trials")) {
-    const double trials = spec.number["trials"];
-    if (trials < 2 || trials > 100000 || trials != std::floor(trials)) {
-      item.Fail("trials", "must be a whole number in [2, 100000], got " + std::to_string(trials));
-    }
-  }
-  if (spec.number.count("speed_mps") && !(spec.number["speed_mps"] > 0.0)) {
-    item.Fail("speed_mps", "must be > 0");
-  }
-  if (spec.number.count("seed")) {
-    const double seed = spec.number["seed"];
-    if (seed < 0 || seed > 9007199254740992.0 || seed != std::floor(seed)) {
-      item.Fail("seed", "must be a whole number in [0, 2^53], got " + std::to_string(seed));
-    }
-  }
-  if (spec.text.count("target")) {
-    const std::string& t = spec.text["target"];
-    if (t != "post" && t != "back_net" && t != "side_net") {
-      item.Fail("target", "must be post, back_net or side_net, got '" + t + "'");
-    }
-  }
+  spec.kind = reader.read(item);
+  ValidateAt(item, spec.kind);
   return spec;
 }
 
@@ -117,7 +204,7 @@ std::vector<CheckResult> RunChecks(const CheckSuite& suite, const std::filesyste
     const auto start = std::chrono::steady_clock::now();
     CheckResult result = RunCheck(spec, models_dir, threads);
     result.name = spec.name;
-    result.kind = spec.kind;
+    result.kind = std::string(KindName(spec.kind));
     result.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (on_result) on_result(result);
     results.push_back(std::move(result));

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <string>
+#include <variant>
 
 #include "common/error.h"
 #include "tests/support/test_situations.h"
@@ -42,6 +43,14 @@ TEST(PhysicsChecksTest, ShippedSpecLoads) {
   const CheckSuite suite = LoadCheckSuite(testing::ModelsDir() / "check_specs" / "default.json");
   EXPECT_EQ(suite.name, "default");
   EXPECT_EQ(suite.checks.size(), 14u);
+  // Each check is read into its kind's typed settings.
+  const auto& net = std::get<NoTunnellingCheck>(suite.checks[4].kind);
+  EXPECT_EQ(net.target, TunnellingTarget::kBackNet);
+  EXPECT_EQ(net.speed_mps, 10.0);
+  const auto& band = std::get<CalibrationBandCheck>(suite.checks[11].kind);
+  EXPECT_EQ(band.robot, "nao");
+  EXPECT_EQ(band.trials, 200);
+  EXPECT_EQ(band.seed, 7u);
 }
 
 TEST(PhysicsChecksTest, BadSpecsNameFileAndField) {
@@ -61,6 +70,12 @@ TEST(PhysicsChecksTest, BadSpecsNameFileAndField) {
        R"({"name": "a", "kind": "kick_direction", "robot": "nao", "kick": "forward", "kicks": "nao", "trials": 2.5, "max_error_deg": 5})",
        "trials"},
       {"missing.json", R"({"name": "a", "kind": "free_roll", "field": "spl"})", "speed_mps"},
+      {"speed.json",
+       R"({"name": "a", "kind": "no_tunnelling", "field": "spl", "target": "post", "speed_mps": -5, "max_penetration_m": 0.01})",
+       "checks[0].speed_mps: must be > 0, got -5"},
+      {"seed.json",
+       R"({"name": "a", "kind": "calibration_band", "robot": "nao", "kicks": "nao", "trials": 20, "seed": 1.5, "band_rel": 0.2, "band_deg": 2})",
+       "checks[0].seed: must be a whole number"},
       {"twice.json", Roll("0.02") + "," + Roll("0.02"), "duplicate check name 'roll'"},
       {"empty.json", "", "checks"},
   };

@@ -1,0 +1,93 @@
+// The physics calibration loop shared by `foresight calibrate` and `foresight check`: which
+// kicks it plays, that every trial is an observation or a miss, that a kick alone gives the
+// numbers it gives among all, and its errors.
+#include "validation/physics_calibration.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "common/error.h"
+#include "tests/support/temp_files.h"
+
+namespace foresight {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+
+PhysicsCalibrationSettings Nao(const std::string& kick) {
+  PhysicsCalibrationSettings settings;
+  settings.robot = "nao";
+  settings.kick = kick;
+  settings.trials = 8;
+  settings.seed = 3;
+  settings.threads = 1;
+  return settings;
+}
+
+std::string ErrorOf(const PhysicsCalibrationSettings& settings) {
+  try {
+    RunPhysicsCalibration(settings, testing::ModelsDir());
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(PhysicsCalibrationTest, ChooseKicksTakesOneOrAllAndNamesTheChoices) {
+  const std::vector<std::string> available = {"forward", "side"};
+  EXPECT_EQ(ChooseKicks("", available, "--kick", "here"), available);
+  EXPECT_THAT(ChooseKicks("side", available, "--kick", "here"), ElementsAre("side"));
+  try {
+    ChooseKicks("back", available, "--kick", "here");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "--kick: no kick 'back' in here (one of: forward, side)");
+  }
+}
+
+TEST(PhysicsCalibrationTest, EveryKickWithAMotionEveryTrialCounted) {
+  int progress_calls = 0;
+  PhysicsCalibrationSettings settings = Nao("");
+  settings.progress = [&](const std::string&) {
+    ++progress_calls;
+    return std::function<void(int, int)>();
+  };
+  const PhysicsCalibration r = RunPhysicsCalibration(settings, testing::ModelsDir());
+  ASSERT_EQ(r.kicks.size(), 3u);
+  EXPECT_EQ(progress_calls, 3);
+  EXPECT_GT(r.carpet_deceleration_mps2, 0.0);
+  EXPECT_EQ(r.situation_file, testing::ModelsDir() / "calibration" / "nao.json");
+  for (const PhysicsKickTrials& k : r.kicks) {
+    EXPECT_EQ(r.model.kicks[k.kick_index].name, k.kick);
+    EXPECT_EQ(static_cast<int>(k.observations.size()) + k.missed, settings.trials) << k.kick;
+    EXPECT_EQ(k.draws.size(), k.observations.size()) << k.kick;
+  }
+}
+
+TEST(PhysicsCalibrationTest, OneKickAloneGivesTheSameObservationsAsAmongAll) {
+  const PhysicsCalibration all = RunPhysicsCalibration(Nao(""), testing::ModelsDir());
+  const PhysicsCalibration one = RunPhysicsCalibration(Nao("side_kick_left"), testing::ModelsDir());
+  ASSERT_EQ(one.kicks.size(), 1u);
+  const PhysicsKickTrials& alone = one.kicks[0];
+  ASSERT_EQ(all.kicks[1].kick, "side_kick_left");
+  ASSERT_EQ(alone.observations.size(), all.kicks[1].observations.size());
+  for (std::size_t i = 0; i < alone.observations.size(); ++i) {
+    EXPECT_EQ(alone.observations[i].launch_speed_mps,
+              all.kicks[1].observations[i].launch_speed_mps);
+  }
+}
+
+TEST(PhysicsCalibrationTest, UnknownKickAndOtherRobotsModelAreInputErrors) {
+  EXPECT_THAT(ErrorOf(Nao("bicycle")),
+              HasSubstr("--kick: no kick 'bicycle' in the motions of robot 'nao'"));
+  PhysicsCalibrationSettings other = Nao("");
+  other.kicks_file = testing::ModelsDir() / "kicks" / "aibo_ers7.json";
+  EXPECT_THAT(ErrorOf(other), HasSubstr("the kick model is for robot 'aibo_ers7', not 'nao'"));
+}
+
+}  // namespace
+}  // namespace foresight

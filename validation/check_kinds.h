@@ -1,0 +1,113 @@
+// The kinds of check of `foresight check`, each with its own typed settings, and running one.
+// Each struct below is one kind: its kKind is the spec's "kind" and its fields are the spec's
+// keys of the same names (validation/physics_checks.h reads them and lists them per kind).
+//
+// Validate() throws InputError "FIELD: must be ..., got VALUE" (common/checks.h) when a value is
+// out of its range; the loader calls it and puts "FILE: checks[i]." before the field, so a
+// running check can trust its settings.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <variant>
+
+namespace foresight {
+
+struct CheckResult {
+  std::string name;
+  std::string kind;
+  bool passed = false;
+  std::string detail;  // one line: what was measured against what was expected
+  double time_s = 0.0;
+};
+
+inline constexpr int kMinCheckTrials = 2;
+inline constexpr int kMaxCheckTrials = 100000;
+inline constexpr double kMaxCheckSeed = 9007199254740992.0;  // 2^53: a JSON number holds it exactly
+
+// A ball set rolling on a uniform carpet (the field's physics file, its variation switched
+// off) stops at v^2 / 2a within max_error_rel and within max_lateral_m of its line.
+struct FreeRollCheck {
+  static constexpr std::string_view kKind = "free_roll";
+  std::string field;  // a field name or file, as a situation names it
+  double speed_mps = 0.0;
+  double heading_deg = 0.0;
+  double max_error_rel = 0.0;
+  double max_lateral_m = 0.0;
+  void Validate() const;
+};
+
+enum class TunnellingTarget { kPost, kBackNet, kSideNet };
+// "post", "back_net", "side_net": the spec's words.
+std::string_view TunnellingTargetName(TunnellingTarget target);
+
+// A fast ball fired at a post, the back net or a side net from outside never gets closer to it
+// than the ball's radius less max_penetration_m.
+struct NoTunnellingCheck {
+  static constexpr std::string_view kKind = "no_tunnelling";
+  std::string field;
+  TunnellingTarget target = TunnellingTarget::kPost;
+  double speed_mps = 0.0;
+  double max_penetration_m = 0.0;
+  void Validate() const;
+};
+
+// A robot's kick, trials times from its calibration situation (seed 1): every trial touches
+// the ball and the circular mean direction lies within max_error_deg of the kick model's.
+struct KickDirectionCheck {
+  static constexpr std::string_view kKind = "kick_direction";
+  std::string robot;
+  std::string kick;
+  std::string kicks;  // the kick model: a name or file
+  int trials = 0;
+  double max_error_deg = 0.0;
+  void Validate() const;
+};
+
+// Calibrating every kick of a robot from trials physics kicks (seeded as `calibrate --seed`
+// seeds them) gives v0, sigma_v and sigma_alpha within band_rel (relative) and alpha within
+// band_deg of the committed kick model. With the calibration's own seed and trials it is a
+// drift guard (the numbers are reproduced exactly unless physics changed); with another seed
+// it also tests the sampling error.
+struct CalibrationBandCheck {
+  static constexpr std::string_view kKind = "calibration_band";
+  std::string robot;
+  std::string kicks;
+  int trials = 0;
+  std::uint64_t seed = 0;  // at most kMaxCheckSeed
+  double band_rel = 0.0;
+  double band_deg = 0.0;
+  void Validate() const;
+};
+
+// A fidelity run on a situation set: the mean Kendall tau-b of the coarse model is at least
+// min_tau_b and its mean regret at most max_regret.
+struct FidelityFloorCheck {
+  static constexpr std::string_view kKind = "fidelity_floor";
+  std::string situations;  // a situation set's name or file
+  std::string kicks;
+  int trials = 0;
+  double min_tau_b = 0.0;
+  double max_regret = 0.0;
+  void Validate() const;
+};
+
+using CheckKind = std::variant<FreeRollCheck, NoTunnellingCheck, KickDirectionCheck,
+                               CalibrationBandCheck, FidelityFloorCheck>;
+
+std::string_view KindName(const CheckKind& kind);
+
+// One check as the spec file gives it, validated.
+struct CheckSpec {
+  std::string name;
+  CheckKind kind;
+  std::string where;          // "FILE: checks[i]" for messages
+  std::filesystem::path dir;  // the spec file's folder (file references are relative to it)
+};
+
+// Runs one check (threads: for the physics trials); InputError on files that do not load.
+CheckResult RunCheck(const CheckSpec& spec, const std::filesystem::path& models_dir, int threads);
+
+}  // namespace foresight
