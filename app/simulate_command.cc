@@ -6,8 +6,8 @@
 #include "app/simulation_output.h"
 #include "common/error.h"
 #include "models/model_paths.h"
-#include "report/atomic_file.h"
 #include "physics/physics_setup.h"
+#include "report/atomic_file.h"
 
 namespace foresight {
 

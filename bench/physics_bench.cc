@@ -8,8 +8,8 @@
 
 #include <cmath>
 
-#include "models/kick_model.h"
 #include "common/random.h"
+#include "models/kick_model.h"
 #include "physics/physics_simulator.h"
 #include "tests/support/physics_test_scenes.h"
 #include "tests/support/test_situations.h"

@@ -4,8 +4,8 @@
 // Scenes are the shared test scenes (tests/support), so tests and benchmarks agree on them.
 #include <benchmark/benchmark.h>
 
-#include "planner/coarse_planner.h"
 #include "common/random.h"
+#include "planner/coarse_planner.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {

@@ -16,7 +16,8 @@ namespace {
 constexpr int kMaxSampless = 1000;
 
 std::filesystem::path ParamsFile(const std::string& params, const std::filesystem::path& models) {
-  return ResolveModelFile(params, DataFolder::kExperiments, std::filesystem::current_path(), models);
+  return ResolveModelFile(params, DataFolder::kExperiments, std::filesystem::current_path(),
+                          models);
 }
 
 JsonDocument LoadParamsFile(const std::filesystem::path& file) {
@@ -30,8 +31,8 @@ JsonDocument LoadParamsFile(const std::filesystem::path& file) {
 Situation LoadScene(const JsonObject& root, const std::filesystem::path& file,
                     const std::filesystem::path& models_dir,
                     const std::filesystem::path& kicks_override) {
-  const std::filesystem::path situation_file =
-      ResolveModelFile(root.String("situation"), DataFolder::kSituations, file.parent_path(), models_dir);
+  const std::filesystem::path situation_file = ResolveModelFile(
+      root.String("situation"), DataFolder::kSituations, file.parent_path(), models_dir);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(situation_file, ec)) {
     root.Fail("situation", "refers to " + situation_file.string() + ", which does not exist");

@@ -6,8 +6,8 @@
 
 #include "common/checks.h"
 #include "common/error.h"
-#include "common/random.h"
 #include "common/parallel_for.h"
+#include "common/random.h"
 #include "planner/coarse_planner.h"
 
 namespace foresight {

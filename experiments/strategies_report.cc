@@ -164,8 +164,8 @@ std::string StrategiesRunsCsv(const StrategiesRun& run) {
         nonzero += rho != 0.0;
         max_turn = std::max(max_turn, std::abs(rho) * kRadToDeg);
       }
-      csv += Format("%zu,%s,%s,%d,%d,%.3f,%.3f,%.3f,%.3f,%d,%.2f,%.3f,%.3f,%.2f,%.3f,%.3f,%d,%d\n", i,
-                    std::string(StrategyName(runs.strategy)).c_str(),
+      csv += Format("%zu,%s,%s,%d,%d,%.3f,%.3f,%.3f,%.3f,%d,%.2f,%.3f,%.3f,%.2f,%.3f,%.3f,%d,%d\n",
+                    i, std::string(StrategyName(runs.strategy)).c_str(),
                     std::string(RunEndName(r.end)).c_str(), r.kicks, r.steps, r.TotalTime(),
                     r.walk_s, r.turn_s, r.around_ball_s, nonzero, max_turn, start.robot.p_F.x(),
                     start.robot.p_F.y(), start.robot.theta_rad * kRadToDeg, start.p_F_ball.x(),

@@ -18,9 +18,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "experiments/experiment_params.h"
 #include "models/outcome.h"
 #include "planner/coarse_planner.h"
-#include "experiments/experiment_params.h"
 
 namespace foresight {
 
@@ -51,8 +51,8 @@ struct StrategyRun {
   double walk_s = 0.0;
   double around_ball_s = 0.0;             // turning around the ball before kicks
   Contact last_contact = Contact::kNone;  // the last kick's first contact
-  StatusCounts kick_status;  // kicks the executor missed or that did not settle (physics)
-  std::vector<double> rotations_rad;      // the turn around the ball of every kick, signed
+  StatusCounts kick_status;           // kicks the executor missed or that did not settle (physics)
+  std::vector<double> rotations_rad;  // the turn around the ball of every kick, signed
   std::vector<StrategyStep> steps_taken;  // only when recorded
 
   double TotalTime() const { return turn_s + walk_s + around_ball_s; }

@@ -11,8 +11,8 @@
 
 #include <vector>
 
-#include "stats/statistics.h"
 #include "experiments/strategies.h"
+#include "stats/statistics.h"
 
 namespace foresight {
 
@@ -39,7 +39,7 @@ struct StrategySummary {
 
   int kicks_total = 0;
   StatusCounts kick_status;  // over all runs: kicks that missed the ball or did not settle
-  int turns_zero = 0;  // kicks without a turn around the ball
+  int turns_zero = 0;        // kicks without a turn around the ball
   double max_turn_deg = 0.0;
   double p95_turn_deg = 0.0;  // of the kicks with a turn
   int turns_above_90 = 0, turns_above_100 = 0;

@@ -7,8 +7,8 @@
 // box (between the posts' centres, not behind the back net), otherwise out.
 #pragma once
 
-#include "models/field_spec.h"
 #include "common/geometry.h"
+#include "models/field_spec.h"
 #include "models/outcome.h"
 
 namespace foresight {

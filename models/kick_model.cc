@@ -84,7 +84,9 @@ std::string Rounded(double value, int decimals) {
   return s == "-0" ? "0" : s;
 }
 
-std::string Quoted(std::string_view text) { return nlohmann::json(std::string(text)).dump(); }
+std::string Quoted(std::string_view text) {
+  return nlohmann::json(std::string(text)).dump();
+}
 
 }  // namespace
 

@@ -29,7 +29,9 @@ std::filesystem::path DefaultModelsDir() {
   return FORESIGHT_MODELS_DIR;  // compile definition: the source tree's models/
 }
 
-std::string_view DataFolderName(DataFolder folder) { return kFolderNames.Name(folder); }
+std::string_view DataFolderName(DataFolder folder) {
+  return kFolderNames.Name(folder);
+}
 
 std::filesystem::path DataFolderPath(const std::filesystem::path& models_dir, DataFolder folder) {
   return models_dir / DataFolderName(folder);

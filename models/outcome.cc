@@ -28,9 +28,15 @@ constexpr EnumNames<OutcomeStatus, kOutcomeStatusCount> kStatusNames{{{
 
 }  // namespace
 
-std::string_view CategoryName(Category category) { return kCategoryNames.Name(category); }
-std::string_view ContactName(Contact contact) { return kContactNames.Name(contact); }
-std::string_view OutcomeStatusName(OutcomeStatus status) { return kStatusNames.Name(status); }
+std::string_view CategoryName(Category category) {
+  return kCategoryNames.Name(category);
+}
+std::string_view ContactName(Contact contact) {
+  return kContactNames.Name(contact);
+}
+std::string_view OutcomeStatusName(OutcomeStatus status) {
+  return kStatusNames.Name(status);
+}
 
 void StatusCounts::Add(const StatusCounts& other) {
   missed += other.missed;
@@ -38,8 +44,8 @@ void StatusCounts::Add(const StatusCounts& other) {
 }
 
 std::string StatusCountsText(const StatusCounts& counts) {
-  return std::to_string(counts.missed) + " missed the ball, " +
-         std::to_string(counts.not_settled) + " did not settle";
+  return std::to_string(counts.missed) + " missed the ball, " + std::to_string(counts.not_settled) +
+         " did not settle";
 }
 
 StatusCounts CountStatuses(std::span<const Outcome> outcomes) {

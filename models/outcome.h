@@ -11,8 +11,8 @@
 #include <string>
 #include <string_view>
 
-#include "models/field_spec.h"
 #include "common/geometry.h"
+#include "models/field_spec.h"
 #include "models/situation.h"
 
 namespace foresight {
@@ -49,10 +49,11 @@ struct DrawnState {
   Vec2 p_F_ball{0.0, 0.0};
 };
 
-// One concrete action. kick_index == kNoKick (models/kick_model.h) is the `none` action (the ball stays). The robot first
-// turns around the ball by rotation_rad (the ball stays put, the robot's heading changes by it),
-// then kicks. launch_* are the coarse model's drawn launch in the turned robot frame; a physics
-// simulator ignores them and draws its physical perturbations from `stream` instead.
+// One concrete action. kick_index == kNoKick (models/kick_model.h) is the `none` action (the ball
+// stays). The robot first turns around the ball by rotation_rad (the ball stays put, the robot's
+// heading changes by it), then kicks. launch_* are the coarse model's drawn launch in the turned
+// robot frame; a physics simulator ignores them and draws its physical perturbations from `stream`
+// instead.
 struct ConcreteAction {
   int kick_index = kNoKick;
   double rotation_rad = 0.0;

@@ -17,11 +17,11 @@ struct RobotShape {
   enum class Kind { kBox, kSphere, kCylinder, kMesh };
   Kind kind = Kind::kBox;
   Eigen::Isometry3d pose_L_S = Eigen::Isometry3d::Identity();  // URDF <collision><origin>
-  Eigen::Vector3d box_size_m = Eigen::Vector3d::Zero();          // kBox: full extents
-  double radius_m = 0.0;                                          // kSphere, kCylinder
-  double length_m = 0.0;                                          // kCylinder, along S's z
-  std::filesystem::path mesh_file;                                // kMesh: resolved path
-  std::vector<Eigen::Vector3d> mesh_vertices_S_m;                 // kMesh: scaled, in S
+  Eigen::Vector3d box_size_m = Eigen::Vector3d::Zero();        // kBox: full extents
+  double radius_m = 0.0;                                       // kSphere, kCylinder
+  double length_m = 0.0;                                       // kCylinder, along S's z
+  std::filesystem::path mesh_file;                             // kMesh: resolved path
+  std::vector<Eigen::Vector3d> mesh_vertices_S_m;              // kMesh: scaled, in S
 };
 
 struct RobotLink {
@@ -40,16 +40,16 @@ struct RobotJoint {
   int parent_link = -1;
   int child_link = -1;
   Eigen::Isometry3d pose_P_J = Eigen::Isometry3d::Identity();  // in the parent link's frame
-  Eigen::Vector3d axis_J = Eigen::Vector3d::UnitZ();            // unit vector in J
-  double lower_rad = 0.0;   // kRevolute only
+  Eigen::Vector3d axis_J = Eigen::Vector3d::UnitZ();           // unit vector in J
+  double lower_rad = 0.0;                                      // kRevolute only
   double upper_rad = 0.0;
   double effort_nm = 0.0;
   double velocity_radps = 0.0;
 };
 
 struct RobotModel {
-  std::string name;               // the URDF's <robot name>
-  std::filesystem::path source;   // the URDF file
+  std::string name;              // the URDF's <robot name>
+  std::filesystem::path source;  // the URDF file
   // Topological order: links[0] is the root, every link comes after its parent; joints[i]
   // is listed in the order of the child links (joints[j].child_link increases with j).
   std::vector<RobotLink> links;

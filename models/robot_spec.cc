@@ -7,9 +7,9 @@
 
 #include "common/checks.h"
 #include "common/error.h"
-#include "models/model_paths.h"
 #include "common/geometry.h"
 #include "common/json_reader.h"
+#include "models/model_paths.h"
 
 namespace foresight {
 namespace {

@@ -95,10 +95,12 @@ Situation LoadSituation(const std::filesystem::path& file, const std::filesystem
 
   Situation situation;
   situation.name = root.StringOr("name", file.stem().string());
-  situation.field_file = ResolveModelFile(root.String("field"), DataFolder::kFields, dir, models_dir);
+  situation.field_file =
+      ResolveModelFile(root.String("field"), DataFolder::kFields, dir, models_dir);
   situation.field = LoadReferenced(root, "field", situation.field_file, LoadFieldSpec);
   if (overrides.kicks_file.empty()) {
-    situation.kicks_file = ResolveModelFile(root.String("kicks"), DataFolder::kKicks, dir, models_dir);
+    situation.kicks_file =
+        ResolveModelFile(root.String("kicks"), DataFolder::kKicks, dir, models_dir);
     situation.kicks = LoadReferenced(root, "kicks", situation.kicks_file, LoadKickModel);
   } else {
     situation.kicks_file = overrides.kicks_file;

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "common/geometry.h"
 #include "models/evaluation_params.h"
 #include "models/field_spec.h"
-#include "common/geometry.h"
 #include "models/kick_model.h"
 
 namespace foresight {

@@ -12,8 +12,9 @@ std::unique_ptr<PhysicsSetup> LoadPhysicsSetup(Situation situation,
   setup->situation = std::move(situation);
   const Situation& s = setup->situation;
   setup->robot = LoadRobot(s.kicks.robot, models_dir);
-  setup->physics_file =
-      physics_file.empty() ? DataFile(models_dir, DataFolder::kPhysics, s.field.name) : physics_file;
+  setup->physics_file = physics_file.empty()
+                            ? DataFile(models_dir, DataFolder::kPhysics, s.field.name)
+                            : physics_file;
   setup->params = LoadPhysicsParams(setup->physics_file);
   setup->state = DrawnState{s.state.robot, s.state.MeanBallInField()};
   setup->simulator.emplace(

@@ -9,9 +9,9 @@
 
 #include <algorithm>
 
+#include "common/geometry.h"
 #include "models/evaluation_params.h"
 #include "models/field_spec.h"
-#include "common/geometry.h"
 
 namespace foresight {
 

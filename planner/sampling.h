@@ -33,9 +33,9 @@ DrawnSample DrawSample(const StateEstimate& estimate, std::uint64_t seed, std::u
 void DrawSamples(const StateEstimate& estimate, std::uint64_t seed, int count,
                  std::vector<DrawnSample>& out);
 
-// The concrete action of `kick` (or none, kick_index == kNoKick) turned by rotation_rad, for one sample.
-// Its stream is derived from the sample's, the same for every candidate (common random numbers
-// for simulators that draw more, like physics).
+// The concrete action of `kick` (or none, kick_index == kNoKick) turned by rotation_rad, for one
+// sample. Its stream is derived from the sample's, the same for every candidate (common random
+// numbers for simulators that draw more, like physics).
 ConcreteAction MakeAction(const KickModel& kicks, int kick_index, double rotation_rad,
                           const DrawnSample& sample);
 

@@ -15,9 +15,17 @@ constexpr EnumNames<Strategy, 5> kStrategyNames{{{
 
 }  // namespace
 
-std::string_view StrategyName(Strategy strategy) { return kStrategyNames.Name(strategy); }
-std::optional<Strategy> ParseStrategy(std::string_view name) { return kStrategyNames.Parse(name); }
-std::vector<Strategy> AllStrategies() { return kStrategyNames.All(); }
-std::string StrategyNames() { return kStrategyNames.List(); }
+std::string_view StrategyName(Strategy strategy) {
+  return kStrategyNames.Name(strategy);
+}
+std::optional<Strategy> ParseStrategy(std::string_view name) {
+  return kStrategyNames.Parse(name);
+}
+std::vector<Strategy> AllStrategies() {
+  return kStrategyNames.All();
+}
+std::string StrategyNames() {
+  return kStrategyNames.List();
+}
 
 }  // namespace foresight

@@ -47,7 +47,8 @@ std::string Degrees(double rad) {
 
 int FreedmanDiaconisBins(const std::vector<double>& sorted, double span) {
   const double n = static_cast<double>(sorted.size());
-  const double width = 2.0 * (QuantileOfSorted(sorted, 0.75) - QuantileOfSorted(sorted, 0.25)) / std::cbrt(n);
+  const double width =
+      2.0 * (QuantileOfSorted(sorted, 0.75) - QuantileOfSorted(sorted, 0.25)) / std::cbrt(n);
   const double bins = width > 0.0 ? std::ceil(span / width) : std::ceil(std::sqrt(n));
   return static_cast<int>(std::clamp(bins, 5.0, 60.0));
 }

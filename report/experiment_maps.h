@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "models/field_spec.h"
 #include "common/geometry.h"
+#include "models/field_spec.h"
 
 namespace foresight {
 

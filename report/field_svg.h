@@ -4,8 +4,8 @@
 
 #include <string_view>
 
-#include "models/field_spec.h"
 #include "common/geometry.h"
+#include "models/field_spec.h"
 #include "report/svg_writer.h"
 
 namespace foresight {

@@ -1,5 +1,5 @@
-// Distribution functions of stats/distributions.h: the standard normal, and the quantiles of Student's t
-// and chi-square, all written here so every platform gives the same numbers.
+// Distribution functions of stats/distributions.h: the standard normal, and the quantiles of
+// Student's t and chi-square, all written here so every platform gives the same numbers.
 //
 // Formulas and sources:
 //   Normal cdf         Phi(z) = erfc(-z / sqrt(2)) / 2; erfc keeps the lower tail accurate.

@@ -16,12 +16,12 @@
 #include <string>
 #include <vector>
 
-#include "models/kick_model.h"
 #include "common/random.h"
+#include "models/kick_model.h"
 #include "physics/trial.h"
-#include "validation/deceleration_fit.h"
 #include "stats/goodness_of_fit.h"
 #include "stats/statistics.h"
+#include "validation/deceleration_fit.h"
 
 namespace foresight {
 

@@ -1,7 +1,5 @@
 #include "validation/check_kinds.h"
 
-#include "stats/statistics.h"
-
 #include <cmath>
 #include <functional>
 #include <string>
@@ -15,6 +13,7 @@
 #include "physics/physics_scene.h"
 #include "physics/trial.h"
 #include "report/report_format.h"
+#include "stats/statistics.h"
 #include "validation/calibration.h"
 #include "validation/fidelity.h"
 #include "validation/physics_calibration.h"
@@ -186,7 +185,8 @@ CheckResult Run(const CalibrationBandCheck& c, const CheckSpec& spec,
 
 CheckResult Run(const FidelityFloorCheck& c, const CheckSpec& spec,
                 const std::filesystem::path& models, int threads) {
-  const std::filesystem::path kicks = ResolveModelFile(c.kicks, DataFolder::kKicks, spec.dir, models);
+  const std::filesystem::path kicks =
+      ResolveModelFile(c.kicks, DataFolder::kKicks, spec.dir, models);
   const FidelitySet set = LoadFidelitySet(c.situations, models, kicks);
   FidelitySettings settings;
   settings.physics_trials = c.trials;

@@ -6,10 +6,10 @@
 #include <numeric>
 
 #include "common/error.h"
+#include "physics/physics_setup.h"
 #include "planner/coarse_planner.h"
 #include "validation/candidate_grid.h"
 #include "validation/physics_evaluator.h"
-#include "physics/physics_setup.h"
 
 namespace foresight {
 

@@ -22,8 +22,8 @@
 #include <vector>
 
 #include "planner/decision.h"
-#include "validation/fidelity_set.h"
 #include "stats/statistics.h"
+#include "validation/fidelity_set.h"
 
 namespace foresight {
 

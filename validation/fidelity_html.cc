@@ -19,8 +19,7 @@ std::string MeanText(const MeanWithInterval& m, int decimals) {
 }
 
 std::string ActionText(const Situation& s, int kick, double rotation_rad) {
-  return s.kicks.NameOf(kick) + " " +
-         Fixed(rotation_rad * kRadToDeg, 0) + " deg";
+  return s.kicks.NameOf(kick) + " " + Fixed(rotation_rad * kRadToDeg, 0) + " deg";
 }
 
 void SummaryTables(HtmlReport& html, const FidelityResult& r) {
@@ -149,7 +148,7 @@ std::string FidelityHtml(const FidelityRun& run) {
       {"converged samples", std::to_string(run.settings.converged_samples)},
       {"physics trials M", std::to_string(run.settings.physics_trials) + " per candidate (" +
                                std::to_string(r.physics_trials_run) + " in all; " +
-                                StatusCountsText(r.physics_status) + ")"},
+                               StatusCountsText(r.physics_status) + ")"},
       {"seed", std::to_string(p.seed)},
       {"physics", p.Input("physics_file")}};
   for (auto& row : ProvenanceRows(p)) header.push_back(std::move(row));

@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "common/error.h"
-#include "models/model_paths.h"
 #include "common/geometry.h"
 #include "common/json_reader.h"
+#include "models/model_paths.h"
 
 namespace foresight {
 

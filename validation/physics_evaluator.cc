@@ -35,8 +35,7 @@ PhysicsHypothesis PhysicsActionEvaluator::Run(int kick_index, double rotation_ra
 }
 
 const PhysicsHypothesis& PhysicsActionEvaluator::Hypothesis(int kick_index, double rotation_rad) {
-  const std::pair<int, double> key{kick_index,
-                                   kick_index == kNoKick ? 0.0 : rotation_rad};
+  const std::pair<int, double> key{kick_index, kick_index == kNoKick ? 0.0 : rotation_rad};
   auto it = done_.find(key);
   if (it == done_.end()) {
     it = done_.emplace(key, Run(key.first, key.second)).first;
@@ -51,8 +50,7 @@ ActionEvaluation PhysicsActionEvaluator::Evaluate(int kick_index, double rotatio
 }
 
 std::vector<Outcome> PhysicsActionEvaluator::Outcomes(int kick_index, double rotation_rad) const {
-  const auto it =
-      done_.find({kick_index, kick_index == kNoKick ? 0.0 : rotation_rad});
+  const auto it = done_.find({kick_index, kick_index == kNoKick ? 0.0 : rotation_rad});
   return it != done_.end() ? it->second.outcomes : Run(kick_index, rotation_rad).outcomes;
 }
 

@@ -5,10 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include "experiments/strategy_stats.h"
 #include "planner/coarse_simulator.h"
 #include "tests/experiments/strategies_test_params.h"
 #include "tests/support/test_situations.h"
-#include "experiments/strategy_stats.h"
 
 namespace foresight {
 namespace {

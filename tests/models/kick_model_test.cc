@@ -156,7 +156,6 @@ TEST(KickModelTest, InfiniteSigmaCannotEnter) {
   EXPECT_THAT(message, HasSubstr("sigma_speed_mps"));
 }
 
-
 TEST(KickModelJsonTest, WrittenModelLoadsBackWithRoundedNumbers) {
   KickModel model;
   model.robot = "nao";

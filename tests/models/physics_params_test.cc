@@ -36,9 +36,8 @@ TEST_P(PhysicsParamsErrorTest, NamesTheFileTheFieldAndTheValue) {
   const BrokenCase c = GetParam();
   // One file per case: ctest runs the cases in parallel processes sharing the temp folder.
   const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  const auto file = testing::BrokenShipped("physics/spl.json",
-                                           "physics_broken_" + name.substr(name.rfind('/') + 1),
-                                           c.from, c.to);
+  const auto file = testing::BrokenShipped(
+      "physics/spl.json", "physics_broken_" + name.substr(name.rfind('/') + 1), c.from, c.to);
   const std::string message = InputErrorMessage([&] { LoadPhysicsParams(file); });
   EXPECT_THAT(message, HasSubstr(file.string()));
   EXPECT_THAT(message, HasSubstr(c.message));

@@ -6,10 +6,10 @@
 
 #include "common/geometry.h"
 #include "models/kick_model.h"
+#include "physics/physics_runs.h"
 #include "physics/physics_simulator.h"
 #include "tests/support/physics_test_scenes.h"
 #include "tests/support/test_situations.h"
-#include "physics/physics_runs.h"
 
 namespace foresight {
 namespace {

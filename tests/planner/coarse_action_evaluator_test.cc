@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "planner/coarse_planner.h"
 #include "common/random.h"
+#include "planner/coarse_planner.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {

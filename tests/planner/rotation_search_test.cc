@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "planner/coarse_planner.h"
 #include "common/random.h"
+#include "planner/coarse_planner.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {

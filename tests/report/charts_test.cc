@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "tests/support/svg_inspect.h"
 #include "report/chart_axes.h"
+#include "tests/support/svg_inspect.h"
 
 namespace foresight {
 namespace {

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "report/chart_axes.h"
 #include "tests/support/svg_inspect.h"
 #include "tests/support/test_situations.h"
-#include "report/chart_axes.h"
 
 namespace foresight {
 namespace {

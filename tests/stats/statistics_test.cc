@@ -3,9 +3,6 @@
 // tests on a tiny hand-checkable sample, rank agreement on hand-counted cases, and input checks.
 #include "stats/statistics.h"
 
-#include "stats/distributions.h"
-#include "stats/goodness_of_fit.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +13,8 @@
 #include <vector>
 
 #include "common/random.h"
+#include "stats/distributions.h"
+#include "stats/goodness_of_fit.h"
 
 namespace foresight {
 namespace {

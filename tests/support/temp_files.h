@@ -9,7 +9,9 @@
 namespace foresight::testing {
 
 // The shipped models/ folder (FORESIGHT_TEST_MODELS_DIR is set by tests/CMakeLists.txt).
-inline std::filesystem::path ModelsDir() { return FORESIGHT_TEST_MODELS_DIR; }
+inline std::filesystem::path ModelsDir() {
+  return FORESIGHT_TEST_MODELS_DIR;
+}
 
 // Writes `text` to a fresh file in a per-test temporary folder and returns its path.
 inline std::filesystem::path WriteTempFile(const std::string& name, const std::string& text) {

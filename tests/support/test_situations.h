@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "models/situation.h"
 #include "common/random.h"
+#include "models/situation.h"
 #include "tests/support/temp_files.h"
 
 namespace foresight::testing {
