@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "common/checks.h"
+#include "common/enum_names.h"
 #include "common/error.h"
 #include "common/geometry.h"
 #include "models/field_spec.h"
@@ -224,16 +225,26 @@ void FidelityFloorCheck::Validate() const {
   RequireInRange("trials", trials, kMinCheckTrials, kMaxCheckTrials);
 }
 
+namespace {
+
+constexpr EnumNames<TunnellingTarget, 3> kTargetNames{{{
+    {TunnellingTarget::kPost, "post"},
+    {TunnellingTarget::kBackNet, "back_net"},
+    {TunnellingTarget::kSideNet, "side_net"},
+}}};
+
+}  // namespace
+
 std::string_view TunnellingTargetName(TunnellingTarget target) {
-  switch (target) {
-    case TunnellingTarget::kPost:
-      return "post";
-    case TunnellingTarget::kBackNet:
-      return "back_net";
-    case TunnellingTarget::kSideNet:
-      return "side_net";
-  }
-  return "?";
+  return kTargetNames.Name(target);
+}
+
+std::optional<TunnellingTarget> ParseTunnellingTarget(std::string_view name) {
+  return kTargetNames.Parse(name);
+}
+
+std::string TunnellingTargetNames() {
+  return kTargetNames.List();
 }
 
 std::string_view KindName(const CheckKind& kind) {

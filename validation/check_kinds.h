@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -42,6 +43,8 @@ struct FreeRollCheck {
 enum class TunnellingTarget { kPost, kBackNet, kSideNet };
 // "post", "back_net", "side_net": the spec's words.
 std::string_view TunnellingTargetName(TunnellingTarget target);
+std::optional<TunnellingTarget> ParseTunnellingTarget(std::string_view name);
+std::string TunnellingTargetNames();  // "post, back_net, side_net"
 
 // A fast ball fired at a post, the back net or a side net from outside never gets closer to it
 // than the ball's radius less max_penetration_m.

@@ -36,11 +36,8 @@ int Trials(const JsonObject& item, double value) {
 }
 
 TunnellingTarget Target(const JsonObject& item, const std::string& text) {
-  for (TunnellingTarget t :
-       {TunnellingTarget::kPost, TunnellingTarget::kBackNet, TunnellingTarget::kSideNet}) {
-    if (text == TunnellingTargetName(t)) return t;
-  }
-  item.Fail("target", "must be post, back_net or side_net, got '" + text + "'");
+  if (const std::optional<TunnellingTarget> t = ParseTunnellingTarget(text)) return *t;
+  item.Fail("target", "must be one of " + TunnellingTargetNames() + ", got '" + text + "'");
 }
 
 // Each reader takes the strings first, then the numbers, then turns them into their types: a
