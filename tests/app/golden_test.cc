@@ -1,5 +1,5 @@
 // A pinned decision: the JSON of one run must not change by a bit unless the model does, on any
-// machine (the planner's maths is the project's own, tests/models/fast_math_test.cc). When a
+// machine (the planner's maths is the project's own, tests/common/fast_math_test.cc). When a
 // change to the model is intended, regenerate the file with the command in its "regenerate"
 // key and say so in the commit.
 #include <nlohmann/json.hpp>
