@@ -14,6 +14,8 @@
 #include "app/report_text.h"
 #include "app/simulate_command.h"
 #include "app/simulation_output.h"
+#include "cbr/case.h"
+#include "cbr/problem.h"
 #include "common/checks.h"
 #include "common/enum_names.h"
 #include "common/error.h"

@@ -1,0 +1,56 @@
+#include "cbr/case.h"
+
+#include "common/enum_names.h"
+
+namespace foresight {
+namespace {
+
+constexpr EnumNames<DefendingGoal, 2> kGoalNames{{{
+    {DefendingGoal::kCyan, "cyan"},
+    {DefendingGoal::kYellow, "yellow"},
+}}};
+
+constexpr EnumNames<ActionType, 8> kActionNames{{{
+    {ActionType::kGetBall, "get_ball"},
+    {ActionType::kKick, "kick"},
+    {ActionType::kPass, "pass"},
+    {ActionType::kReceive, "receive"},
+    {ActionType::kGoTo, "go_to"},
+    {ActionType::kTurn, "turn"},
+    {ActionType::kDribble, "dribble"},
+    {ActionType::kWait, "wait"},
+}}};
+
+constexpr EnumNames<CaseTransform, 4> kTransformNames{{{
+    {CaseTransform::kOriginal, "original"},
+    {CaseTransform::kMirrorY, "mirror_y"},
+    {CaseTransform::kMirrorX, "mirror_x"},
+    {CaseTransform::kMirrorXY, "mirror_xy"},
+}}};
+
+}  // namespace
+
+std::string_view DefendingGoalName(DefendingGoal goal) {
+  return kGoalNames.Name(goal);
+}
+std::optional<DefendingGoal> ParseDefendingGoal(std::string_view name) {
+  return kGoalNames.Parse(name);
+}
+std::string_view ActionTypeName(ActionType type) {
+  return kActionNames.Name(type);
+}
+std::optional<ActionType> ParseActionType(std::string_view name) {
+  return kActionNames.Parse(name);
+}
+std::string ActionTypeNames() {
+  return kActionNames.List();
+}
+std::string_view CaseTransformName(CaseTransform transform) {
+  return kTransformNames.Name(transform);
+}
+
+double AttackSign(DefendingGoal defending) {
+  return defending == DefendingGoal::kCyan ? 1.0 : -1.0;
+}
+
+}  // namespace foresight
