@@ -1,7 +1,9 @@
 // The `foresight` command line: one binary, one subcommand per job. Bad input of any kind ends
 // in one line "foresight: error: ..." on stderr and exit code 2 (docs/ARCHITECTURE.md, "Errors").
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <iostream>
+#include <string>
 
 #include "app/calibrate_command.h"
 #include "app/check_command.h"
@@ -16,8 +18,28 @@ namespace {
 constexpr int kExitBadInput = 2;
 constexpr int kExitInternal = 3;
 
+constexpr std::size_t kMaxMessageBytes = 2000;
+
+// The promise is one line: control characters (a name with a newline in it) are escaped, and a
+// message is cut after kMaxMessageBytes.
+std::string OneLine(const std::string& message) {
+  std::string line;
+  for (const char c : message.substr(0, kMaxMessageBytes)) {
+    if (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f) {
+      line += c;
+    } else {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned char>(c));
+      line += c == '\n' ? std::string("\\n") : std::string(escaped);
+    }
+  }
+  if (message.size() > kMaxMessageBytes)
+    line += "... (" + std::to_string(message.size()) + " bytes)";
+  return line;
+}
+
 int Fail(const std::string& message) {
-  std::cerr << "foresight: error: " << message << "\n";
+  std::cerr << "foresight: error: " << OneLine(message) << "\n";
   return kExitBadInput;
 }
 
@@ -68,7 +90,7 @@ int main(int argc, char** argv) {
   } catch (const foresight::InputError& e) {
     return Fail(e.what());
   } catch (const std::exception& e) {
-    std::cerr << "foresight: internal error: " << e.what() << "\n";
+    std::cerr << "foresight: internal error: " << OneLine(e.what()) << "\n";
     return kExitInternal;
   }
   return kExitBadInput;

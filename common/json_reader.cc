@@ -2,12 +2,27 @@
 
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "common/checks.h"
 #include "common/error.h"
 
 namespace foresight {
+
+std::string QuoteJson(const nlohmann::json& value) {
+  constexpr std::size_t kMaxChars = 60;
+  const auto escaped = [](const nlohmann::json& v) {
+    return v.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  };
+  if (value.is_object()) return "an object with " + std::to_string(value.size()) + " keys";
+  if (value.is_array()) return "an array of " + std::to_string(value.size()) + " items";
+  if (!value.is_string()) return escaped(value);
+  const std::string& text = value.get_ref<const std::string&>();
+  if (text.size() <= kMaxChars) return escaped(value);
+  return escaped(nlohmann::json(text.substr(0, kMaxChars))) + "... (" +
+         std::to_string(text.size()) + " bytes)";
+}
 
 JsonObject::JsonObject(const nlohmann::json* value, std::string file, std::string path)
     : value_(value), file_(std::move(file)), path_(std::move(path)) {
@@ -37,7 +52,7 @@ const nlohmann::json& JsonObject::Get(std::string_view key) const {
 
 double JsonObject::Number(std::string_view key) const {
   const nlohmann::json& v = Get(key);
-  if (!v.is_number()) Fail(key, "must be a number, got " + v.dump());
+  if (!v.is_number()) Fail(key, "must be a number, got " + QuoteJson(v));
   double number = v.get<double>();
   if (!std::isfinite(number)) Fail(key, "must be finite, got " + FormatNumber(number));
   return number;
@@ -49,15 +64,15 @@ double JsonObject::NumberOr(std::string_view key, double fallback) const {
 
 int JsonObject::Integer(std::string_view key) const {
   const nlohmann::json& v = Get(key);
-  if (!v.is_number_integer()) Fail(key, "must be an integer, got " + v.dump());
+  if (!v.is_number_integer()) Fail(key, "must be an integer, got " + QuoteJson(v));
   auto number = v.get<long long>();
-  if (number < -(1LL << 31) || number >= (1LL << 31)) Fail(key, "out of range: " + v.dump());
+  if (number < -(1LL << 31) || number >= (1LL << 31)) Fail(key, "out of range: " + QuoteJson(v));
   return static_cast<int>(number);
 }
 
 std::string JsonObject::String(std::string_view key) const {
   const nlohmann::json& v = Get(key);
-  if (!v.is_string()) Fail(key, "must be a string, got " + v.dump());
+  if (!v.is_string()) Fail(key, "must be a string, got " + QuoteJson(v));
   return v.get<std::string>();
 }
 
@@ -67,7 +82,7 @@ std::string JsonObject::StringOr(std::string_view key, std::string fallback) con
 
 JsonObject JsonObject::Object(std::string_view key) const {
   const nlohmann::json& v = Get(key);
-  if (!v.is_object()) Fail(key, "must be a JSON object, got " + v.dump());
+  if (!v.is_object()) Fail(key, "must be a JSON object, got " + QuoteJson(v));
   return JsonObject(&v, file_, PathOf(key));
 }
 
@@ -75,11 +90,12 @@ std::vector<JsonObject> JsonObject::ObjectArray(std::string_view key) const {
   std::vector<JsonObject> items;
   if (!Has(key)) return items;
   const nlohmann::json& v = Get(key);
-  if (!v.is_array()) Fail(key, "must be an array, got " + v.dump());
+  if (!v.is_array()) Fail(key, "must be an array, got " + QuoteJson(v));
   for (std::size_t i = 0; i < v.size(); ++i) {
     std::string item_path = PathOf(key) + "[" + std::to_string(i) + "]";
     if (!v[i].is_object()) {
-      throw InputError(file_ + ": " + item_path + ": must be a JSON object, got " + v[i].dump());
+      throw InputError(file_ + ": " + item_path + ": must be a JSON object, got " +
+                       QuoteJson(v[i]));
     }
     items.emplace_back(&v[i], file_, item_path);
   }
@@ -88,7 +104,7 @@ std::vector<JsonObject> JsonObject::ObjectArray(std::string_view key) const {
 
 const nlohmann::json& JsonObject::GetArray(std::string_view key) const {
   const nlohmann::json& v = Get(key);
-  if (!v.is_array()) Fail(key, "must be an array, got " + v.dump());
+  if (!v.is_array()) Fail(key, "must be an array, got " + QuoteJson(v));
   return v;
 }
 
@@ -97,7 +113,7 @@ std::vector<std::string> JsonObject::StringArray(std::string_view key) const {
   std::vector<std::string> items;
   for (std::size_t i = 0; i < v.size(); ++i) {
     const std::string item_key = std::string(key) + "[" + std::to_string(i) + "]";
-    if (!v[i].is_string()) Fail(item_key, "must be a string, got " + v[i].dump());
+    if (!v[i].is_string()) Fail(item_key, "must be a string, got " + QuoteJson(v[i]));
     items.push_back(v[i].get<std::string>());
   }
   return items;
@@ -108,7 +124,7 @@ std::vector<double> JsonObject::NumberArray(std::string_view key) const {
   std::vector<double> items;
   for (std::size_t i = 0; i < v.size(); ++i) {
     const std::string item_key = std::string(key) + "[" + std::to_string(i) + "]";
-    if (!v[i].is_number()) Fail(item_key, "must be a number, got " + v[i].dump());
+    if (!v[i].is_number()) Fail(item_key, "must be a number, got " + QuoteJson(v[i]));
     const double number = v[i].get<double>();
     if (!std::isfinite(number)) Fail(item_key, "must be finite, got " + FormatNumber(number));
     items.push_back(number);
@@ -165,13 +181,45 @@ std::string ParseProblem(const nlohmann::json::parse_error& e) {
   return colon == std::string::npos ? what : what.substr(colon + 2);
 }
 
+// Strictness beyond the JSON grammar, checked while parsing: a bounded depth (so nothing
+// downstream recurses without end), and no key twice in one object (nlohmann would keep the
+// last silently, so a typo'd override would win unseen).
+class StrictParse {
+ public:
+  explicit StrictParse(const std::string& origin) : origin_(origin) {}
+
+  bool operator()(int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    if (depth > kMaxJsonDepth) {
+      throw InputError(origin_ + ": invalid JSON: nested deeper than " +
+                       std::to_string(kMaxJsonDepth) + " levels");
+    }
+    if (event == Event::object_start) keys_.emplace_back();
+    if (event == Event::object_end && !keys_.empty()) keys_.pop_back();
+    if (event == Event::key && !keys_.empty() &&
+        !keys_.back().insert(parsed.get<std::string>()).second) {
+      throw InputError(origin_ + ": invalid JSON: the key " + QuoteJson(parsed) +
+                       " appears twice in one object");
+    }
+    return true;
+  }
+
+ private:
+  const std::string& origin_;
+  std::vector<std::set<std::string>> keys_;
+};
+
 }  // namespace
 
 JsonDocument JsonDocument::Parse(std::string_view text, std::string origin) {
   JsonDocument doc;
   doc.origin_ = std::move(origin);
+  if (const auto nul = text.find('\0'); nul != std::string_view::npos) {
+    throw InputError(doc.origin_ + ": invalid JSON at " + LineAndColumn(text, nul + 1) +
+                     ": a NUL byte (not a text file?)");
+  }
   try {
-    doc.tree_ = nlohmann::json::parse(text);
+    doc.tree_ = nlohmann::json::parse(text, StrictParse(doc.origin_));
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(doc.origin_ + ": invalid JSON at " + LineAndColumn(text, e.byte) + ": " +
                      ParseProblem(e));
@@ -193,13 +241,22 @@ JsonDocument JsonDocument::Parse(std::string_view text, std::string origin) {
 }
 
 JsonDocument JsonDocument::Load(const std::filesystem::path& file) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(file, ec);
+  if (std::filesystem::is_directory(status)) throw InputError(file.string() + ": is a directory");
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    throw InputError(file.string() + ": is not a regular file (a device or a pipe?)");
+  }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file.string() + ": cannot open file");
+  const std::uintmax_t size = std::filesystem::file_size(file, ec);
+  if (!ec && size > kMaxJsonBytes) {
+    throw InputError(file.string() + ": " + std::to_string(size) + " bytes, more than the " +
+                     std::to_string(kMaxJsonBytes) + " a data file may have");
+  }
   std::stringstream buffer;
   buffer << in.rdbuf();
   if (in.bad()) throw InputError(file.string() + ": cannot read file");
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) throw InputError(file.string() + ": is a directory");
   return Parse(buffer.str(), file.string());
 }
 

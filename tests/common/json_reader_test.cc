@@ -161,4 +161,46 @@ TEST(JsonReaderTest, OverflowingNumberCannotEnterAsInfinity) {
 }
 
 }  // namespace
+TEST(JsonReaderTest, QuotesValuesShortAndOnOneLine) {
+  EXPECT_EQ(QuoteJson(nlohmann::json("85%")), "\"85%\"");
+  EXPECT_EQ(QuoteJson(nlohmann::json(2.5)), "2.5");
+  EXPECT_EQ(QuoteJson(nlohmann::json("a\nb")), "\"a\\nb\"");
+  EXPECT_EQ(QuoteJson(nlohmann::json::parse("[[1], 2, {}]")), "an array of 3 items");
+  EXPECT_EQ(QuoteJson(nlohmann::json::parse(R"({"a": 1, "b": 2})")), "an object with 2 keys");
+  const std::string quoted = QuoteJson(nlohmann::json(std::string(500, 'x')));
+  EXPECT_EQ(quoted, "\"" + std::string(60, 'x') + "\"... (500 bytes)");
+}
+
+TEST(JsonReaderTest, DepthIsBoundedAtTheLimitNotBelow) {
+  const auto nested = [](int depth) {
+    return "{\"a\": " + std::string(depth - 1, '[') + std::string(depth - 1, ']') + "}";
+  };
+  EXPECT_NO_THROW(JsonDocument::Parse(nested(kMaxJsonDepth + 1), "ok.json"));
+  EXPECT_EQ(InputErrorMessage([&] { JsonDocument::Parse(nested(kMaxJsonDepth + 2), "deep.json"); }),
+            "deep.json: invalid JSON: nested deeper than 64 levels");
+}
+
+TEST(JsonReaderTest, AKeyTwiceInOneObjectIsAnErrorInAnotherObjectNot) {
+  EXPECT_NO_THROW(JsonDocument::Parse(R"({"a": {"x": 1}, "b": {"x": 2}})", "ok.json"));
+  EXPECT_EQ(InputErrorMessage([] { JsonDocument::Parse(R"({"a": {"x": 1, "x": 2}})", "d.json"); }),
+            "d.json: invalid JSON: the key \"x\" appears twice in one object");
+}
+
+TEST(JsonReaderTest, NulBytesAndTrailingTextAreRejected) {
+  EXPECT_THAT(InputErrorMessage([] { JsonDocument::Parse(std::string("{}\0", 3), "n.json"); }),
+              HasSubstr("n.json: invalid JSON at line 1, column 3: a NUL byte"));
+  EXPECT_THAT(InputErrorMessage([] { JsonDocument::Parse("{} x", "t.json"); }),
+              StartsWith("t.json: invalid JSON at line 1, column "));
+}
+
+TEST(JsonReaderTest, OnlyRegularFilesOfBoundedSizeAreRead) {
+  EXPECT_EQ(InputErrorMessage([] { JsonDocument::Load("/dev/zero"); }),
+            "/dev/zero: is not a regular file (a device or a pipe?)");
+  const std::filesystem::path big = testing::WriteTempFile(
+      "json_reader_big.json", "{\"a\": \"" + std::string(kMaxJsonBytes, 'x') + "\"}");
+  EXPECT_THAT(InputErrorMessage([&] { JsonDocument::Load(big); }),
+              HasSubstr("more than the 16777216 a data file may have"));
+  std::filesystem::remove(big);
+}
+
 }  // namespace foresight
