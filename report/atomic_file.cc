@@ -3,36 +3,72 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <iostream>
 #include <string>
 
 #include "common/error.h"
 
 namespace foresight {
+namespace {
 
-void WriteFileAtomically(const std::filesystem::path& file, std::string_view content) {
+// Devices, pipes and "-" take the content as a stream: there is nothing to rename into place,
+// and renaming over them would replace /dev/null or a FIFO with a regular file.
+void WriteStream(std::ostream& out, const std::string& name, std::string_view content) {
+  out.write(content.data(), static_cast<std::streamsize>(content.size()));
+  out.flush();
+  if (!out) throw InputError(name + ": write failed");
+}
+
+void WriteToDevice(const std::filesystem::path& file, std::string_view content) {
+  std::ofstream out(file, std::ios::binary);
+  if (!out) throw InputError(file.string() + ": cannot write");
+  WriteStream(out, file.string(), content);
+}
+
+void WriteRegularFile(const std::filesystem::path& shown, const std::filesystem::path& file,
+                      std::string_view content) {
   const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : ".";
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec)) {
-    throw InputError(file.string() + ": cannot write: directory " + dir.string() +
+    throw InputError(shown.string() + ": cannot write: directory " + dir.string() +
                      " does not exist");
   }
   std::filesystem::path temp = file;
   temp += ".tmp." + std::to_string(::getpid());
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(file.string() + ": cannot write file");
+    if (!out) throw InputError(shown.string() + ": cannot write file");
     out.write(content.data(), static_cast<std::streamsize>(content.size()));
     out.close();  // checked: a failed close can mean lost data
     if (!out) {
       std::filesystem::remove(temp, ec);
-      throw InputError(file.string() + ": write failed");
+      throw InputError(shown.string() + ": write failed");
     }
   }
   std::filesystem::rename(temp, file, ec);
   if (ec) {
     std::filesystem::remove(temp, ec);
-    throw InputError(file.string() + ": cannot move the finished file into place");
+    throw InputError(shown.string() + ": cannot move the finished file into place");
   }
+}
+
+}  // namespace
+
+void WriteFileAtomically(const std::filesystem::path& file, std::string_view content) {
+  if (file == kStandardOutput) return WriteStream(std::cout, "standard output", content);
+  std::error_code ec;
+  // A symbolic link stays a link: the file it points to is replaced, atomically.
+  std::filesystem::path target = file;
+  if (std::filesystem::is_symlink(std::filesystem::symlink_status(file, ec))) {
+    target = std::filesystem::weakly_canonical(file, ec);
+    if (ec) throw InputError(file.string() + ": cannot follow the symbolic link");
+  }
+  const std::filesystem::file_status status = std::filesystem::status(target, ec);
+  if (std::filesystem::is_directory(status)) throw InputError(file.string() + ": is a directory");
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    return WriteToDevice(target, content);
+  }
+  WriteRegularFile(file, target, content);
 }
 
 }  // namespace foresight

@@ -1,5 +1,6 @@
 // Writing output files whole or not at all (docs/ARCHITECTURE.md, "Output"): the content goes to a
-// temporary file beside the target, which is renamed into place only when fully written.
+// temporary file beside the target, which is renamed into place only when fully written. What is
+// not a regular file is never renamed over (issue 16): devices and pipes are written as streams.
 #pragma once
 
 #include <filesystem>
@@ -7,7 +8,13 @@
 
 namespace foresight {
 
-// Throws InputError naming the file when it cannot be written.
+// "-" as an output file: standard output.
+inline constexpr std::string_view kStandardOutput = "-";
+
+// Writes `content` to `file`: a regular file (or a new one) atomically; through a symbolic link
+// to the file it points to (the link stays); to a device or a FIFO (/dev/null, /dev/stdout, a
+// pipe) as a stream, never replacing it; "-" to standard output. Throws InputError naming the
+// file when it cannot be written, or when it is a directory.
 void WriteFileAtomically(const std::filesystem::path& file, std::string_view content);
 
 }  // namespace foresight
