@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -127,9 +128,15 @@ NormalityTest TestNormality(std::span<const double> x) {
       throw std::invalid_argument("TestNormality: non-finite value at index " + std::to_string(i));
     }
   }
-  const std::vector<double> w = Standardized(x);
   NormalityTest test;
   test.n = static_cast<int>(x.size());
+  if (std::all_of(x.begin(), x.end(), [&](double v) { return v == x[0]; })) {
+    test.all_equal = true;
+    test.anderson_darling = test.anderson_darling_p = std::numeric_limits<double>::quiet_NaN();
+    test.lilliefors_d = test.lilliefors_p = std::numeric_limits<double>::quiet_NaN();
+    return test;
+  }
+  const std::vector<double> w = Standardized(x);
   const double n = static_cast<double>(test.n);
   test.anderson_darling = AndersonDarlingA2(w) * (1.0 + 0.75 / n + 2.25 / (n * n));
   test.anderson_darling_p = AndersonDarlingP(test.anderson_darling);

@@ -16,8 +16,11 @@ struct NormalityTest {
   double anderson_darling_p = 0.0;
   double lilliefors_d = 0.0;
   double lilliefors_p = 0.0;  // capped to [0, 0.1]..1 as the approximation allows
-  bool Rejected(double level) const { return anderson_darling_p < level; }
+  // All values equal (a spread of 0, e.g. directions recorded as one number): no statistic
+  // exists, the fields above are NaN and nothing is rejected.
+  bool all_equal = false;
+  bool Rejected(double level) const { return !all_equal && anderson_darling_p < level; }
 };
-NormalityTest TestNormality(std::span<const double> x);  // n >= 8
+NormalityTest TestNormality(std::span<const double> x);  // n >= 8, finite
 
 }  // namespace foresight

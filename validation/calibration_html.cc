@@ -37,15 +37,13 @@ void KickTable(HtmlReport& html, const CalibrationRun& run, const CalibratedKick
         committed(&KickSpec::speed_mps, 1.0, 4), ""},
        {"sigma_v (m/s)", WithInterval(c.speed.sd, c.speed.sd_ci, 4),
         committed(&KickSpec::sigma_speed_mps, 1.0, 4),
-        (c.speed_normality.Rejected(run.settings.normality_level) ? "no (" : "yes (") +
-            Fixed(c.speed_normality.anderson_darling_p, 3) + ")"},
+        NormalityText(c.speed_normality, run.settings.normality_level)},
        {"alpha (deg)", WithInterval(c.direction.mean_rad, c.direction.mean_ci_rad, 2, kRadToDeg),
         committed(&KickSpec::direction_rad, kRadToDeg, 2), ""},
        {"sigma_alpha (deg, circular)",
         WithInterval(c.direction.sd_rad, c.direction.sd_ci_rad, 2, kRadToDeg),
         committed(&KickSpec::sigma_direction_rad, kRadToDeg, 2),
-        (c.direction_normality.Rejected(run.settings.normality_level) ? "no (" : "yes (") +
-            Fixed(c.direction_normality.anderson_darling_p, 3) + ")"}});
+        NormalityText(c.direction_normality, run.settings.normality_level)}});
 }
 
 void KickFigures(HtmlReport& html, const CalibrationRun& run, const CalibratedKick& kick) {

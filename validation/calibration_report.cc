@@ -16,6 +16,7 @@ Json IntervalJson(const Interval& interval, double scale = 1.0) {
 }
 
 Json NormalityJson(const NormalityTest& test, double level) {
+  if (test.all_equal) return Json{{"all_values_equal", true}, {"normal_model_fits", nullptr}};
   return Json{{"anderson_darling_a2", test.anderson_darling},
               {"anderson_darling_p", test.anderson_darling_p},
               {"lilliefors_d", test.lilliefors_d},
@@ -100,6 +101,12 @@ std::vector<std::string> CalibrationWarnings(const CalibrationRun& run) {
   return warnings;
 }
 
+std::string NormalityText(const NormalityTest& test, double level) {
+  if (test.all_equal) return "n/a (all values equal)";
+  return std::string(test.Rejected(level) ? "no" : "yes") +
+         " (AD p = " + Fixed(test.anderson_darling_p, 3) + ")";
+}
+
 std::string CalibrationText(const CalibrationRun& run) {
   const int pct = static_cast<int>(std::lround(run.settings.confidence * 100.0));
   std::string out = "calibration of " + run.robot + " from " + run.source + " (" +
@@ -115,9 +122,9 @@ std::string CalibrationText(const CalibrationRun& run) {
            Fixed(c.direction.mean_ci_rad.high * kRadToDeg, 1) + "], sigma_alpha " +
            Fixed(c.direction.sd_rad * kRadToDeg, 1) + " deg [" +
            Fixed(c.direction.sd_ci_rad.low * kRadToDeg, 1) + ", " +
-           Fixed(c.direction.sd_ci_rad.high * kRadToDeg, 1) + "]; normal speeds: " +
-           (c.speed_normality.Rejected(run.settings.normality_level) ? "no" : "yes") +
-           " (AD p = " + Fixed(c.speed_normality.anderson_darling_p, 3) + ")\n";
+           Fixed(c.direction.sd_ci_rad.high * kRadToDeg, 1) +
+           "]; normal speeds: " + NormalityText(c.speed_normality, run.settings.normality_level) +
+           "\n";
   }
   if (run.deceleration) {
     out += "  rolling deceleration " + Fixed(run.deceleration->deceleration_mps2, 4) + " m/s^2 [" +

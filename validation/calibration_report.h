@@ -42,6 +42,8 @@ struct CalibrationRun {
 std::vector<std::string> CalibrationWarnings(const CalibrationRun& run);
 
 std::string CalibrationText(const CalibrationRun& run);
+// "yes (AD p = 0.512)", "no (AD p = 0.012)" or "n/a (all values equal)" at `level`.
+std::string NormalityText(const NormalityTest& test, double level);
 nlohmann::ordered_json CalibrationJson(const CalibrationRun& run);
 std::string CalibrationObservationsCsv(const CalibrationRun& run);
 std::string CalibrationSummaryCsv(const CalibrationRun& run);

@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "common/checks.h"
 #include "common/error.h"
 #include "common/geometry.h"
 
@@ -62,6 +63,20 @@ class Row {
     if (!value) throw InputError(where_ + column + ": missing value");
     return *value;
   }
+  // The column's number when present, within [-limit, limit] (a plausibility range, so that an
+  // absurd value is named instead of overflowing a fit later).
+  std::optional<double> Within(const std::string& column, double limit) const {
+    const std::optional<double> value = Number(column);
+    if (value && std::abs(*value) > limit) {
+      throw InputError(where_ + column + ": must be within [-" + FormatNumber(limit) + ", " +
+                       FormatNumber(limit) + "], got " + Text(column));
+    }
+    return value;
+  }
+  double RequiredWithin(const std::string& column, double limit) const {
+    if (!Within(column, limit)) throw InputError(where_ + column + ": missing value");
+    return *Number(column);
+  }
   const std::string& where() const { return where_; }
 
  private:
@@ -90,13 +105,15 @@ std::map<std::string, int> ReadHeader(const std::string& line, const std::string
 
 // One row as an observation; `speed_from_rest` says whether the speed had to be derived.
 KickObservation ObservationOfRow(const Row& row, double deceleration, bool& speed_from_rest) {
-  const Pose2 robot{Vec2(row.Required("robot_x_m"), row.Required("robot_y_m")),
-                    row.Required("robot_theta_deg") * kDegToRad};
-  const Vec2 ball(row.Required("ball_x_m"), row.Required("ball_y_m"));
-  const std::optional<double> speed = row.Number("launch_speed_mps");
-  const std::optional<double> direction = row.Number("launch_direction_deg");
-  const std::optional<double> rest_x = row.Number("rest_x_m");
-  const std::optional<double> rest_y = row.Number("rest_y_m");
+  const Pose2 robot{Vec2(row.RequiredWithin("robot_x_m", kMaxObservedCoordinateM),
+                         row.RequiredWithin("robot_y_m", kMaxObservedCoordinateM)),
+                    row.RequiredWithin("robot_theta_deg", kMaxObservedAngleDeg) * kDegToRad};
+  const Vec2 ball(row.RequiredWithin("ball_x_m", kMaxObservedCoordinateM),
+                  row.RequiredWithin("ball_y_m", kMaxObservedCoordinateM));
+  const std::optional<double> speed = row.Within("launch_speed_mps", kMaxObservedSpeedMps);
+  const std::optional<double> direction = row.Within("launch_direction_deg", kMaxObservedAngleDeg);
+  const std::optional<double> rest_x = row.Within("rest_x_m", kMaxObservedCoordinateM);
+  const std::optional<double> rest_y = row.Within("rest_y_m", kMaxObservedCoordinateM);
   if (speed.has_value() != direction.has_value()) {
     throw InputError(row.where() + (speed ? "launch_direction_deg" : "launch_speed_mps") +
                      ": missing value (the launch needs speed and direction)");

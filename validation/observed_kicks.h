@@ -23,6 +23,14 @@
 
 namespace foresight {
 
+// Plausibility ranges of the CSV's numbers (assumptions, far beyond real values, far below what
+// overflows a fit): positions within 100 m of the centre spot (an SPL field is 9 m long; a
+// larger number is a unit error such as millimetres), angles within two turns, launch speeds
+// up to 20 m/s (robot kicks reach about 5 m/s).
+inline constexpr double kMaxObservedCoordinateM = 100.0;
+inline constexpr double kMaxObservedAngleDeg = 720.0;
+inline constexpr double kMaxObservedSpeedMps = 20.0;
+
 struct ObservedKicks {
   std::vector<std::string> kick_names;  // in order of first appearance
   std::map<std::string, std::vector<KickObservation>> by_kick;

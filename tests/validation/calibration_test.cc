@@ -45,6 +45,23 @@ CalibrationSettings Settings(int resamples = 1000) {
   return s;
 }
 
+// Issue 16: identical rows (or all directions recorded as one number) are ordinary data, not an
+// internal error: the spread is 0 and the normality test says it could not be computed.
+TEST(CalibrationTest, IdenticalKicksFitWithZeroSpread) {
+  KickObservation k;
+  k.launch_speed_mps = 0.7;
+  k.launch_direction_rad = 0.1;
+  const std::vector<KickObservation> kicks(20, k);
+  const KickCalibration c = CalibrateKick("forward", kicks, Settings(200));
+  EXPECT_NEAR(c.speed.mean, 0.7, 1e-12);
+  EXPECT_NEAR(c.speed.sd, 0.0, 1e-12);
+  EXPECT_NEAR(c.direction.mean_rad, 0.1, 1e-12);
+  EXPECT_NEAR(c.direction.sd_rad, 0.0, 1e-6);
+  EXPECT_TRUE(c.speed_normality.all_equal);
+  EXPECT_TRUE(c.direction_normality.all_equal);
+  EXPECT_FALSE(c.speed_normality.Rejected(0.05));
+}
+
 TEST(CalibrationTest, SelfCheckRecoversTheModelThatDrewTheKicks) {
   const std::vector<KickObservation> kicks = DrawKicks(1000, 1);
   const KickCalibration c = CalibrateKick("side_kick_left", kicks, Settings());

@@ -159,6 +159,13 @@ TEST(ObservedKicksTest, ErrorsAreOneLineNamingFileLineAndColumn) {
       {"missing_kick_name", launch + ",0,0,0,0.15,0,1.0,0\n", {"line 2", "kick: missing"}},
       {"too_few_cells", launch + row + "forward,0,0,0,0.15,0,1.0\n", {"line 3", "7 cells"}},
       {"too_many_cells", launch + "forward,0,0,0,0.15,0,1.0,0,9\n", {"line 2", "9 cells"}},
+      {"absurd_coordinate",
+       kPose + ",rest_x_m,rest_y_m\nforward,0,0,0,0.15,0,1e200,0.1\n",
+       {"line 2", "rest_x_m", "must be within [-100, 100]", "1e200"}},
+      {"absurd_speed",
+       launch + "forward,0,0,0,0.15,0,340,0\n",
+       {"line 2", "launch_speed_mps", "340"}},
+      {"absurd_heading", launch + "forward,0,0,1e9,0.15,0,1.0,0\n", {"line 2", "robot_theta_deg"}},
       {"empty_file", "", {"no header"}},
       {"header_only", launch, {"no kicks"}},
   };
