@@ -7,16 +7,27 @@
 
 namespace foresight {
 
+// Plausibility bounds of the potential (assumption): its lengths are field-sized (metres); a
+// scale or width under a centimetre, or lengths and weights beyond a thousand, are unit errors
+// or garbage that make the value subnormal, infinite or NaN (a subnormal scale crashed decide).
+constexpr double kMinPotentialLengthM = 0.01;
+constexpr double kMaxPotentialLengthM = 1e3;
+constexpr double kMaxPotentialWeight = 1e3;
+
 void EvaluationParams::Validate() const {
   RequirePositive("potential.linear_x_scale_m", potential.linear_x_scale_m);
+  RequireInRange("potential.linear_x_scale_m", potential.linear_x_scale_m, kMinPotentialLengthM,
+                 kMaxPotentialLengthM);
   for (std::size_t i = 0; i < potential.gaussians.size(); ++i) {
     const GaussianTerm& g = potential.gaussians[i];
     const std::string at = "potential.gaussians[" + std::to_string(i) + "].";
-    RequireFinite(at + "weight", g.weight);
-    RequireFinite(at + "centre_x_m", g.centre_x_m);
-    RequireFinite(at + "centre_y_m", g.centre_y_m);
+    RequireInRange(at + "weight", g.weight, -kMaxPotentialWeight, kMaxPotentialWeight);
+    RequireInRange(at + "centre_x_m", g.centre_x_m, -kMaxPotentialLengthM, kMaxPotentialLengthM);
+    RequireInRange(at + "centre_y_m", g.centre_y_m, -kMaxPotentialLengthM, kMaxPotentialLengthM);
     RequirePositive(at + "sigma_x_m", g.sigma_x_m);
+    RequireInRange(at + "sigma_x_m", g.sigma_x_m, kMinPotentialLengthM, kMaxPotentialLengthM);
     RequirePositive(at + "sigma_y_m", g.sigma_y_m);
+    RequireInRange(at + "sigma_y_m", g.sigma_y_m, kMinPotentialLengthM, kMaxPotentialLengthM);
   }
   RequirePositive("goal_value", goal_value);
   RequireInRange("goal_value", goal_value, 0.0, 1e6);

@@ -6,21 +6,34 @@
 
 namespace foresight {
 
+// Plausibility bounds (assumption): robot-soccer fields measure metres to tens of metres (SPL
+// 9 x 6 m; a human pitch 105 x 68 m), so 200 m bounds a size and anything beyond is a unit error
+// or garbage that would overflow the geometry; posts, nets and balls are decimetres.
+constexpr double kMaxFieldSizeM = 200.0;
+constexpr double kMaxGoalPartM = 5.0;
+constexpr double kMaxBallMassKg = 10.0;
+
 void FieldSpec::Validate() const {
   RequirePositive("field_length_m", field_length_m);
+  RequireInRange("field_length_m", field_length_m, 0.0, kMaxFieldSizeM);
   RequirePositive("field_width_m", field_width_m);
+  RequireInRange("field_width_m", field_width_m, 0.0, kMaxFieldSizeM);
   RequireNonNegative("line_width_m", line_width_m);
-  RequireInRange("carpet_length_m", carpet_length_m, field_length_m, 1e3);
-  RequireInRange("carpet_width_m", carpet_width_m, field_width_m, 1e3);
+  RequireInRange("carpet_length_m", carpet_length_m, field_length_m, 2.0 * kMaxFieldSizeM);
+  RequireInRange("carpet_width_m", carpet_width_m, field_width_m, 2.0 * kMaxFieldSizeM);
   RequirePositive("goal.post_radius_m", goal.post_radius_m);
+  RequireInRange("goal.post_radius_m", goal.post_radius_m, 0.0, kMaxGoalPartM);
   RequireInRange("goal.post_centre_x_m", goal.post_centre_x_m, 0.5 * field_length_m - line_width_m,
                  0.5 * carpet_length_m);
   RequireInRange("goal.post_centre_y_m", goal.post_centre_y_m, goal.post_radius_m,
                  0.5 * field_width_m);
   RequirePositive("goal.net_depth_m", goal.net_depth_m);
+  RequireInRange("goal.net_depth_m", goal.net_depth_m, 0.0, kMaxGoalPartM);
   RequirePositive("goal.net_height_m", goal.net_height_m);
+  RequireInRange("goal.net_height_m", goal.net_height_m, 0.0, kMaxGoalPartM);
   RequireInRange("ball.radius_m", ball.radius_m, 1e-3, goal.InnerHalfWidth());
   RequirePositive("ball.mass_kg", ball.mass_kg);
+  RequireInRange("ball.mass_kg", ball.mass_kg, 0.0, kMaxBallMassKg);
   RequireInRange("default_obstacle_radius_m", default_obstacle_radius_m, 0.01, 2.0);
 }
 

@@ -84,6 +84,16 @@ TEST(EvaluationParamsTest, ZeroSamplesIsRejected) {
   EXPECT_THAT(message, HasSubstr("got 0"));
 }
 
+// Issue 16: a subnormal scale made the value NaN (and crashed decide); huge weights overflow it.
+TEST(EvaluationParamsTest, ImplausibleScalesAndWeightsAreRejected) {
+  const auto tiny = BrokenSplEvaluation("tiny_scale", "\"linear_x_scale_m\": 4.5",
+                                        "\"linear_x_scale_m\": 1e-310");
+  EXPECT_THAT(LoadError(tiny),
+              StartsWith(tiny.string() + ": potential.linear_x_scale_m: must be in [0.01, 1000]"));
+  const auto heavy = BrokenSplEvaluation("heavy", "\"weight\": -1.0", "\"weight\": -1e300");
+  EXPECT_THAT(LoadError(heavy), HasSubstr("potential.gaussians[0].weight: must be in"));
+}
+
 TEST(EvaluationParamsTest, FractionalSamplesIsNotAnInteger) {
   const auto file = BrokenSplEvaluation("fraction_samples", "\"samples\": 30", "\"samples\": 30.5");
   EXPECT_EQ(LoadError(file), file.string() + ": samples: must be an integer, got 30.5");

@@ -112,6 +112,15 @@ TEST(FieldSpecTest, NegativePostRadiusNamesFieldAndValue) {
   EXPECT_EQ(LoadError(file), file.string() + ": goal.post_radius_m: must be > 0, got -0.05");
 }
 
+// Issue 16: finite but absurd sizes used to pass and produce silent nonsense.
+TEST(FieldSpecTest, ImplausibleSizesAreRejected) {
+  const auto huge =
+      BrokenSplField("huge_field", "\"field_length_m\": 9.0", "\"field_length_m\": 1e308");
+  EXPECT_THAT(LoadError(huge), StartsWith(huge.string() + ": field_length_m: must be in [0, 200]"));
+  const auto heavy = BrokenSplField("heavy_ball", "\"mass_kg\": 0.045", "\"mass_kg\": 1e9");
+  EXPECT_THAT(LoadError(heavy), HasSubstr("ball.mass_kg: must be in [0, 10]"));
+}
+
 TEST(FieldSpecTest, ZeroBallMassIsRejected) {
   const auto file = BrokenSplField("zero_mass", "\"mass_kg\": 0.045", "\"mass_kg\": 0");
   EXPECT_EQ(LoadError(file), file.string() + ": ball.mass_kg: must be > 0, got 0");
