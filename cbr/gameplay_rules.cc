@@ -17,8 +17,10 @@ std::string At(std::size_t robot, std::size_t action) {
   return "teammates[" + std::to_string(robot) + "].actions[" + std::to_string(action) + "]";
 }
 
-[[noreturn]] void Fail(std::size_t robot, std::size_t action, const std::string& problem) {
-  throw InputError(At(robot, action) + ": " + problem);
+// "teammates[I].actions[J]KEY: problem"; KEY is "" or ".to".
+[[noreturn]] void Fail(std::size_t robot, std::size_t action, const std::string& key,
+                       const std::string& problem) {
+  throw InputError(At(robot, action) + key + ": " + problem);
 }
 
 std::string Robot(const Case& c, std::size_t robot) {
@@ -39,7 +41,7 @@ std::size_t Starter(const Case& c) {
     const auto& actions = c.teammates[i].actions;
     if (actions.empty() || actions[0].type != ActionType::kGetBall) continue;
     if (starter >= 0) {
-      Fail(i, 0, "get_ball: " + Robot(c, i) + " starts with get_ball, but " +
+      Fail(i, 0, "", "get_ball: " + Robot(c, i) + " starts with get_ball, but " +
                      Robot(c, static_cast<std::size_t>(starter)) +
                      " already does (only one robot may fetch the ball)");
     }
@@ -70,7 +72,7 @@ void ValidateGameplay(const Case& c) {
       const CaseAction& a = actions[j];
       if (!IsBallAction(a.type)) continue;
       if (a.type == ActionType::kGetBall || a.type == ActionType::kReceive) {
-        Fail(holder, j, std::string(ActionTypeName(a.type)) + ": " + Robot(c, holder) +
+        Fail(holder, j, "", std::string(ActionTypeName(a.type)) + ": " + Robot(c, holder) +
                             " already controls the ball here (rule (ii))");
       }
       visited[holder][j] = true;
@@ -83,14 +85,14 @@ void ValidateGameplay(const Case& c) {
     // A pass: the receiver's next ball action must be receive from the holder.
     const int r = IndexOfId(c, a.teammate);
     if (r < 0 || static_cast<std::size_t>(r) == holder) {
-      Fail(holder, j, "to: " + std::to_string(a.teammate) + " is not another robot of the case");
+      Fail(holder, j, ".to", std::to_string(a.teammate) + " is not another robot of the case");
     }
     const auto& theirs = c.teammates[static_cast<std::size_t>(r)].actions;
     std::size_t k = cursor[static_cast<std::size_t>(r)];
     while (k < theirs.size() && !IsBallAction(theirs[k].type)) ++k;
     if (k >= theirs.size() || theirs[k].type != ActionType::kReceive ||
         theirs[k].teammate != c.teammates[holder].id) {
-      Fail(holder, j, "to: " + std::to_string(a.teammate) + ": robot " +
+      Fail(holder, j, ".to", std::to_string(a.teammate) + ": robot " +
                           std::to_string(a.teammate) + " has no matching receive from " +
                           Robot(c, holder) + " as its next ball action");
     }
@@ -105,9 +107,14 @@ void ValidateGameplay(const Case& c) {
     const auto& actions = c.teammates[i].actions;
     for (std::size_t j = 0; j < actions.size(); ++j) {
       if (!IsBallAction(actions[j].type) || visited[i][j]) continue;
-      Fail(i, j, std::string(ActionTypeName(actions[j].type)) + ": " + Robot(c, i) +
-                     " does not control the ball here (a robot controls it from get_ball or "
-                     "receive until its pass or kick; rule (ii))");
+      if (actions[j].type == ActionType::kReceive) {
+        Fail(i, j, ".from", std::to_string(actions[j].teammate) + ": no pass of robot " +
+                                std::to_string(actions[j].teammate) + " to " + Robot(c, i) +
+                                " reaches this receive (rule (ii))");
+      }
+      Fail(i, j, "", std::string(ActionTypeName(actions[j].type)) + ": " + Robot(c, i) +
+                         " does not control the ball here (a robot controls it from get_ball "
+                         "or receive until its pass or kick; rule (ii))");
     }
   }
 }
