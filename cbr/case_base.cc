@@ -22,8 +22,8 @@ bool Same(const Scope& a, const Scope& b) {
   return std::abs(a.tau_x_m - b.tau_x_m) <= kSameM && std::abs(a.tau_y_m - b.tau_y_m) <= kSameM;
 }
 bool Same(const CaseAction& a, const CaseAction& b) {
-  if (a.type != b.type || a.kick != b.kick || a.at_goal != b.at_goal ||
-      a.teammate != b.teammate || a.target_F.has_value() != b.target_F.has_value() ||
+  if (a.type != b.type || a.kick != b.kick || a.at_goal != b.at_goal || a.teammate != b.teammate ||
+      a.target_F.has_value() != b.target_F.has_value() ||
       a.heading_rad.has_value() != b.heading_rad.has_value()) {
     return false;
   }

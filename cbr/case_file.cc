@@ -21,9 +21,9 @@ std::string PointText(const Vec2& p) {
 
 void RequireOnField(const std::string& field, const Vec2& p, const FieldSpec& spec) {
   if (std::abs(p.x()) <= spec.HalfLength() && std::abs(p.y()) <= spec.HalfWidth()) return;
-  throw InputError(field + ": " + PointText(p) + " is off the field (|x| <= " +
-                   FormatNumber(spec.HalfLength()) + " m, |y| <= " +
-                   FormatNumber(spec.HalfWidth()) + " m)");
+  throw InputError(field + ": " + PointText(p) +
+                   " is off the field (|x| <= " + FormatNumber(spec.HalfLength()) +
+                   " m, |y| <= " + FormatNumber(spec.HalfWidth()) + " m)");
 }
 
 void RequireScope(const std::string& field, const Scope& scope) {
@@ -74,9 +74,11 @@ CaseAction ReadAction(const JsonObject& o) {
     case ActionType::kKick:
       o.RejectUnknownKeys({"type", "kick", "at", "target"});
       a.kick = o.String("kick");
-      if (o.Has("at") == o.Has("target")) o.Fail("at", "give either \"at\": \"goal\" or \"target\"");
+      if (o.Has("at") == o.Has("target"))
+        o.Fail("at", "give either \"at\": \"goal\" or \"target\"");
       if (o.Has("at")) {
-        if (o.String("at") != "goal") o.Fail("at", "must be \"goal\", got \"" + o.String("at") + "\"");
+        if (o.String("at") != "goal")
+          o.Fail("at", "must be \"goal\", got \"" + o.String("at") + "\"");
         a.at_goal = true;
       } else {
         a.target_F = ReadPoint(o.Object("target"));

@@ -41,9 +41,10 @@ std::size_t Starter(const Case& c) {
     const auto& actions = c.teammates[i].actions;
     if (actions.empty() || actions[0].type != ActionType::kGetBall) continue;
     if (starter >= 0) {
-      Fail(i, 0, "", "get_ball: " + Robot(c, i) + " starts with get_ball, but " +
-                     Robot(c, static_cast<std::size_t>(starter)) +
-                     " already does (only one robot may fetch the ball)");
+      Fail(i, 0, "",
+           "get_ball: " + Robot(c, i) + " starts with get_ball, but " +
+               Robot(c, static_cast<std::size_t>(starter)) +
+               " already does (only one robot may fetch the ball)");
     }
     starter = static_cast<int>(i);
   }
@@ -72,8 +73,9 @@ void ValidateGameplay(const Case& c) {
       const CaseAction& a = actions[j];
       if (!IsBallAction(a.type)) continue;
       if (a.type == ActionType::kGetBall || a.type == ActionType::kReceive) {
-        Fail(holder, j, "", std::string(ActionTypeName(a.type)) + ": " + Robot(c, holder) +
-                            " already controls the ball here (rule (ii))");
+        Fail(holder, j, "",
+             std::string(ActionTypeName(a.type)) + ": " + Robot(c, holder) +
+                 " already controls the ball here (rule (ii))");
       }
       visited[holder][j] = true;
       if (a.type == ActionType::kDribble) continue;
@@ -92,9 +94,9 @@ void ValidateGameplay(const Case& c) {
     while (k < theirs.size() && !IsBallAction(theirs[k].type)) ++k;
     if (k >= theirs.size() || theirs[k].type != ActionType::kReceive ||
         theirs[k].teammate != c.teammates[holder].id) {
-      Fail(holder, j, ".to", std::to_string(a.teammate) + ": robot " +
-                          std::to_string(a.teammate) + " has no matching receive from " +
-                          Robot(c, holder) + " as its next ball action");
+      Fail(holder, j, ".to",
+           std::to_string(a.teammate) + ": robot " + std::to_string(a.teammate) +
+               " has no matching receive from " + Robot(c, holder) + " as its next ball action");
     }
     visited[static_cast<std::size_t>(r)][k] = true;
     cursor[holder] = j + 1;
@@ -108,13 +110,15 @@ void ValidateGameplay(const Case& c) {
     for (std::size_t j = 0; j < actions.size(); ++j) {
       if (!IsBallAction(actions[j].type) || visited[i][j]) continue;
       if (actions[j].type == ActionType::kReceive) {
-        Fail(i, j, ".from", std::to_string(actions[j].teammate) + ": no pass of robot " +
-                                std::to_string(actions[j].teammate) + " to " + Robot(c, i) +
-                                " reaches this receive (rule (ii))");
+        Fail(i, j, ".from",
+             std::to_string(actions[j].teammate) + ": no pass of robot " +
+                 std::to_string(actions[j].teammate) + " to " + Robot(c, i) +
+                 " reaches this receive (rule (ii))");
       }
-      Fail(i, j, "", std::string(ActionTypeName(actions[j].type)) + ": " + Robot(c, i) +
-                         " does not control the ball here (a robot controls it from get_ball "
-                         "or receive until its pass or kick; rule (ii))");
+      Fail(i, j, "",
+           std::string(ActionTypeName(actions[j].type)) + ": " + Robot(c, i) +
+               " does not control the ball here (a robot controls it from get_ball "
+               "or receive until its pass or kick; rule (ii))");
     }
   }
 }

@@ -7,10 +7,14 @@ namespace {
 
 int Bits(CaseTransform t) {
   switch (t) {
-    case CaseTransform::kOriginal: return 0;
-    case CaseTransform::kMirrorY: return 1;
-    case CaseTransform::kMirrorX: return 2;
-    case CaseTransform::kMirrorXY: return 3;
+    case CaseTransform::kOriginal:
+      return 0;
+    case CaseTransform::kMirrorY:
+      return 1;
+    case CaseTransform::kMirrorX:
+      return 2;
+    case CaseTransform::kMirrorXY:
+      return 3;
   }
   return 0;
 }
@@ -21,9 +25,7 @@ constexpr CaseTransform kByBits[] = {CaseTransform::kOriginal, CaseTransform::kM
 struct Mirror {
   bool flip_y = false;  // y -> -y
   bool flip_x = false;  // x -> -x
-  Vec2 Point(const Vec2& p) const {
-    return Vec2(flip_x ? -p.x() : p.x(), flip_y ? -p.y() : p.y());
-  }
+  Vec2 Point(const Vec2& p) const { return Vec2(flip_x ? -p.x() : p.x(), flip_y ? -p.y() : p.y()); }
   double Heading(double theta_rad) const {
     double t = flip_y ? -theta_rad : theta_rad;
     if (flip_x) t = kPi - t;
@@ -51,8 +53,8 @@ Case MirrorCase(const Case& c, CaseTransform t, const KickMirrors& mirrors) {
                  ? out.source
                  : out.source + "/" + std::string(CaseTransformName(out.transform));
   if (m.flip_x) {
-    out.defending = c.defending == DefendingGoal::kCyan ? DefendingGoal::kYellow
-                                                        : DefendingGoal::kCyan;
+    out.defending =
+        c.defending == DefendingGoal::kCyan ? DefendingGoal::kYellow : DefendingGoal::kCyan;
   }
   out.p_F_ball = m.Point(c.p_F_ball);
   for (CaseTeammate& tm : out.teammates) {

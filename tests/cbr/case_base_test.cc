@@ -34,6 +34,15 @@ TEST(CaseBaseTest, ShippedBaseHas34HandWrittenAnd136Cases) {
   EXPECT_TRUE(CheckCaseBase(loaded.cases).empty());
 }
 
+TEST(CaseBaseTest, EveryCopyKeepsTheRules) {
+  const LoadedCaseBase loaded = LoadCaseBase(ShippedCases(), testing::ModelsDir());
+  for (DefendingGoal goal : {DefendingGoal::kCyan, DefendingGoal::kYellow}) {
+    for (const Case& c : loaded.cases.Defending(goal)) {
+      EXPECT_NO_THROW(ValidateCase(c, loaded.rules)) << c.name;
+    }
+  }
+}
+
 TEST(CaseBaseTest, CopiesAreNamedAndMirrored) {
   const LoadedCaseBase loaded = LoadCaseBase(ShippedCases(), testing::ModelsDir());
   const Case* original = loaded.cases.Find("front_pass_dg");
@@ -94,10 +103,14 @@ TEST(CaseBaseTest, SettingsErrors) {
     std::ofstream(dir + "/case_base.json") << text;
     return LoadError(dir);
   };
-  EXPECT_THAT(settings(R"({"field": "four_legged", "kicks": "aibo_ers7", "kick_mirrors": {"left": "head_kick_right"}})"),
-              HasSubstr("kick_mirrors.left: unknown kick 'left'"));
-  EXPECT_THAT(settings(R"({"field": "four_legged", "kicks": "aibo_ers7", "kick_mirrors": {}, "mirror": 1})"),
-              HasSubstr("mirror: unknown field"));
+  EXPECT_THAT(
+      settings(
+          R"({"field": "four_legged", "kicks": "aibo_ers7", "kick_mirrors": {"left": "head_kick_right"}})"),
+      HasSubstr("kick_mirrors.left: unknown kick 'left'"));
+  EXPECT_THAT(
+      settings(
+          R"({"field": "four_legged", "kicks": "aibo_ers7", "kick_mirrors": {}, "mirror": 1})"),
+      HasSubstr("mirror: unknown field"));
   EXPECT_THAT(settings(R"({"field": "nowhere", "kicks": "aibo_ers7", "kick_mirrors": {}})"),
               HasSubstr("field: refers to"));
   settings(R"({"field": "four_legged", "kicks": "aibo_ers7", "kick_mirrors": {}})");

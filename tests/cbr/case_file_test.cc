@@ -27,16 +27,22 @@ constexpr char kOpponents[] =
 std::string CaseJson(const std::string& robot1_actions, const std::string& robot2_actions,
                      const std::string& extra = "", const std::string& ball_x = "1.3") {
   return R"({"name": "c", "notes": "a test case", "defending": "cyan",
-    "ball": {"x_m": )" + ball_x + R"(, "y_m": 0.2},
+    "ball": {"x_m": )" +
+         ball_x + R"(, "y_m": 0.2},
     "ball_scope": {"tau_x_m": 0.45, "tau_y_m": 0.25},
     "teammates": [
-      {"id": 1, "x_m": 1.0, "y_m": 0.2, "actions": [)" + robot1_actions + R"(]},
-      {"id": 2, "x_m": 1.4, "y_m": 1.0, "actions": [)" + robot2_actions + R"(]}],
-    "opponents": )" + kOpponents + extra + "}";
+      {"id": 1, "x_m": 1.0, "y_m": 0.2, "actions": [)" +
+         robot1_actions + R"(]},
+      {"id": 2, "x_m": 1.4, "y_m": 1.0, "actions": [)" +
+         robot2_actions + R"(]}],
+    "opponents": )" +
+         kOpponents + extra + "}";
 }
 
-const std::string kGood1 = R"({"type": "get_ball"}, {"type": "pass", "kick": "head_kick_left", "to": 2})";
-const std::string kGood2 = R"({"type": "receive", "from": 1}, {"type": "kick", "kick": "forward", "at": "goal"})";
+const std::string kGood1 =
+    R"({"type": "get_ball"}, {"type": "pass", "kick": "head_kick_left", "to": 2})";
+const std::string kGood2 =
+    R"({"type": "receive", "from": 1}, {"type": "kick", "kick": "forward", "at": "goal"})";
 
 Case Load(const std::string& text) {
   return LoadCaseFile(testing::WriteTempFile("case.json", text), Rules());
@@ -84,7 +90,9 @@ TEST(CaseFileTest, ErrorsNameFileCaseFieldAndValue) {
   const Bad bad[] = {
       {CaseJson(kGood1, kGood2, R"(, "colour": 1)"), "colour", "unknown"},
       {CaseJson(kGood1, kGood2, "", "2.9"), "ball", "(2.9, 0.2)"},
-      {CaseJson(kGood1, R"({"type": "receive", "from": 1}, {"type": "kick", "kick": "bicycle", "at": "goal"})"),
+      {CaseJson(
+           kGood1,
+           R"({"type": "receive", "from": 1}, {"type": "kick", "kick": "bicycle", "at": "goal"})"),
        "teammates[1].actions[1].kick", "bicycle"},
       {CaseJson(R"({"type": "get_ball"}, {"type": "pass", "kick": "forward", "to": 3})", kGood2),
        "teammates[0].actions[1].to", "3"},
@@ -94,7 +102,9 @@ TEST(CaseFileTest, ErrorsNameFileCaseFieldAndValue) {
       {CaseJson(kGood1, R"({"type": "kick", "kick": "forward", "at": "goal"})"),
        "teammates[0].actions[1].to", "no matching receive"},
       {CaseJson(gb + "," + kick, kGood2), "teammates[1].actions[0].from", "1: no pass of robot 1"},
-      {CaseJson(kGood1, R"({"type": "receive", "from": 1}, {"type": "go_to", "target": {"x_m": 3.0, "y_m": 0}})"),
+      {CaseJson(
+           kGood1,
+           R"({"type": "receive", "from": 1}, {"type": "go_to", "target": {"x_m": 3.0, "y_m": 0}})"),
        "teammates[1].actions[1].target", "(3, 0)"},
   };
   for (const Bad& b : bad) {
@@ -120,7 +130,8 @@ TEST(CaseFileTest, RejectsBadIdsCountsAndScopes) {
               HasSubstr("case c: ball_scope.tau_x_m: must be > 0, got 0"));
   EXPECT_THAT(with(R"("tau_x_m": 0.35)", R"("tau_x_m": -1)"),
               HasSubstr("case c: opponents[0].scope.tau_x_m: must be > 0, got -1"));
-  const std::string opp = R"({"id": 1, "x_m": 0, "y_m": 0, "scope": {"tau_x_m": 0.3, "tau_y_m": 0.3}})";
+  const std::string opp =
+      R"({"id": 1, "x_m": 0, "y_m": 0, "scope": {"tau_x_m": 0.3, "tau_y_m": 0.3}})";
   EXPECT_THAT(with(kOpponents, "[" + opp + "," + opp + "," + opp + "," + opp + "," + opp + "]"),
               HasSubstr("case c: opponents: must list 0-4 robots, got 5"));
   EXPECT_THAT(with(R"("defending": "cyan")", R"("defending": "blue")"),
@@ -128,8 +139,12 @@ TEST(CaseFileTest, RejectsBadIdsCountsAndScopes) {
   EXPECT_THAT(with(R"("notes": "a test case")", R"("notes": "")"),
               HasSubstr("case c: notes: must say"));
   const std::string tm = R"({"id": 1, "x_m": 1.0, "y_m": 0.2, "actions": [)";
-  EXPECT_THAT(with(tm, R"({"id": 3, "x_m": 0, "y_m": 0}, {"id": 4, "x_m": 0, "y_m": 0}, {"id": 5, "x_m": 0, "y_m": 0}, )" + tm),
-              HasSubstr("teammates: must list 1-4 robots, got 5"));
+  EXPECT_THAT(
+      with(
+          tm,
+          R"({"id": 3, "x_m": 0, "y_m": 0}, {"id": 4, "x_m": 0, "y_m": 0}, {"id": 5, "x_m": 0, "y_m": 0}, )" +
+              tm),
+      HasSubstr("teammates: must list 1-4 robots, got 5"));
 }
 
 }  // namespace

@@ -54,7 +54,8 @@ TEST(ProblemTest, Errors) {
   EXPECT_THAT(Error("yellow", "green"), HasSubstr("defending: must be \"cyan\" or \"yellow\""));
   EXPECT_THAT(Error(R"("theta_deg": 90)", R"("theta_deg": 900)"),
               HasSubstr("teammates[1].theta_deg: must be in [-360, 360], got 900"));
-  EXPECT_THAT(Error(R"("teammates": [)", R"("teammates": [], "x": [)"), HasSubstr("x: unknown field"));
+  EXPECT_THAT(Error(R"("teammates": [)", R"("teammates": [], "x": [)"),
+              HasSubstr("x: unknown field"));
   const std::string opp = R"({"x_m": 0, "y_m": 0}, )";
   EXPECT_THAT(Error(R"("opponents": [)", R"("opponents": [)" + opp + opp + opp + opp),
               HasSubstr("opponents: must list 0-4 robots, got 5"));
