@@ -127,6 +127,10 @@ const Case* CaseBase::Find(const std::string& name) const {
   return nullptr;
 }
 
+std::filesystem::path DefaultCaseBasePath(const std::filesystem::path& models_dir) {
+  return DataFolderPath(models_dir, DataFolder::kCases);
+}
+
 LoadedCaseBase LoadCaseBase(const std::filesystem::path& path,
                             const std::filesystem::path& models_dir) {
   std::error_code ec;
@@ -166,6 +170,24 @@ LoadedCaseBase LoadCaseBase(const std::filesystem::path& path,
   }
   loaded.cases = CaseBase(cases, loaded.kick_mirrors);
   return loaded;
+}
+
+double BallScopeCoverage(const LoadedCaseBase& base, DefendingGoal goal, double x_min_m,
+                         double x_max_m, double step_m) {
+  const double half_width_m = base.rules.field.HalfWidth();
+  int inside = 0, total = 0;
+  for (double x = x_min_m; x <= x_max_m + 1e-9; x += step_m) {
+    for (double y = -half_width_m; y <= half_width_m + 1e-9; y += step_m) {
+      ++total;
+      const auto cases = base.cases.Defending(goal);
+      inside += std::any_of(cases.begin(), cases.end(), [&](const Case& c) {
+        const double dx = (x - c.p_F_ball.x()) / c.ball_scope.tau_x_m;
+        const double dy = (y - c.p_F_ball.y()) / c.ball_scope.tau_y_m;
+        return dx * dx + dy * dy <= 1.0;
+      });
+    }
+  }
+  return total == 0 ? 0.0 : static_cast<double>(inside) / total;
 }
 
 std::vector<std::string> CheckCaseBase(const CaseBase& base) {

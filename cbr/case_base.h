@@ -50,8 +50,17 @@ struct LoadedCaseBase {
   KickMirrors kick_mirrors;
 };
 
+// The shipped case base: MODELS_DIR/cases (models/model_paths.h).
+std::filesystem::path DefaultCaseBasePath(const std::filesystem::path& models_dir);
+
 LoadedCaseBase LoadCaseBase(const std::filesystem::path& path,
                             const std::filesystem::path& models_dir = DefaultModelsDir());
+
+// The share of the points of a grid over [x_min, x_max] x [-half width, half width] of the field
+// (steps of step_m) that lie inside the ball scope of at least one case for `goal`: a rough
+// coverage figure for the case author (retrieval also needs the rest of the case to fit).
+double BallScopeCoverage(const LoadedCaseBase& base, DefendingGoal goal, double x_min_m,
+                         double x_max_m, double step_m);
 
 // Two stored cases for the same defending goal that are the same after a transform, e.g. a
 // hand-written case symmetric in y and its mirror_y copy. Not an error: such a case is legal and

@@ -182,6 +182,11 @@ Case LoadCaseFile(const std::filesystem::path& file, const CaseRules& rules) {
   root.RejectUnknownKeys(
       {"name", "notes", "defending", "ball", "ball_scope", "teammates", "opponents"});
 
+  if (name.empty() || name.find('/') != std::string::npos) {
+    root.Fail("name",
+              "must be a non-empty name without '/' (copies are named NAME/mirror_y), got \"" +
+                  name + "\"");
+  }
   Case c;
   c.name = name;
   c.source = name;

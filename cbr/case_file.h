@@ -3,7 +3,8 @@
 // Format (SI units, frame F: the cyan goal at -x; every key below is required unless marked
 // optional, any other key is an error):
 //   {
-//     "name": "front_pass_dg",              unique in the case base
+//     "name": "front_pass_dg",              unique in the case base, no '/'; by convention the
+//                                           file's name
 //     "notes": "what situation it is for",  required here (not just allowed)
 //     "defending": "cyan",                  "cyan" | "yellow"
 //     "ball": {"x_m": 1.5, "y_m": 0.0},
@@ -32,7 +33,8 @@
 //        the get_ball robot: a pass to robot r hands control to r, whose next ball action must be
 //        receive from the passer; a kick releases the ball for good. Every pass has its receive
 //        and every receive its pass; no ball action may lie outside that chain. A gameplay may end
-//        with the ball still controlled (e.g. get_ball, dribble).
+//        with the ball still controlled (e.g. get_ball, dribble). go_to, turn and wait are
+//        allowed with or without the ball.
 #pragma once
 
 #include <filesystem>

@@ -17,7 +17,7 @@ namespace {
 using ::testing::HasSubstr;
 
 std::filesystem::path ShippedCases() {
-  return testing::ModelsDir() / "cases";
+  return DefaultCaseBasePath(testing::ModelsDir());
 }
 
 TEST(CaseBaseTest, ShippedBaseHas34HandWrittenAnd136Cases) {
@@ -41,6 +41,15 @@ TEST(CaseBaseTest, EveryCopyKeepsTheRules) {
       EXPECT_NO_THROW(ValidateCase(c, loaded.rules)) << c.name;
     }
   }
+}
+
+// models/cases/README.md: about 95% of the midfield and attacking half (x >= -0.9 m) lies in a
+// ball scope, for either defending goal (the yellow copies mirror the cyan ones).
+TEST(CaseBaseTest, ShippedBallScopesCoverMostOfTheAttack) {
+  const LoadedCaseBase loaded = LoadCaseBase(ShippedCases(), testing::ModelsDir());
+  EXPECT_GT(BallScopeCoverage(loaded, DefendingGoal::kCyan, -0.9, 2.7, 0.05), 0.94);
+  EXPECT_NEAR(BallScopeCoverage(loaded, DefendingGoal::kYellow, -2.7, 0.9, 0.05),
+              BallScopeCoverage(loaded, DefendingGoal::kCyan, -0.9, 2.7, 0.05), 0.01);
 }
 
 TEST(CaseBaseTest, CopiesAreNamedAndMirrored) {

@@ -136,6 +136,8 @@ TEST(CaseFileTest, RejectsBadIdsCountsAndScopes) {
               HasSubstr("case c: opponents: must list 0-4 robots, got 5"));
   EXPECT_THAT(with(R"("defending": "cyan")", R"("defending": "blue")"),
               HasSubstr("case c: defending: must be \"cyan\" or \"yellow\", got \"blue\""));
+  EXPECT_THAT(with(R"("name": "c")", R"("name": "c/mirror_y")"),
+              HasSubstr("case c/mirror_y: name: must be a non-empty name without '/'"));
   EXPECT_THAT(with(R"("notes": "a test case")", R"("notes": "")"),
               HasSubstr("case c: notes: must say"));
   const std::string tm = R"({"id": 1, "x_m": 1.0, "y_m": 0.2, "actions": [)";
