@@ -154,6 +154,11 @@ void ValidateCase(const Case& c, const CaseRules& rules) {
     for (std::size_t i = 0; i < c.teammates.size(); ++i) {
       const std::string at = "teammates[" + std::to_string(i) + "]";
       RequireOnField(at, c.teammates[i].p_F, rules.field);
+      if (c.teammates[i].actions.empty()) {
+        throw InputError(at +
+                         ".actions: must list at least one action (\"wait\" for a robot "
+                         "that only holds its place)");
+      }
       for (std::size_t j = 0; j < c.teammates[i].actions.size(); ++j) {
         ValidateAction(at + ".actions[" + std::to_string(j) + "]", c.teammates[i].actions[j], c,
                        rules);

@@ -81,6 +81,26 @@ TEST(CaseFileTest, ReadsEveryActionKind) {
   EXPECT_EQ(c.teammates[1].actions[2].target_F->x(), 2.7);
 }
 
+// A give-and-go: 1 passes to 2, 2 passes back, 1 kicks; the ball changes hands twice.
+TEST(CaseFileTest, AcceptsAReturnPass) {
+  const Case c = Load(CaseJson(
+      R"({"type": "get_ball"}, {"type": "pass", "kick": "forward", "to": 2},
+         {"type": "go_to", "target": {"x_m": 2.0, "y_m": 0.2}}, {"type": "receive", "from": 2},
+         {"type": "kick", "kick": "forward", "at": "goal"})",
+      R"({"type": "receive", "from": 1}, {"type": "pass", "kick": "head_kick_right", "to": 1})"));
+  EXPECT_EQ(c.teammates[0].actions.size(), 5u);
+}
+
+TEST(CaseFileTest, RejectsActionsAfterTheBallIsKickedAndIdleRobots) {
+  EXPECT_THAT(
+      LoadError(CaseJson(R"({"type": "get_ball"}, {"type": "kick", "kick": "forward", "at": "goal"},
+                                    {"type": "dribble", "target": {"x_m": 2.0, "y_m": 0.0}})",
+                         R"({"type": "wait"})")),
+      HasSubstr("case c: teammates[0].actions[2]: dribble: robot 1 does not control"));
+  EXPECT_THAT(LoadError(CaseJson(R"({"type": "get_ball"})", "")),
+              HasSubstr("case c: teammates[1].actions: must list at least one action"));
+}
+
 TEST(CaseFileTest, ErrorsNameFileCaseFieldAndValue) {
   struct Bad {
     std::string text, field, value;
