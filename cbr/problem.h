@@ -8,6 +8,7 @@
 
 #include "cbr/case.h"
 #include "common/geometry.h"
+#include "models/model_paths.h"
 
 namespace foresight {
 
@@ -22,5 +23,17 @@ struct Problem {
   std::vector<ProblemTeammate> teammates;  // 1-4, distinct ids
   std::vector<Vec2> opponents;             // 0-4, positions in F
 };
+
+// Reads a problem file, strictly (unknown keys are errors):
+//   {"notes": "...",                       optional
+//    "field": "four_legged",               optional, the field positions are checked against
+//    "defending": "cyan",
+//    "ball": {"x_m": 1.0, "y_m": 0.2},
+//    "teammates": [{"id": 1, "x_m": 0.8, "y_m": 0.2, "theta_deg": 0}],      1-4, ids 1..4 distinct
+//    "opponents": [{"x_m": 2.0, "y_m": 0.0}]}                                optional, 0-4
+// Positions must lie on the field. Errors read "FILE: FIELD: problem". A bare field name is found
+// in MODELS_DIR/fields (models/model_paths.h).
+Problem LoadProblem(const std::filesystem::path& file,
+                    const std::filesystem::path& models_dir = DefaultModelsDir());
 
 }  // namespace foresight

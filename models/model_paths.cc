@@ -7,7 +7,7 @@
 namespace foresight {
 namespace {
 
-constexpr EnumNames<DataFolder, 10> kFolderNames{{{
+constexpr EnumNames<DataFolder, 11> kFolderNames{{{
     {DataFolder::kFields, "fields"},
     {DataFolder::kKicks, "kicks"},
     {DataFolder::kEvaluation, "evaluation"},
@@ -18,6 +18,7 @@ constexpr EnumNames<DataFolder, 10> kFolderNames{{{
     {DataFolder::kFidelity, "fidelity"},
     {DataFolder::kCheckSpecs, "check_specs"},
     {DataFolder::kExperiments, "experiments"},
+    {DataFolder::kCases, "cases"},
 }}};
 
 }  // namespace

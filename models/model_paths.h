@@ -26,6 +26,7 @@ enum class DataFolder {
   kFidelity,
   kCheckSpecs,
   kExperiments,
+  kCases,
 };
 std::string_view DataFolderName(DataFolder folder);  // "fields", "kicks", ...
 
