@@ -86,6 +86,17 @@ void Fit(CalibrationRun& run) {
   run.fitted = ApplyCalibration(run.base, fits, run.deceleration);
 }
 
+// The kick model's folder must exist, and the report folder must be one foresight may replace.
+void CheckOutputs(const CalibrateOptions& options) {
+  const std::filesystem::path out_dir = std::filesystem::path(options.out_file).parent_path();
+  std::error_code ec;
+  if (!out_dir.empty() && !std::filesystem::is_directory(out_dir, ec)) {
+    throw InputError("--out: " + options.out_file + ": the folder " + out_dir.string() +
+                     " does not exist");
+  }
+  if (!options.report_dir.empty()) CheckReportDir(options.report_dir, "--report");
+}
+
 std::string ModelNotes(const CalibrationRun& run) {
   std::string kicks;
   for (const CalibratedKick& k : run.kicks) kicks += (kicks.empty() ? "" : ", ") + k.fit.kick;
@@ -149,6 +160,7 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
                            {"physics", ""},
                            {"base_kicks", DisplayPath(base_file, models)},
                            {"out", options.out_file}};
+  CheckOutputs(options);  // before the work, not after
   if (options.from_csv.empty()) {
     if (options.kick.empty() && !options.all) throw InputError("--kick or --all: say which kicks");
     CalibrateFromPhysics(options, models, run);
@@ -172,12 +184,7 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
   files.push_back({options.out_file, model});
   const std::string text = CalibrationText(run);
   // The kick model first: if it cannot be written, no report is left behind either.
-  const std::filesystem::path out_dir = std::filesystem::path(options.out_file).parent_path();
-  std::error_code ec;
-  if (!out_dir.empty() && !std::filesystem::is_directory(out_dir, ec)) {
-    throw InputError("--out: " + options.out_file + ": the folder " + out_dir.string() +
-                     " does not exist");
-  }
+  CheckOutputs(options);
   WriteFileAtomically(files.back().first, files.back().second);
   files.pop_back();
   if (!options.report_dir.empty()) WriteReportFiles(options.report_dir, "--report", files);

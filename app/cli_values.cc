@@ -10,6 +10,7 @@
 #include "common/checks.h"
 #include "common/error.h"
 #include "report/atomic_file.h"
+#include "report/report_folder.h"
 
 namespace foresight {
 
@@ -67,33 +68,14 @@ std::function<void(int, int)> TerminalProgress(const std::string& label, const s
   };
 }
 
-void CreateReportDir(const std::string& dir, const std::string& flag) {
-  std::error_code error;
-  std::filesystem::create_directories(dir, error);
-  if (error || !std::filesystem::is_directory(dir)) {
-    throw InputError(flag + ": cannot create the folder '" + dir +
-                     "': " + (error ? error.message() : "a file of that name is in the way"));
-  }
-}
-
 void WriteReportFiles(const std::string& dir, const std::string& flag, const ReportFiles& files) {
-  CreateReportDir(dir, flag);
-  for (const auto& [file, content] : files) WriteFileAtomically(file, content);
+  std::vector<ReportFile> named;
+  for (const auto& [file, content] : files) named.push_back({file.filename().string(), content});
+  WriteReportFolder(dir, named, flag);
 }
 
 void CheckReportDir(const std::string& dir, const std::string& flag) {
-  std::error_code error;
-  std::filesystem::path existing = std::filesystem::absolute(dir, error);
-  while (!existing.empty() && !std::filesystem::exists(existing, error)) {
-    if (existing == existing.parent_path()) break;
-    existing = existing.parent_path();
-  }
-  const bool is_dir = std::filesystem::is_directory(existing, error);
-  if (!is_dir || ::access(existing.c_str(), W_OK) != 0) {
-    throw InputError(flag + ": cannot create the folder '" + dir + "': " +
-                     (is_dir ? existing.string() + " is not writable"
-                             : existing.string() + " is a file, not a folder"));
-  }
+  CheckReportFolder(dir, flag);
 }
 
 std::string DefaultText(double value) {

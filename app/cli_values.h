@@ -24,15 +24,12 @@ std::string DefaultText(double value);
 // (docs/ARCHITECTURE.md, "Output").
 std::function<void(int, int)> TerminalProgress(const std::string& label, const std::string& unit);
 
-// Creates a report folder (and its parents); InputError naming the flag and folder if it fails.
-void CreateReportDir(const std::string& dir, const std::string& flag);
-// Creates the report folder `dir` (CreateReportDir) and writes every file of it atomically.
-// Call it only once every content is computed, so a failed run leaves nothing half-written.
+// Writes the report folder `dir` whole (report/report_folder.h): the files, given as paths in
+// `dir`, replace the previous report at once. Call it only once every content is computed.
 using ReportFiles = std::vector<std::pair<std::filesystem::path, std::string>>;
 void WriteReportFiles(const std::string& dir, const std::string& flag, const ReportFiles& files);
 
-// Checks, without creating anything, that CreateReportDir can succeed: the folder is a folder
-// or can be made in its nearest existing ancestor, which must be writable. For long runs, so
+// Checks, without creating anything, that WriteReportFiles can succeed (CheckReportFolder), so
 // that a bad flag fails before the work instead of after it.
 void CheckReportDir(const std::string& dir, const std::string& flag);
 

@@ -47,6 +47,7 @@ int RunFidelityCommand(const FidelityOptions& options, const std::string& models
   run.settings.threads = ParseCount("--threads", options.threads, 0, 1024);
   run.settings.physics_file = options.physics_file;
   run.settings.progress = TerminalProgress("fidelity:", "situations");
+  CheckReportDir(options.out_dir, "--out");  // before the work, not after
   const FidelitySet set = LoadFidelitySet(options.situations, models, options.kicks_file);
   run.provenance.inputs = {{"situations_set", set.name},
                            {"set_file", DisplayPath(set.file, models)},

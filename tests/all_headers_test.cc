@@ -82,6 +82,7 @@
 #include "report/experiment_maps.h"
 #include "report/field_svg.h"
 #include "report/html_report.h"
+#include "report/report_folder.h"
 #include "report/provenance.h"
 #include "report/report_format.h"
 #include "report/svg_writer.h"
