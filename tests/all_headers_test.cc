@@ -16,6 +16,7 @@
 #include "app/simulation_output.h"
 #include "cbr/case.h"
 #include "cbr/problem.h"
+#include "cbr/retrieval_params.h"
 #include "common/checks.h"
 #include "common/enum_names.h"
 #include "common/error.h"
