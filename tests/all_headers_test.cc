@@ -17,6 +17,7 @@
 #include "cbr/case.h"
 #include "cbr/problem.h"
 #include "cbr/retrieval_params.h"
+#include "cbr/similarity.h"
 #include "common/checks.h"
 #include "common/enum_names.h"
 #include "common/error.h"
