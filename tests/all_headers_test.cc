@@ -15,6 +15,7 @@
 #include "app/simulate_command.h"
 #include "app/simulation_output.h"
 #include "cbr/case.h"
+#include "cbr/correspondence.h"
 #include "cbr/problem.h"
 #include "cbr/retrieval_params.h"
 #include "cbr/similarity.h"
