@@ -16,6 +16,7 @@
 #include "app/simulation_output.h"
 #include "cbr/case.h"
 #include "cbr/correspondence.h"
+#include "cbr/free_path.h"
 #include "cbr/problem.h"
 #include "cbr/retrieval_params.h"
 #include "cbr/similarity.h"
