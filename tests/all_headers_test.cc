@@ -18,6 +18,7 @@
 #include "cbr/correspondence.h"
 #include "cbr/free_path.h"
 #include "cbr/problem.h"
+#include "cbr/retrieval.h"
 #include "cbr/retrieval_params.h"
 #include "cbr/similarity.h"
 #include "common/checks.h"
