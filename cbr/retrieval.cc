@@ -10,10 +10,11 @@
 namespace foresight {
 namespace {
 
-constexpr EnumNames<Verdict, 7> kVerdictNames{{{
+constexpr EnumNames<Verdict, 8> kVerdictNames{{{
     {Verdict::kCandidate, "candidate"},
     {Verdict::kOtherGoal, "other_goal"},
     {Verdict::kInvalidCase, "invalid_case"},
+    {Verdict::kInvalidProblem, "invalid_problem"},
     {Verdict::kBallOutOfScope, "ball_out_of_scope"},
     {Verdict::kTooFewTeammates, "too_few_teammates"},
     {Verdict::kTooFar, "too_far"},
@@ -62,14 +63,17 @@ CaseEvaluation EvaluateCase(const Problem& problem, const Case& c, int index,
     e.verdict = Verdict::kInvalidCase;
     return e;
   }
+  if (problem.teammates.size() > static_cast<std::size_t>(kMaxTeammates)) {
+    e.verdict = Verdict::kInvalidProblem;
+    return e;
+  }
   e.ball_similarity = BallSimilarity(problem, c);
   e.band = SimilarityBand(e.ball_similarity, params);
   if (!(e.ball_similarity > params.thr_ball)) {
     e.verdict = Verdict::kBallOutOfScope;
     return e;
   }
-  if (c.teammates.size() > problem.teammates.size() ||
-      problem.teammates.size() > static_cast<std::size_t>(kMaxTeammates)) {
+  if (c.teammates.size() > problem.teammates.size()) {
     e.verdict = Verdict::kTooFewTeammates;
     return e;
   }
@@ -169,6 +173,9 @@ std::string Explain(const CaseEvaluation& e, const Case& c, const Problem& probl
     case Verdict::kInvalidCase:
       return head + "invalid: " + std::to_string(e.teammates) + " teammates (1-" +
              std::to_string(kMaxTeammates) + " allowed)";
+    case Verdict::kInvalidProblem:
+      return head + "invalid problem: " + std::to_string(problem.teammates.size()) +
+             " teammates (1-" + std::to_string(kMaxTeammates) + " allowed)";
     case Verdict::kBallOutOfScope:
       return head + "ball out of scope: similarity " + Milli(e.ball_similarity) + " <= thr_b " +
              Milli(params.thr_ball);

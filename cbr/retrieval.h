@@ -12,7 +12,9 @@
 //
 // Decisions (the paper is silent): the defending goal is checked too (a case for the other goal
 // is rejected, though the caller should pass only the cases of the problem's goal); a case with
-// no teammates or more than kMaxTeammates is rejected as invalid.
+// no teammates or more than kMaxTeammates is rejected as invalid, and so is every case for a
+// problem with more than kMaxTeammates teammates (the problem loader allows 1-4). Conditions are
+// computed for candidates only (they rank, never reject).
 #pragma once
 
 #include <optional>
@@ -33,6 +35,7 @@ enum class Verdict {
   kCandidate,
   kOtherGoal,        // the case is for the other defending goal
   kInvalidCase,      // 0 or more than kMaxTeammates teammates
+  kInvalidProblem,   // the problem has more than kMaxTeammates teammates
   kBallOutOfScope,   // sim_B <= thr_b
   kTooFewTeammates,  // the case needs more teammates than the problem has
   kTooFar,           // no matching keeps every distance <= thr_c

@@ -225,6 +225,27 @@ TEST(RetrievalTest, RejectionsExplainThemselves) {
   EXPECT_THAT(Explain(r.evaluations[2], cases[2], p, params),
               HasSubstr("the case needs 3, the problem has 2"));
   EXPECT_EQ(r.evaluations[3].verdict, Verdict::kOtherGoal);
+  EXPECT_THAT(Explain(r.evaluations[3], cases[3], p, params), HasSubstr("other defending goal"));
+}
+
+TEST(RetrievalTest, ACandidatesExplanationGivesItsMeasures) {
+  const std::vector<Case> cases{Solo("solo")};
+  Problem p = TwoRobots();
+  p.p_F_ball = Vec2(0.3, 0.3);  // sim = exp(-(0.09 + 0.09) / 0.36) = exp(-0.5) ~ 0.607: band h
+  const RetrievalParams params;
+  const RetrievalResult r = Retrieve(cases, p, params);
+  ASSERT_EQ(r.retrieved, 0);
+  EXPECT_NEAR(r.Best()->ball_similarity, std::exp(-0.5), 1e-12);
+  EXPECT_EQ(r.Best()->band, 1);
+  // Robot 3 at (-0.3, 0.2) walks to the adapted (0.1, 0.3).
+  EXPECT_THAT(Explain(*r.Best(), cases[0], p, params),
+              HasSubstr("candidate, rank 0: conditions 0, teammates 1, similarity 0.607 (band h), "
+                        "cost 0.412 m (sum)"));
+  // Five teammates: the problem is rejected for every case, with a reason.
+  p.teammates.resize(5, p.teammates.front());
+  const RetrievalResult bad = Retrieve(cases, p, params);
+  EXPECT_FALSE(bad.retrieved.has_value());
+  EXPECT_EQ(bad.evaluations[0].verdict, Verdict::kInvalidProblem);
 }
 
 }  // namespace
