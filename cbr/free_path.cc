@@ -1,6 +1,7 @@
 #include "cbr/free_path.h"
 
 #include <cmath>
+#include <limits>
 
 namespace foresight {
 namespace {
@@ -14,15 +15,20 @@ int TeammateIndex(const Case& c, int id) {
 
 }  // namespace
 
-double TrajectoryMembership(const FuzzyTrajectory& t, const Vec2& p_F) {
-  if (!(t.length_m > 0.0)) return 0.0;
+double TrajectoryExponent(const FuzzyTrajectory& t, const Vec2& p_F) {
+  constexpr double kOutside = std::numeric_limits<double>::infinity();
+  if (!(t.length_m > 0.0)) return kOutside;
   const Vec2 d = p_F - t.start_F;
   const double along = d.dot(t.u);
-  if (along < 0.0 || along > t.length_m) return 0.0;
+  if (along < 0.0 || along > t.length_m) return kOutside;
   const double across = t.u.x() * d.y() - t.u.y() * d.x();  // d . (-u_y, u_x)
   const double rho = t.r_start_m + (t.r_end_m - t.r_start_m) * (along / t.length_m);
   const double q = across / rho;
-  return std::exp(-q * q);
+  return q * q;
+}
+
+double TrajectoryMembership(const FuzzyTrajectory& t, const Vec2& p_F) {
+  return std::exp(-TrajectoryExponent(t, p_F));
 }
 
 FuzzyTrajectory MakeTrajectory(const Vec2& start_F, const Vec2& end_F, const KickTrajectory& kick,
@@ -110,14 +116,15 @@ CaseBallPath BuildBallPath(const Problem& problem, const Case& c, std::span<cons
 
 PathCheck CheckFreePath(const CaseBallPath& path, std::span<const Vec2> opponents_F, double thr_t) {
   PathCheck check;
+  const double limit = -std::log(thr_t);  // mu > thr_t <=> (y'/rho)^2 < -ln thr_t: no exp
   for (int t = 0; t < path.count; ++t) {
     for (std::size_t o = 0; o < opponents_F.size(); ++o) {
-      const double mu = TrajectoryMembership(path.trajectories[t], opponents_F[o]);
-      if (mu > thr_t) {
+      const double q2 = TrajectoryExponent(path.trajectories[t], opponents_F[o]);
+      if (q2 < limit) {
         check.free = false;
         check.opponent = static_cast<int>(o);
         check.trajectory = t;
-        check.membership = mu;
+        check.membership = std::exp(-q2);
         return check;
       }
     }

@@ -62,7 +62,8 @@ struct FuzzyTrajectory {
   int receiver = -1;                      // case teammate index for a pass
 };
 
-// mu of sec. 3.3.1 at p_F.
+// mu of sec. 3.3.1 at p_F, and its exponent (y'/rho)^2 (+infinity where mu = 0).
+double TrajectoryExponent(const FuzzyTrajectory& t, const Vec2& p_F);
 double TrajectoryMembership(const FuzzyTrajectory& t, const Vec2& p_F);
 
 // A trajectory from start to end (cut to reach_m when > 0) with widths of `kick` per `params`.

@@ -17,9 +17,13 @@ double OpponentScopeMembership(const Problem& problem, const Case& c, const Case
 
 int OpponentSimilarity(const Problem& problem, const Case& c, double thr_opp) {
   int conditions = 0;
+  const double limit = -std::log(thr_opp);  // Omega > thr_opp <=> exponent < -ln thr_opp
   for (const CaseOpponent& scope : c.opponents) {
+    const Vec2 centre = MovedScopeCentre(problem, c, scope);
     for (const Vec2& o : problem.opponents) {
-      if (OpponentScopeMembership(problem, c, scope, o) > thr_opp) {
+      const double u = (o.x() - centre.x()) / scope.scope.tau_x_m;
+      const double v = (o.y() - centre.y()) / scope.scope.tau_y_m;
+      if (u * u + v * v < limit) {
         ++conditions;
         break;
       }
