@@ -179,6 +179,29 @@ TEST(RetrievalTest, AnOpponentInThePassCorridorRejectsItAndIsNamed) {
   EXPECT_THAT(why, HasSubstr("pass by teammate 1 to teammate 2"));
 }
 
+TEST(RetrievalTest, AnOpponentOnTheShotAfterThePassBlocksTheSecondTrajectory) {
+  // Fig. 8a: the ball path is the pass t0 and then the receiver's shot t1 from (1.1, 0.9) to the
+  // goal centre (2.7, 0); the opponent stands on t1, 0.8 m along it.
+  const std::vector<Case> cases{Pass("pass")};
+  Problem p = TwoRobots();
+  const Vec2 from(1.1, 0.9), to(2.7, 0.0);
+  p.opponents = {from + 0.8 * (to - from).normalized()};
+  const RetrievalParams params;
+  const RetrievalResult r = Retrieve(cases, p, params);
+  EXPECT_FALSE(r.retrieved.has_value());
+  EXPECT_EQ(r.evaluations[0].verdict, Verdict::kPathBlocked);
+  EXPECT_EQ(r.evaluations[0].path.trajectory, 1);
+  EXPECT_DOUBLE_EQ(r.evaluations[0].path.membership, 1.0);
+  EXPECT_THAT(Explain(r.evaluations[0], cases[0], p, params),
+              HasSubstr("on trajectory 1 (kick by teammate 2 from (1.1, 0.9) to (2.7, 0))"));
+  // Defending yellow, the same case mirrored in x shoots at -x: the opponent is no longer there.
+  Case mirrored = Pass("pass_yellow");
+  mirrored.defending = DefendingGoal::kYellow;
+  Problem q = p;
+  q.defending = DefendingGoal::kYellow;
+  EXPECT_TRUE(Retrieve(std::vector<Case>{mirrored}, q, params).retrieved.has_value());
+}
+
 TEST(RetrievalTest, AnOpponentInACasesScopeRaisesItAboveAnEqualCase) {
   Case plain = Solo("plain");
   Case guarded = Solo("guarded");
