@@ -51,7 +51,7 @@ struct Correspondence {
   double far_distance_m = 0.0;
 };
 
-// adaptPos of case teammate `teammate`.
+// adaptPos of a case point (a teammate's position or a target): moved with the ball.
 inline Vec2 AdaptedPosition(const Problem& problem, const Case& c, const Vec2& case_p_F) {
   return case_p_F - c.p_F_ball + problem.p_F_ball;
 }
