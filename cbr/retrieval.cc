@@ -1,0 +1,218 @@
+#include "cbr/retrieval.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cbr/similarity.h"
+#include "common/checks.h"
+#include "common/enum_names.h"
+
+namespace foresight {
+namespace {
+
+constexpr EnumNames<Verdict, 8> kVerdictNames{{{
+    {Verdict::kCandidate, "candidate"},
+    {Verdict::kOtherGoal, "other_goal"},
+    {Verdict::kInvalidCase, "invalid_case"},
+    {Verdict::kInvalidProblem, "invalid_problem"},
+    {Verdict::kBallOutOfScope, "ball_out_of_scope"},
+    {Verdict::kTooFewTeammates, "too_few_teammates"},
+    {Verdict::kTooFar, "too_far"},
+    {Verdict::kPathBlocked, "path_blocked"},
+}}};
+
+constexpr const char* kBandNames[] = {"H", "h", "l", "L"};
+
+// Explanations give metres to the millimetre and memberships to 1e-3.
+std::string Milli(double v) {
+  return FormatNumber(std::round(v * 1000.0) / 1000.0);
+}
+
+std::string Point(const Vec2& p) {
+  std::string s = "(";  // appended, not "(" + ...: GCC 12 warns falsely (-Wrestrict) on that
+  s += Milli(p.x());
+  s += ", ";
+  s += Milli(p.y());
+  s += ")";
+  return s;
+}
+
+}  // namespace
+
+std::string_view VerdictName(Verdict verdict) {
+  return kVerdictNames.Name(verdict);
+}
+
+int SimilarityBand(double similarity, const RetrievalParams& params) {
+  for (int b = 0; b < 3; ++b) {
+    if (similarity >= params.band_lower[b]) return b;
+  }
+  return 3;
+}
+
+CaseEvaluation EvaluateCase(const Problem& problem, const Case& c, int index,
+                            const RetrievalParams& params) {
+  CaseEvaluation e;
+  e.case_index = index;
+  e.teammates = static_cast<int>(c.teammates.size());
+  if (c.defending != problem.defending) {
+    e.verdict = Verdict::kOtherGoal;
+    return e;
+  }
+  if (c.teammates.empty() || c.teammates.size() > static_cast<std::size_t>(kMaxTeammates)) {
+    e.verdict = Verdict::kInvalidCase;
+    return e;
+  }
+  if (problem.teammates.size() > static_cast<std::size_t>(kMaxTeammates)) {
+    e.verdict = Verdict::kInvalidProblem;
+    return e;
+  }
+  e.ball_similarity = BallSimilarity(problem, c);
+  e.band = SimilarityBand(e.ball_similarity, params);
+  if (!(e.ball_similarity > params.thr_ball)) {
+    e.verdict = Verdict::kBallOutOfScope;
+    return e;
+  }
+  if (c.teammates.size() > problem.teammates.size()) {
+    e.verdict = Verdict::kTooFewTeammates;
+    return e;
+  }
+  e.correspondence = FindCorrespondence(problem, c, params.cost, params.thr_cost_m);
+  if (!e.correspondence.feasible) {
+    e.verdict = Verdict::kTooFar;
+    return e;
+  }
+  const CaseBallPath path =
+      BuildBallPath(problem, c,
+                    std::span<const Vec2>(e.correspondence.adapted_F.data(),
+                                          static_cast<std::size_t>(e.correspondence.count)),
+                    params);
+  e.path = CheckFreePath(path, problem.opponents, params.thr_trajectory);
+  if (!e.path.free) {
+    e.verdict = Verdict::kPathBlocked;
+    return e;
+  }
+  e.conditions = OpponentSimilarity(problem, c, params.thr_opponent);
+  e.verdict = Verdict::kCandidate;
+  return e;
+}
+
+bool RanksBefore(const CaseEvaluation& a, const CaseEvaluation& b, const RetrievalParams& params) {
+  for (RankCriterion criterion : params.order) {
+    switch (criterion) {
+      case RankCriterion::kConditions:
+        if (a.conditions != b.conditions) return a.conditions > b.conditions;
+        break;
+      case RankCriterion::kTeammates:
+        if (a.teammates != b.teammates) return a.teammates > b.teammates;
+        break;
+      case RankCriterion::kBandThenCost:
+        if (a.band != b.band) return a.band < b.band;
+        if (a.correspondence.cost < b.correspondence.cost) return true;
+        if (b.correspondence.cost < a.correspondence.cost) return false;
+        break;
+    }
+  }
+  return a.case_index < b.case_index;
+}
+
+void Retrieve(std::span<const Case> cases, const Problem& problem, const RetrievalParams& params,
+              RetrievalResult* out) {
+  out->retrieved.reset();
+  out->evaluations.clear();
+  out->ranking.clear();
+  out->ball_path = CaseBallPath{};
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    out->evaluations.push_back(EvaluateCase(problem, cases[i], static_cast<int>(i), params));
+    if (out->evaluations.back().verdict == Verdict::kCandidate) {
+      out->ranking.push_back(static_cast<int>(i));
+    }
+  }
+  const auto& ev = out->evaluations;
+  std::sort(out->ranking.begin(), out->ranking.end(), [&](int a, int b) {
+    return RanksBefore(ev[static_cast<std::size_t>(a)], ev[static_cast<std::size_t>(b)], params);
+  });
+  for (std::size_t r = 0; r < out->ranking.size(); ++r) {
+    out->evaluations[static_cast<std::size_t>(out->ranking[r])].rank = static_cast<int>(r);
+  }
+  if (!out->ranking.empty()) {
+    const int best = out->ranking.front();
+    out->retrieved = best;
+    const Correspondence& k = out->evaluations[static_cast<std::size_t>(best)].correspondence;
+    out->ball_path = BuildBallPath(
+        problem, cases[static_cast<std::size_t>(best)],
+        std::span<const Vec2>(k.adapted_F.data(), static_cast<std::size_t>(k.count)), params);
+  }
+}
+
+RetrievalResult Retrieve(std::span<const Case> cases, const Problem& problem,
+                         const RetrievalParams& params) {
+  RetrievalResult result;
+  result.evaluations.reserve(cases.size());
+  result.ranking.reserve(cases.size());
+  Retrieve(cases, problem, params, &result);
+  return result;
+}
+
+std::string Explain(const CaseEvaluation& e, const Case& c, const Problem& problem,
+                    const RetrievalParams& params) {
+  const std::string head = "case " + c.name + ": ";
+  switch (e.verdict) {
+    case Verdict::kCandidate: {
+      std::string s = head + "candidate, rank " + std::to_string(e.rank) + ": conditions " +
+                      std::to_string(e.conditions) + ", teammates " + std::to_string(e.teammates) +
+                      ", similarity " + Milli(e.ball_similarity) + " (band " +
+                      kBandNames[std::clamp(e.band, 0, 3)] + ")";
+      s += ", cost " + Milli(e.correspondence.cost.primary) + " m (" +
+           std::string(CostFunctionName(params.cost)) + ")";
+      return s;
+    }
+    case Verdict::kOtherGoal:
+      return head + "for the other defending goal (" + std::string(DefendingGoalName(c.defending)) +
+             ")";
+    case Verdict::kInvalidCase:
+      return head + "invalid: " + std::to_string(e.teammates) + " teammates (1-" +
+             std::to_string(kMaxTeammates) + " allowed)";
+    case Verdict::kInvalidProblem:
+      return head + "invalid problem: " + std::to_string(problem.teammates.size()) +
+             " teammates (1-" + std::to_string(kMaxTeammates) + " allowed)";
+    case Verdict::kBallOutOfScope:
+      return head + "ball out of scope: similarity " + Milli(e.ball_similarity) + " <= thr_b " +
+             Milli(params.thr_ball);
+    case Verdict::kTooFewTeammates:
+      return head + "too few teammates: the case needs " + std::to_string(e.teammates) +
+             ", the problem has " + std::to_string(problem.teammates.size());
+    case Verdict::kTooFar: {
+      const Correspondence& k = e.correspondence;
+      const int case_id = c.teammates[static_cast<std::size_t>(k.far_case_index)].id;
+      const int problem_id = problem.teammates[static_cast<std::size_t>(k.far_problem_index)].id;
+      return head + "too far: robot " + std::to_string(problem_id) + " would walk " +
+             Milli(k.far_distance_m) + " m to case teammate " + std::to_string(case_id) +
+             "'s adapted position " +
+             Point(k.adapted_F[static_cast<std::size_t>(k.far_case_index)]) + " > thr_c " +
+             Milli(params.thr_cost_m) + " m in the best matching";
+    }
+    case Verdict::kPathBlocked: {
+      const CaseBallPath path =
+          BuildBallPath(problem, c,
+                        std::span<const Vec2>(e.correspondence.adapted_F.data(),
+                                              static_cast<std::size_t>(e.correspondence.count)),
+                        params);
+      const FuzzyTrajectory& t = path.trajectories[static_cast<std::size_t>(e.path.trajectory)];
+      std::string what = std::string(ActionTypeName(t.action)) + " by teammate " +
+                         std::to_string(c.teammates[static_cast<std::size_t>(t.kicker)].id);
+      if (t.receiver >= 0) {
+        what +=
+            " to teammate " + std::to_string(c.teammates[static_cast<std::size_t>(t.receiver)].id);
+      }
+      return head + "path blocked: opponent " + std::to_string(e.path.opponent) + " at " +
+             Point(problem.opponents[static_cast<std::size_t>(e.path.opponent)]) +
+             " on trajectory " + std::to_string(e.path.trajectory) + " (" + what + " from " +
+             Point(t.start_F) + " to " + Point(t.end_F) + "), mu " + Milli(e.path.membership) +
+             " > thr_t " + Milli(params.thr_trajectory);
+    }
+  }
+  return head + "?";
+}
+
+}  // namespace foresight

@@ -1,0 +1,93 @@
+// Case retrieval (Ros et al. 2009, sec. 3.4): Algorithm 1 filters, Algorithm 2 ranks.
+//
+// IsCandidate(p, c) (Algorithm 1), a case is rejected at the first failing test:
+//   1. sim_B(B^p, B^c) > thr_b                                  (sec. 3.1)
+//   2. the case has no more teammates than the problem          (sec. 3.2)
+//   3. correspondence with every distance <= thr_c              (sec. 3.2, cbr/correspondence.h)
+//   4. free_path(p, c) = 1                                       (sec. 3.3.1, cbr/free_path.h)
+// Retrieve(p, CB) (Algorithm 2): the candidates sorted by the criteria of RetrievalParams::order
+// (paper: conditions desc, teammates desc, similarity band H > h > l > L then cost asc); the first
+// one is retrieved. Ties (all criteria equal) go to the lower case index. "No candidate" is a
+// result (retrieved is empty), not an error.
+//
+// Decisions (the paper is silent): the defending goal is checked too (a case for the other goal
+// is rejected, though the caller should pass only the cases of the problem's goal); a case with
+// no teammates or more than kMaxTeammates is rejected as invalid, and so is every case for a
+// problem with more than kMaxTeammates teammates (the problem loader allows 1-4). Conditions are
+// computed for candidates only (they rank, never reject).
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cbr/case.h"
+#include "cbr/correspondence.h"
+#include "cbr/free_path.h"
+#include "cbr/problem.h"
+#include "cbr/retrieval_params.h"
+
+namespace foresight {
+
+enum class Verdict {
+  kCandidate,
+  kOtherGoal,        // the case is for the other defending goal
+  kInvalidCase,      // 0 or more than kMaxTeammates teammates
+  kInvalidProblem,   // the problem has more than kMaxTeammates teammates
+  kBallOutOfScope,   // sim_B <= thr_b
+  kTooFewTeammates,  // the case needs more teammates than the problem has
+  kTooFar,           // no matching keeps every distance <= thr_c
+  kPathBlocked,      // an opponent is on a trajectory of the ball path
+};
+std::string_view VerdictName(Verdict verdict);
+
+// Everything retrieval found out about one case.
+struct CaseEvaluation {
+  int case_index = -1;
+  Verdict verdict = Verdict::kInvalidCase;
+  double ball_similarity = 0.0;   // always computed (but for kOtherGoal / kInvalidCase)
+  int teammates = 0;              // the case's teammates
+  int conditions = 0;             // sim_opp; computed for candidates only
+  int band = 3;                   // 0 = H, 1 = h, 2 = l, 3 = L
+  Correspondence correspondence;  // from the cost test on (for kTooFar: the explanation)
+  PathCheck path;                 // for kPathBlocked: the blocker
+  int rank = -1;                  // 0 = retrieved; -1 when rejected
+};
+
+struct RetrievalResult {
+  std::optional<int> retrieved;             // index into the cases passed in
+  std::vector<CaseEvaluation> evaluations;  // one per case, in the cases' order
+  std::vector<int> ranking;                 // candidate case indices, best first
+  CaseBallPath ball_path;                   // of the retrieved case
+
+  const CaseEvaluation* Best() const {
+    return retrieved ? &evaluations[static_cast<std::size_t>(*retrieved)] : nullptr;
+  }
+};
+
+// The similarity band of sec. 3.4: 0 (H) for sim >= band_lower[0], ..., 3 (L) below band_lower[2].
+int SimilarityBand(double similarity, const RetrievalParams& params);
+
+// Algorithm 1 with its explanation; `index` is stored as case_index.
+CaseEvaluation EvaluateCase(const Problem& problem, const Case& c, int index,
+                            const RetrievalParams& params);
+
+// Whether candidate a ranks before candidate b (sec. 3.4, in the order of params.order).
+bool RanksBefore(const CaseEvaluation& a, const CaseEvaluation& b, const RetrievalParams& params);
+
+// Algorithm 2. `cases` should be the case base's cases for problem.defending. The overload with
+// `out` reuses its vectors' capacity (no allocation once warm).
+RetrievalResult Retrieve(std::span<const Case> cases, const Problem& problem,
+                         const RetrievalParams& params);
+void Retrieve(std::span<const Case> cases, const Problem& problem, const RetrievalParams& params,
+              RetrievalResult* out);
+
+// One line on why `e` was rejected or where it ranked, naming robots by id and opponents by
+// their index in the problem ("path blocked: opponent 1 at (0.5, 0.02) on trajectory 0 (pass
+// 2 -> 3), mu 0.99 > 0.368").
+std::string Explain(const CaseEvaluation& e, const Case& c, const Problem& problem,
+                    const RetrievalParams& params);
+
+}  // namespace foresight

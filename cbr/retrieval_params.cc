@@ -1,0 +1,167 @@
+#include "cbr/retrieval_params.h"
+
+#include <algorithm>
+
+#include "common/checks.h"
+#include "common/enum_names.h"
+#include "common/error.h"
+#include "common/geometry.h"
+#include "common/json_reader.h"
+#include "models/kick_model.h"
+
+namespace foresight {
+namespace {
+
+constexpr EnumNames<CostFunction, 3> kCostNames{{{
+    {CostFunction::kSum, "sum"},
+    {CostFunction::kMax, "max"},
+    {CostFunction::kMaxThenSum, "max_then_sum"},
+}}};
+
+constexpr EnumNames<RankCriterion, 3> kCriterionNames{{{
+    {RankCriterion::kConditions, "conditions"},
+    {RankCriterion::kTeammates, "teammates"},
+    {RankCriterion::kBandThenCost, "band_then_cost"},
+}}};
+
+constexpr EnumNames<TrajectoryWidths, 2> kWidthNames{{{
+    {TrajectoryWidths::kData, "data"},
+    {TrajectoryWidths::kKickModel, "kick_model"},
+}}};
+
+void ValidateKick(const std::string& at, const KickTrajectory& k) {
+  if (k.kick.empty()) throw InputError(at + "kick: must not be empty");
+  RequirePositive(at + "r_min_m", k.r_min_m);
+  RequirePositive(at + "r_max_m", k.r_max_m);
+  RequireNonNegative(at + "reach_m", k.reach_m);
+  RequireInRange(at + "sigma_direction_deg", k.sigma_direction_rad * kRadToDeg, 0.0, 45.0);
+}
+
+KickTrajectory ReadKick(const JsonObject& item, std::string name) {
+  item.RejectUnknownKeys({"kick", "r_min_m", "r_max_m", "reach_m", "sigma_direction_deg"});
+  KickTrajectory k;
+  k.kick = std::move(name);
+  k.r_min_m = item.Number("r_min_m");
+  k.r_max_m = item.Number("r_max_m");
+  k.reach_m = item.NumberOr("reach_m", 0.0);
+  k.sigma_direction_rad = item.NumberOr("sigma_direction_deg", 0.0) * kDegToRad;
+  return k;
+}
+
+}  // namespace
+
+std::string_view CostFunctionName(CostFunction cost) {
+  return kCostNames.Name(cost);
+}
+std::string_view RankCriterionName(RankCriterion criterion) {
+  return kCriterionNames.Name(criterion);
+}
+std::string_view TrajectoryWidthsName(TrajectoryWidths widths) {
+  return kWidthNames.Name(widths);
+}
+
+const KickTrajectory& RetrievalParams::TrajectoryFor(std::string_view kick) const {
+  for (const KickTrajectory& k : kicks) {
+    if (k.kick == kick) return k;
+  }
+  return default_kick;
+}
+
+void RetrievalParams::Validate() const {
+  RequireInRange("thr_ball", thr_ball, 1e-9, 1.0);
+  RequirePositive("thr_cost_m", thr_cost_m);
+  RequireInRange("thr_trajectory", thr_trajectory, 1e-9, 1.0);
+  RequireInRange("thr_opponent", thr_opponent, 1e-9, 1.0);
+  RequireInRange("bands.H", band_lower[0], 0.0, 1.0);
+  RequireInRange("bands.h", band_lower[1], 0.0, band_lower[0]);
+  RequireInRange("bands.l", band_lower[2], 0.0, band_lower[1]);
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (order[i] == order[j]) {
+        throw InputError("order: must name each of " + kCriterionNames.List() + " once, got " +
+                         std::string(RankCriterionName(order[i])) + " twice");
+      }
+    }
+  }
+  RequirePositive("goal_x_m", goal_x_m);
+  RequireInRange("width_sigmas", width_sigmas, 0.0, 5.0);
+  RequireNonNegative("opponent_radius_m", opponent_radius_m);
+  RequireNonNegative("ball_radius_m", ball_radius_m);
+  ValidateKick("default_kick.", default_kick);
+  for (std::size_t i = 0; i < kicks.size(); ++i) {
+    const std::string at = "kicks[" + std::to_string(i) + "].";
+    ValidateKick(at, kicks[i]);
+    for (std::size_t j = 0; j < i; ++j) {
+      if (kicks[j].kick == kicks[i].kick) {
+        throw InputError(at + "kick: \"" + kicks[i].kick + "\" appears twice");
+      }
+    }
+  }
+}
+
+void UseKickModelWidths(const KickModel& model, RetrievalParams* params) {
+  for (const KickSpec& spec : model.kicks) {
+    auto it = std::find_if(params->kicks.begin(), params->kicks.end(),
+                           [&](const KickTrajectory& k) { return k.kick == spec.name; });
+    if (it == params->kicks.end()) {
+      KickTrajectory k = params->default_kick;
+      k.kick = spec.name;
+      params->kicks.push_back(k);
+      it = params->kicks.end() - 1;
+    }
+    it->sigma_direction_rad = spec.sigma_direction_rad;
+  }
+  params->widths = TrajectoryWidths::kKickModel;
+}
+
+RetrievalParams LoadRetrievalParams(const std::filesystem::path& file) {
+  JsonDocument doc = JsonDocument::Load(file);
+  JsonObject root = doc.Root();
+  root.RejectUnknownKeys({"thr_ball", "thr_cost_m", "thr_trajectory", "thr_opponent", "bands",
+                          "cost", "order", "goal_x_m", "widths", "width_sigmas",
+                          "opponent_radius_m", "ball_radius_m", "default_kick", "kicks"});
+  RetrievalParams p;
+  p.thr_ball = root.Number("thr_ball");
+  p.thr_cost_m = root.Number("thr_cost_m");
+  p.thr_trajectory = root.Number("thr_trajectory");
+  p.thr_opponent = root.Number("thr_opponent");
+  JsonObject bands = root.Object("bands");
+  bands.RejectUnknownKeys({"H", "h", "l"});
+  p.band_lower = {bands.Number("H"), bands.Number("h"), bands.Number("l")};
+  const std::string cost = root.String("cost");
+  if (auto parsed = kCostNames.Parse(cost)) {
+    p.cost = *parsed;
+  } else {
+    root.Fail("cost", "must be one of " + kCostNames.List() + ", got \"" + cost + "\"");
+  }
+  const std::vector<std::string> order = root.StringArray("order");
+  if (order.size() != p.order.size()) {
+    root.Fail("order", "must list " + kCriterionNames.List() + " in some order, got " +
+                           std::to_string(order.size()) + " items");
+  }
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    auto parsed = kCriterionNames.Parse(order[i]);
+    if (!parsed) {
+      root.Fail("order", "items must be " + kCriterionNames.List() + ", got \"" + order[i] + "\"");
+    }
+    p.order[i] = *parsed;
+  }
+  p.goal_x_m = root.Number("goal_x_m");
+  const std::string widths = root.String("widths");
+  if (auto parsed = kWidthNames.Parse(widths)) {
+    p.widths = *parsed;
+  } else {
+    root.Fail("widths", "must be one of " + kWidthNames.List() + ", got \"" + widths + "\"");
+  }
+  p.width_sigmas = root.Number("width_sigmas");
+  p.opponent_radius_m = root.Number("opponent_radius_m");
+  p.ball_radius_m = root.Number("ball_radius_m");
+  p.default_kick = ReadKick(root.Object("default_kick"), "default");
+  for (const JsonObject& item : root.ObjectArray("kicks")) {
+    p.kicks.push_back(ReadKick(item, item.String("kick")));
+  }
+  WithFile(file.string(), [&] { p.Validate(); });
+  return p;
+}
+
+}  // namespace foresight

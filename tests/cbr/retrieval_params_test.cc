@@ -1,0 +1,102 @@
+// The retrieval parameters: the shipped file is the paper's defaults; bad values name their field.
+#include "cbr/retrieval_params.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/error.h"
+#include "common/geometry.h"
+#include "models/kick_model.h"
+#include "tests/support/temp_files.h"
+
+namespace foresight {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(RetrievalParamsTest, ShippedFileHoldsThePapersDefaults) {
+  const RetrievalParams p = LoadRetrievalParams(testing::ModelsDir() / "cbr/retrieval.json");
+  const RetrievalParams d;
+  EXPECT_DOUBLE_EQ(p.thr_ball, std::exp(-1.0));
+  EXPECT_DOUBLE_EQ(p.thr_ball, d.thr_ball);
+  EXPECT_DOUBLE_EQ(p.thr_cost_m, 1.5);
+  EXPECT_DOUBLE_EQ(p.thr_trajectory, d.thr_trajectory);
+  EXPECT_DOUBLE_EQ(p.thr_opponent, d.thr_opponent);
+  EXPECT_EQ(p.band_lower, (std::array<double, 3>{0.8, 0.6, 0.4}));
+  EXPECT_EQ(p.cost, CostFunction::kSum);
+  EXPECT_EQ(p.order, d.order);
+  EXPECT_EQ(p.order[0], RankCriterion::kConditions);
+  EXPECT_EQ(p.widths, TrajectoryWidths::kData);
+  EXPECT_DOUBLE_EQ(p.default_kick.r_min_m, 0.1);
+  EXPECT_DOUBLE_EQ(p.default_kick.r_max_m, 0.3);
+  EXPECT_DOUBLE_EQ(p.goal_x_m, 2.7);
+  EXPECT_NO_THROW(d.Validate());
+}
+
+std::string Json(const std::string& cost, const std::string& order) {
+  return R"({"thr_ball": 0.3, "thr_cost_m": 1.5, "thr_trajectory": 0.3, "thr_opponent": 0.3,
+    "bands": {"H": 0.8, "h": 0.6, "l": 0.4}, "cost": ")" +
+         cost + R"(", "order": )" + order +
+         R"(, "goal_x_m": 2.7, "widths": "data", "width_sigmas": 1, "opponent_radius_m": 0.1,
+    "ball_radius_m": 0.04, "default_kick": {"r_min_m": 0.1, "r_max_m": 0.3},
+    "kicks": [{"kick": "forward", "r_min_m": 0.05, "r_max_m": 0.4, "reach_m": 2}]})";
+}
+
+TEST(RetrievalParamsTest, ReadsCostOrderAndKicks) {
+  const auto file = testing::WriteTempFile(
+      "retrieval_ok.json",
+      Json("max_then_sum", R"(["band_then_cost", "teammates", "conditions"])"));
+  const RetrievalParams p = LoadRetrievalParams(file);
+  EXPECT_EQ(p.cost, CostFunction::kMaxThenSum);
+  EXPECT_EQ(p.order[0], RankCriterion::kBandThenCost);
+  EXPECT_EQ(p.order[2], RankCriterion::kConditions);
+  EXPECT_DOUBLE_EQ(p.TrajectoryFor("forward").r_max_m, 0.4);
+  EXPECT_DOUBLE_EQ(p.TrajectoryFor("forward").reach_m, 2.0);
+  EXPECT_DOUBLE_EQ(p.TrajectoryFor("other").r_max_m, 0.3);
+}
+
+TEST(RetrievalParamsTest, BadValuesNameFileAndField) {
+  const auto bad_cost = testing::WriteTempFile(
+      "retrieval_bad_cost.json", Json("mean", R"(["conditions", "teammates", "band_then_cost"])"));
+  try {
+    LoadRetrievalParams(bad_cost);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("retrieval_bad_cost.json: cost: must be one of sum, max"));
+  }
+  const auto twice = testing::WriteTempFile(
+      "retrieval_twice.json", Json("sum", R"(["conditions", "conditions", "band_then_cost"])"));
+  try {
+    LoadRetrievalParams(twice);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("retrieval_twice.json: order: "));
+    EXPECT_THAT(e.what(), HasSubstr("conditions twice"));
+  }
+  RetrievalParams p;
+  p.band_lower = {0.6, 0.8, 0.4};
+  EXPECT_THROW(p.Validate(), InputError);
+  p = RetrievalParams{};
+  p.default_kick.r_min_m = 0.0;
+  EXPECT_THROW(p.Validate(), InputError);
+}
+
+TEST(RetrievalParamsTest, KickModelWidthsTakeEachKicksDirectionNoise) {
+  KickModel model;
+  model.kicks.push_back({"forward", 0.5, 0.1, 0.0, 7.0 * kDegToRad});
+  model.kicks.push_back({"side", 0.5, 0.1, 1.5, 4.0 * kDegToRad});
+  RetrievalParams p;
+  p.kicks.push_back({"forward", 0.2, 0.5, 0.0, 0.0});
+  UseKickModelWidths(model, &p);
+  EXPECT_EQ(p.widths, TrajectoryWidths::kKickModel);
+  ASSERT_EQ(p.kicks.size(), 2u);
+  EXPECT_DOUBLE_EQ(p.TrajectoryFor("forward").sigma_direction_rad, 7.0 * kDegToRad);
+  EXPECT_DOUBLE_EQ(p.TrajectoryFor("forward").r_min_m, 0.2);  // kept
+  EXPECT_DOUBLE_EQ(p.TrajectoryFor("side").sigma_direction_rad, 4.0 * kDegToRad);
+  EXPECT_NO_THROW(p.Validate());
+}
+
+}  // namespace
+}  // namespace foresight
