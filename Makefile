@@ -6,7 +6,9 @@ JOBS ?= $(shell nproc)
 SITUATION ?= models/situations/near_goal_corner.json
 STRATEGY ?= optimal_all
 
-.PHONY: setup build test main demo experiments experiments-quick bench sanitize clean
+FUZZ_RUNS ?= 20000
+
+.PHONY: setup build test main demo experiments experiments-quick bench sanitize fuzz clean
 
 setup:
 	@bash scripts/setup.sh
@@ -58,11 +60,23 @@ experiments-quick: build
 bench: build
 	@$(BUILD)/bench/planner_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
-# AddressSanitizer + UndefinedBehaviorSanitizer build of everything, then the tests.
+# AddressSanitizer + UndefinedBehaviorSanitizer build of everything, then the tests and two real
+# runs (a small fidelity report and the strategies experiment).
 sanitize: setup
 	@cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DFORESIGHT_SANITIZE=ON -DFORESIGHT_BUILD_BENCH=OFF >/dev/null
 	@cmake --build build-asan -j $(JOBS)
 	@ctest --test-dir build-asan --output-on-failure -j $(JOBS)
+	@build-asan/app/foresight fidelity --situations quick --trials 4 --converged 200 --out build-asan/sanitize-fidelity >/dev/null
+	@build-asan/app/foresight experiment strategies --starts 50 --out build-asan/sanitize-strategies >/dev/null
+	@echo "sanitize: tests, fidelity --situations quick and experiment strategies ran clean"
+
+# libFuzzer targets for every reader (fuzz/), built with clang, AddressSanitizer and UBSan, each
+# run for FUZZ_RUNS inputs from the seed corpus in models/ with a fixed libFuzzer seed (so a run
+# is reproducible); a finding fails and leaves its input in build-fuzz/findings/.
+fuzz: setup
+	@CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFORESIGHT_FUZZ=ON -DFORESIGHT_BUILD_TESTS=OFF -DFORESIGHT_BUILD_BENCH=OFF >/dev/null
+	@cmake --build build-fuzz -j $(JOBS)
+	@bash scripts/run_fuzzers.sh build-fuzz $(FUZZ_RUNS)
 
 clean:
-	@rm -rf $(BUILD) build-asan out
+	@rm -rf $(BUILD) build-asan build-fuzz out

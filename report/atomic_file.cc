@@ -7,6 +7,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "report/signal_guard.h"
 
 namespace foresight {
 namespace {
@@ -55,6 +56,7 @@ void WriteRegularFile(const std::filesystem::path& shown, const std::filesystem:
 }  // namespace
 
 void WriteFileAtomically(const std::filesystem::path& file, std::string_view content) {
+  const SignalGuard hold_signals;  // a temporary file never outlives an interrupted run
   if (file == kStandardOutput) return WriteStream(std::cout, "standard output", content);
   std::error_code ec;
   // A symbolic link stays a link: the file it points to is replaced, atomically.

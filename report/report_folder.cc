@@ -11,6 +11,7 @@
 
 #include "common/error.h"
 #include "report/atomic_file.h"
+#include "report/signal_guard.h"
 
 namespace foresight {
 namespace fs = std::filesystem;
@@ -97,6 +98,7 @@ void WriteReportFolder(const fs::path& dir, std::span<const ReportFile> files,
                        std::string_view flag) {
   const fs::path normal = Normal(dir, flag);
   CheckReportFolder(normal, flag);
+  const SignalGuard hold_signals;  // the temporary folder never outlives an interrupted run
   std::error_code ec;
   fs::create_directories(ParentOf(normal), ec);
   if (ec) Refuse(flag, dir, "cannot create its parent folder: " + ec.message());

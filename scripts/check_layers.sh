@@ -27,6 +27,7 @@ declare -A may_use=(
 # Test helpers may use every library; benchmarks every library but the command line.
 may_use[support]="common models stats report planner physics"
 may_use[bench]="common models stats report planner physics validation experiments cbr match support"
+may_use[fuzz]="common models stats report planner physics validation experiments cbr match"
 
 # third-party include prefix -> the only folders allowed to include it (regex on the header path)
 declare -A private_to=(

@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libbullet-dev libbullet-extras-dev liburdfdom-dev libassimp-dev
   librsvg2-bin
+  clang libclang-rt-14-dev
 )
 
 missing=()

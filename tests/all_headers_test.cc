@@ -88,6 +88,7 @@
 #include "report/field_svg.h"
 #include "report/html_report.h"
 #include "report/report_folder.h"
+#include "report/signal_guard.h"
 #include "report/provenance.h"
 #include "report/report_format.h"
 #include "report/svg_writer.h"

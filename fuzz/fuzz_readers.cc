@@ -1,0 +1,143 @@
+// libFuzzer targets for every reader of the project (issue 16): each binary feeds its input, as a
+// file, to one loader. The promise under test is the project's error policy: bad input ends in an
+// InputError (a one-line message, exit 2 in the command) and nothing else. Any other exception
+// escapes and libFuzzer reports it (uncaught exception), as it reports crashes, hangs, leaks and
+// AddressSanitizer/UBSan findings. One binary holds every reader; the environment variable
+// FORESIGHT_FUZZ_TARGET chooses the one a run fuzzes (scripts/run_fuzzers.sh sets it).
+//
+// Readers and their seed corpora (fuzz/CMakeLists.txt): situation, field, kicks, evaluation,
+// physics, robot (robot.json), motion (kick motion), urdf, mesh (OBJ referenced by a fixed URDF),
+// fidelity_set, check_spec, stability, strategies, observed_kicks (CSV), case, problem,
+// case_base (settings file), retrieval.
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <string>
+
+#include "cbr/case_base.h"
+#include "cbr/case_file.h"
+#include "cbr/problem.h"
+#include "cbr/retrieval_params.h"
+#include "common/error.h"
+#include "experiments/experiment_params.h"
+#include "models/evaluation_params.h"
+#include "models/field_spec.h"
+#include "models/kick_model.h"
+#include "models/kick_motion.h"
+#include "models/model_paths.h"
+#include "models/physics_params.h"
+#include "models/robot_model.h"
+#include "models/robot_spec.h"
+#include "models/situation.h"
+#include "validation/fidelity_set.h"
+#include "validation/observed_kicks.h"
+#include "validation/physics_checks.h"
+
+namespace foresight {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path& WorkDir() {
+  static const fs::path dir = [] {
+    const fs::path d = fs::temp_directory_path() / ("foresight_fuzz." + std::to_string(::getpid()));
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+fs::path Write(const std::string& name, const uint8_t* data, std::size_t size) {
+  const fs::path file = WorkDir() / name;
+  std::ofstream(file, std::ios::binary | std::ios::trunc)
+      .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  return file;
+}
+
+// A URDF with one box link and one mesh link whose mesh is the fuzzed OBJ.
+fs::path MeshUrdf() {
+  const fs::path urdf = WorkDir() / "mesh_robot.urdf";
+  std::ofstream(urdf) << R"(<?xml version="1.0"?>
+<robot name="fuzz">
+  <link name="base"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
+  <link name="part"><inertial><mass value="0.1"/><inertia ixx="0.001" iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><geometry><mesh filename="input.obj"/></geometry></collision></link>
+  <joint name="j" type="revolute"><parent link="base"/><child link="part"/><axis xyz="0 0 1"/>
+    <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+</robot>)";
+  return urdf;
+}
+
+using Reader = std::function<void(const uint8_t*, std::size_t)>;
+
+const std::map<std::string, Reader>& Readers() {
+  static const fs::path models = DefaultModelsDir();
+  static const std::map<std::string, Reader> readers = {
+      {"situation", [](auto d, auto n) { LoadSituation(Write("s.json", d, n), models); }},
+      {"field", [](auto d, auto n) { LoadFieldSpec(Write("f.json", d, n)); }},
+      {"kicks", [](auto d, auto n) { LoadKickModel(Write("k.json", d, n)); }},
+      {"evaluation", [](auto d, auto n) { LoadEvaluationParams(Write("e.json", d, n)); }},
+      {"physics", [](auto d, auto n) { LoadPhysicsParams(Write("p.json", d, n)); }},
+      {"robot", [](auto d, auto n) { LoadRobotSpec(Write("robot.json", d, n)); }},
+      {"motion", [](auto d, auto n) { LoadKickMotion(Write("m.json", d, n)); }},
+      {"urdf", [](auto d, auto n) { LoadRobotModel(Write("r.urdf", d, n)); }},
+      {"mesh",
+       [](auto d, auto n) {
+         Write("input.obj", d, n);
+         LoadRobotModel(MeshUrdf());
+       }},
+      {"fidelity_set",
+       [](auto d, auto n) { LoadFidelitySet(Write("set.json", d, n).string(), models); }},
+      {"check_spec", [](auto d, auto n) { LoadCheckSuite(Write("c.json", d, n)); }},
+      {"stability",
+       [](auto d, auto n) { LoadStabilityParams(Write("st.json", d, n).string(), models); }},
+      {"strategies",
+       [](auto d, auto n) { LoadStrategiesParams(Write("sg.json", d, n).string(), models); }},
+      {"observed_kicks", [](auto d, auto n) { ReadObservedKicks(Write("o.csv", d, n), 0.27); }},
+      {"case",
+       [](auto d, auto n) {
+         static const CaseRules rules = LoadCaseBase(DefaultCaseBasePath(models), models).rules;
+         LoadCaseFile(Write("case.json", d, n), rules);
+       }},
+      {"problem", [](auto d, auto n) { LoadProblem(Write("problem.json", d, n), models); }},
+      {"case_base", [](auto d, auto n) { LoadCaseBase(Write("case_base.json", d, n), models); }},
+      {"retrieval", [](auto d, auto n) { LoadRetrievalParams(Write("retrieval.json", d, n)); }},
+  };
+  return readers;
+}
+
+const Reader* chosen = nullptr;
+
+}  // namespace
+}  // namespace foresight
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  const char* name = std::getenv("FORESIGHT_FUZZ_TARGET");
+  const auto& readers = foresight::Readers();
+  const auto it = readers.find(name == nullptr ? "" : name);
+  if (it == readers.end()) {
+    std::fprintf(stderr, "set FORESIGHT_FUZZ_TARGET to one of:");
+    for (const auto& [reader, unused] : readers) std::fprintf(stderr, " %s", reader.c_str());
+    std::fprintf(stderr, "\n");
+    std::exit(2);
+  }
+  foresight::chosen = &it->second;
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
+  try {
+    (*foresight::chosen)(data, size);
+  } catch (const foresight::InputError&) {
+    // the promised outcome of bad input
+  }
+  return 0;
+}
