@@ -2,6 +2,11 @@
 // twice in one namespace with different contents is a compile error here, not a silent
 // one-definition-rule violation. scripts/check_layers.sh fails when a header is missing.
 #include "app/calibrate_command.h"
+#include "app/cbr_atlas.h"
+#include "app/cbr_command.h"
+#include "app/cbr_drawing.h"
+#include "app/cbr_own_problem.h"
+#include "app/cbr_retrieve_output.h"
 #include "app/check_command.h"
 #include "app/cli_values.h"
 #include "app/decide_command.h"
