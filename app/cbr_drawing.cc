@@ -213,7 +213,7 @@ std::string CaseSvg(const Case& c, const FieldSpec& field, const RetrievalParams
   }
   Ball(canvas, c.p_F_ball, 3.0);
   canvas.svg().Text(canvas.X(-field.CarpetHalfLength()), 15.0,
-                    c.name + "  (defending " + std::string(DefendingGoalName(c.defending)) + ")",
+                    c.name + " (defending " + std::string(DefendingGoalName(c.defending)) + ")",
                     "font-size:13px;font-weight:bold");
   if (!warning.empty()) {
     canvas.svg().Text(canvas.X(field.CarpetHalfLength()), 15.0, warning,
