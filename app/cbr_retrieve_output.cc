@@ -22,15 +22,15 @@ const char* BandName(int band) {
 }
 
 // Numbers in the JSON: rounded to 0.1 mm (or 1e-6 for similarities) so the bytes do not depend
-// on the last bit of a sum.
-double Round(double value, double step) {
-  return std::round(value / step) * step;
+// on the last bit of a sum; dividing by the power of ten gives the shortest form ("1.45").
+double Round(double value, double per_unit) {
+  return std::round(value * per_unit) / per_unit;
 }
 double Metres(double value) {
-  return Round(value, 1e-4);
+  return Round(value, 1e4);
 }
 double Unit(double value) {
-  return Round(value, 1e-6);
+  return Round(value, 1e6);
 }
 
 nlohmann::ordered_json Point(const Vec2& p) {
@@ -177,7 +177,7 @@ nlohmann::ordered_json CbrRetrieveJson(const CbrRetrieveRun& run) {
     problem["teammates"].push_back({{"id", t.id},
                                     {"x_m", Metres(t.pose.p_F.x())},
                                     {"y_m", Metres(t.pose.p_F.y())},
-                                    {"theta_deg", Round(t.pose.theta_rad * kRadToDeg, 1e-3)}});
+                                    {"theta_deg", Round(t.pose.theta_rad * kRadToDeg, 1e3)}});
   }
   problem["opponents"] = nlohmann::ordered_json::array();
   for (const Vec2& o : p.opponents) problem["opponents"].push_back(Point(o));
