@@ -69,6 +69,7 @@ TEST_F(CbrCommandTest, ExampleProblemsRetrieveWhatTheirNotesSay) {
       EXPECT_THAT(notes, HasSubstr("nothing is retrieved"));
       EXPECT_THAT(r.out, HasSubstr("retrieved: none (no case fits the problem)"));
       EXPECT_THAT(r.out, HasSubstr("candidates: 0"));
+      EXPECT_THAT(r.out, HasSubstr("rejected: ball_out_of_scope 67 path_blocked 1\n"));
     } else {
       EXPECT_THAT(notes, ::testing::AnyOf(::testing::ContainsRegex("Retrieves " + e.retrieved +
                                                                    "[:( ]"),
