@@ -145,7 +145,7 @@ TEST_F(CbrCommandTest, SvgDrawsScopesAdaptedPositionsAndTrapezoids) {
 TEST_F(CbrCommandTest, BadProblemFileIsOneLineExitTwoAndNoFileLeft) {
   Write("bad.json", R"({"defending": "cyan", "ball": {"x_m": 9.0, "y_m": 0.0},
     "teammates": [{"id": 1, "x_m": 0.0, "y_m": 0.0, "theta_deg": 0}]})");
-  for (const std::string& file : {"bad.json", "missing.json"}) {
+  for (const char* file : {"bad.json", "missing.json"}) {
     SCOPED_TRACE(file);
     const RunResult r = Cbr({"retrieve", "--problem", file, "--svg", "out.svg"});
     EXPECT_EQ(r.exit_code, 2);
