@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "app/cbr_drawing.h"
-#include "app/cbr_own_problem.h"
 #include "app/report_text.h"
+#include "cbr/own_situation.h"
 #include "report/html_report.h"
 
 namespace foresight {

@@ -5,10 +5,10 @@
 
 #include "app/cbr_atlas.h"
 #include "app/cbr_drawing.h"
-#include "app/cbr_own_problem.h"
 #include "app/cbr_retrieve_output.h"
 #include "app/cli_values.h"
 #include "app/report_text.h"
+#include "cbr/own_situation.h"
 #include "cbr/case_base.h"
 #include "cbr/problem.h"
 #include "cbr/retrieval.h"

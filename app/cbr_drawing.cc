@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "app/cbr_own_problem.h"
 #include "app/report_text.h"
+#include "cbr/own_situation.h"
 #include "cbr/free_path.h"
 #include "cbr/similarity.h"
 #include "report/field_svg.h"

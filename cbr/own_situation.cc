@@ -1,4 +1,4 @@
-#include "app/cbr_own_problem.h"
+#include "cbr/own_situation.h"
 
 #include <vector>
 

@@ -1,7 +1,8 @@
 // A case played in the situation it was written for: its own problem (ball, goal, teammates
 // facing the attacked goal, opponents where the case puts them) and the free-path test there
 // (Ros et al. 2009, sec. 3.3.1). A case whose own opponent stands on its ball path is never
-// retrieved by a problem that looks exactly like it; `cbr check` and `cbr atlas` report such cases.
+// retrieved by a problem that looks exactly like it (`foresight cbr check` fails on such cases,
+// `cbr atlas` marks them).
 #pragma once
 
 #include "cbr/case.h"
