@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/calibrate_command.h"
+#include "app/cbr_command.h"
 #include "app/check_command.h"
 #include "app/decide_command.h"
 #include "app/experiment_command.h"
@@ -63,6 +64,8 @@ int main(int argc, char** argv) {
   foresight::AddFidelityCommand(app, fidelity);
   foresight::ExperimentOptions experiment;
   foresight::AddExperimentCommand(app, experiment);
+  foresight::CbrOptions cbr;
+  foresight::AddCbrCommand(app, cbr);
 
   try {
     app.parse(argc, argv);
@@ -84,6 +87,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("experiment")) {
       return foresight::RunExperimentCommand(app, experiment, models_dir);
     }
+    if (app.got_subcommand("cbr")) return foresight::RunCbrCommand(cbr, models_dir);
     if (app.got_subcommand("fidelity")) {
       return foresight::RunFidelityCommand(fidelity, models_dir);
     }

@@ -30,6 +30,9 @@ figure svg { max-width: 100%; height: auto; display: block; }
 figcaption { font-size: 13px; color: #444444; margin-top: 4px; max-width: 80ch; }
 .figrow { display: flex; flex-wrap: wrap; gap: 16px; align-items: flex-start; }
 .figrow figure { margin: 0.4em 0; }
+.figgrid { display: grid; gap: 14px 16px; align-items: start; }
+.figgrid figure { margin: 0; min-width: 0; }
+.figgrid figcaption { max-width: none; }
 )";
 
 // "0.78", "-3", "1.2e-3", "12 %", "0.78 m/s", "[0.71, 0.85]", "~4": a number first and at most a
@@ -151,6 +154,15 @@ void HtmlReport::Figure(std::string_view svg_document, std::string_view caption)
 void HtmlReport::FigureRow(
     const std::vector<std::pair<std::string, std::string>>& svgs_and_captions) {
   body_ += "<div class=\"figrow\">\n";
+  for (const auto& [svg, caption] : svgs_and_captions) body_ += FigureHtml(svg, caption);
+  body_ += "</div>\n";
+}
+
+void HtmlReport::FigureGrid(
+    const std::vector<std::pair<std::string, std::string>>& svgs_and_captions,
+    int min_column_px) {
+  body_ += "<div class=\"figgrid\" style=\"grid-template-columns: repeat(auto-fill, minmax(" +
+           std::to_string(std::max(min_column_px, 1)) + "px, 1fr))\">\n";
   for (const auto& [svg, caption] : svgs_and_captions) body_ += FigureHtml(svg, caption);
   body_ += "</div>\n";
 }

@@ -25,6 +25,10 @@ class HtmlReport {
   void Figure(std::string_view svg_document, std::string_view caption);
   // Several figures side by side (they wrap on narrow screens).
   void FigureRow(const std::vector<std::pair<std::string, std::string>>& svgs_and_captions);
+  // Figures in a grid of equal columns at least `min_column_px` wide (as many as fit); long
+  // captions wrap inside their column instead of widening it.
+  void FigureGrid(const std::vector<std::pair<std::string, std::string>>& svgs_and_captions,
+                  int min_column_px);
 
   std::string Finish() const;  // the whole document, "<!DOCTYPE html>" first
 

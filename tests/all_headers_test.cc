@@ -2,6 +2,10 @@
 // twice in one namespace with different contents is a compile error here, not a silent
 // one-definition-rule violation. scripts/check_layers.sh fails when a header is missing.
 #include "app/calibrate_command.h"
+#include "app/cbr_atlas.h"
+#include "app/cbr_command.h"
+#include "app/cbr_drawing.h"
+#include "app/cbr_retrieve_output.h"
 #include "app/check_command.h"
 #include "app/cli_values.h"
 #include "app/decide_command.h"
@@ -19,6 +23,7 @@
 #include "cbr/case_file.h"
 #include "cbr/correspondence.h"
 #include "cbr/free_path.h"
+#include "cbr/own_situation.h"
 #include "cbr/gameplay_rules.h"
 #include "cbr/problem.h"
 #include "cbr/retrieval.h"

@@ -94,6 +94,15 @@ TEST(HtmlReportTest, PageIsSelfContainedWithInlineFigures) {
   ExpectBalanced(html);
 }
 
+TEST(HtmlReportTest, FigureGridWrapsFiguresInColumns) {
+  HtmlReport report("Grid");
+  report.FigureGrid({{SampleSvg(), "a"}, {SampleSvg(), "b & c"}}, 300);
+  const std::string html = report.Finish();
+  EXPECT_EQ(Count(html, "<figure>"), 2);
+  EXPECT_NE(html.find("minmax(300px, 1fr)"), std::string::npos);
+  EXPECT_NE(html.find("<figcaption>b &amp; c</figcaption>"), std::string::npos);
+}
+
 TEST(HtmlReportTest, NumericCellsAreRightAligned) {
   HtmlReport report("t");
   report.Table({"quantity", "value"}, {{"launch speed", "0.78"},

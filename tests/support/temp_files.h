@@ -2,6 +2,8 @@
 // above theirs): the shipped data folder and per-test temporary files.
 #pragma once
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -13,9 +15,12 @@ inline std::filesystem::path ModelsDir() {
   return FORESIGHT_TEST_MODELS_DIR;
 }
 
-// Writes `text` to a fresh file in a per-test temporary folder and returns its path.
+// Writes `text` to a fresh file in a per-test temporary folder and returns its path. The folder
+// is per process: ctest runs every test in its own process, in parallel and possibly from other
+// checkouts at the same time, and two tests writing "case.json" to one folder race.
 inline std::filesystem::path WriteTempFile(const std::string& name, const std::string& text) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "foresight_tests";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "foresight_tests" /
+                                    ("pid" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::filesystem::path file = dir / name;
   std::ofstream(file) << text;

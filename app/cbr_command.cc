@@ -1,0 +1,171 @@
+#include "app/cbr_command.h"
+
+#include <filesystem>
+#include <iostream>
+
+#include "app/cbr_atlas.h"
+#include "app/cbr_drawing.h"
+#include "app/cbr_retrieve_output.h"
+#include "app/cli_values.h"
+#include "app/report_text.h"
+#include "cbr/own_situation.h"
+#include "cbr/case_base.h"
+#include "cbr/problem.h"
+#include "cbr/retrieval.h"
+#include "cbr/retrieval_params.h"
+#include "common/error.h"
+#include "models/model_paths.h"
+#include "report/atomic_file.h"
+
+namespace foresight {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path ModelsDir(const std::string& models_dir) {
+  return models_dir.empty() ? DefaultModelsDir() : fs::path(models_dir);
+}
+
+fs::path CaseBasePath(const CbrOptions& o, const fs::path& models) {
+  return o.case_base.empty() ? DefaultCaseBasePath(models) : fs::path(o.case_base);
+}
+
+fs::path ParamsPath(const CbrOptions& o, const fs::path& models) {
+  return o.params_file.empty() ? models / "cbr" / "retrieval.json" : fs::path(o.params_file);
+}
+
+void Print(const std::string& text) {
+  std::cout << text << std::flush;
+  if (!std::cout) throw InputError("cannot write to standard output");
+}
+
+int RunRetrieve(const CbrOptions& o, const fs::path& models) {
+  CbrRetrieveRun run;
+  run.problem_file = o.problem_file;
+  run.case_base_path = CaseBasePath(o, models);
+  run.params_file = ParamsPath(o, models);
+  run.models_dir = models;
+  run.problem = LoadProblem(run.problem_file, models);
+  const LoadedCaseBase base = LoadCaseBase(run.case_base_path, models);
+  run.base = &base;
+  run.params = LoadRetrievalParams(run.params_file);
+  run.cases = base.cases.Defending(run.problem.defending);
+  run.result = Retrieve(run.cases, run.problem, run.params);
+  // Everything is made before anything is written, so a failure leaves no file behind.
+  const std::string printed =
+      o.json ? CbrRetrieveJson(run).dump(2, ' ', false,
+                                         nlohmann::ordered_json::error_handler_t::replace) +
+                   "\n"
+             : CbrRetrieveText(run, o.verbose);
+  if (!o.svg_file.empty()) WriteFileAtomically(o.svg_file, CbrRetrieveSvg(run, base.rules.field));
+  Print(printed);
+  return 0;
+}
+
+int RunCheck(const CbrOptions& o, const fs::path& models) {
+  const fs::path path = CaseBasePath(o, models);
+  const LoadedCaseBase base = LoadCaseBase(path, models);
+  const CaseBase& cases = base.cases;
+  std::string s = "case base: " + DisplayPath(path, models) + "\n";
+  s += Format("hand-written cases: %zu\n", cases.HandWrittenCount());
+  s += Format("stored cases: %zu (%zu defending cyan, %zu defending yellow)\n", cases.size(),
+              cases.Defending(DefendingGoal::kCyan).size(),
+              cases.Defending(DefendingGoal::kYellow).size());
+  // The attacking side of the field: x from -0.9 m to the goal line for a team defending cyan,
+  // mirrored for yellow (the shipped cases' region, models/cases/README.md).
+  const double half = base.rules.field.HalfLength();
+  s += Format("ball scope coverage, x in [-0.9, %.1f] m towards the attacked goal: %.1f %% "
+              "(cyan), %.1f %% (yellow)\n",
+              half, 100.0 * BallScopeCoverage(base, DefendingGoal::kCyan, -0.9, half, 0.05),
+              100.0 * BallScopeCoverage(base, DefendingGoal::kYellow, -half, 0.9, 0.05));
+  // Overlaps are legal (the copy only costs retrieval time, cbr/case_base.h): warnings only.
+  const std::vector<std::string> warnings = CheckCaseBase(cases);
+  for (const std::string& w : warnings) s += "warning: " + w + "\n";
+  s += Format("overlapping stored cases: %zu\n", warnings.size());
+  // A case whose own opponent is on its own ball path is dead data: it is never retrieved in the
+  // situation it was written for. That fails the check.
+  const RetrievalParams params = LoadRetrievalParams(ParamsPath(o, models));
+  int blocked = 0;
+  for (const DefendingGoal goal : {DefendingGoal::kCyan, DefendingGoal::kYellow}) {
+    for (const Case& c : cases.Defending(goal)) {
+      if (c.transform != CaseTransform::kOriginal) continue;
+      const PathCheck own = OwnPathCheck(c, params);
+      if (own.free) continue;
+      ++blocked;
+      const CaseOpponent& opp = c.opponents[static_cast<std::size_t>(own.opponent)];
+      s += Format("error: case %s: its own opponent %d at (%.2f, %.2f) is on its ball path "
+                  "(trajectory %d, mu %.3f > thr_t %.3f): not retrieved where it was written "
+                  "for\n",
+                  c.name.c_str(), opp.id, opp.p_F.x(), opp.p_F.y(), own.trajectory,
+                  own.membership, params.thr_trajectory);
+    }
+  }
+  s += Format("cases blocked by their own opponents: %d of %zu\n", blocked,
+              cases.HandWrittenCount());
+  s += blocked == 0 ? "case base OK\n" : "case base FAILED\n";
+  Print(s);
+  return blocked == 0 ? 0 : 1;
+}
+
+int RunAtlas(const CbrOptions& o, const fs::path& models) {
+  CheckReportDir(o.out_dir, "--out");  // before the work, not after
+  CbrAtlasInput input;
+  input.case_base_path = CaseBasePath(o, models);
+  input.params_file = ParamsPath(o, models);
+  input.models_dir = models;
+  const LoadedCaseBase base = LoadCaseBase(input.case_base_path, models);
+  input.base = &base;
+  input.params = LoadRetrievalParams(input.params_file);
+  const std::string html = CbrAtlasHtml(input);
+  const fs::path page = fs::path(o.out_dir) / "atlas.html";
+  WriteReportFiles(o.out_dir, "--out", {{page, html}});
+  Print(Format("atlas of %zu hand-written cases (%zu stored): ", base.cases.HandWrittenCount(),
+               base.cases.size()) +
+        page.string() + "\n");
+  return 0;
+}
+
+}  // namespace
+
+void AddCbrCommand(CLI::App& app, CbrOptions& options) {
+  CLI::App* cbr = app.add_subcommand(
+      "cbr", "Case-based coordinated action selection (Ros et al. 2009): retrieve, check, atlas");
+  cbr->require_subcommand(1);
+  const auto add_base = [&](CLI::App* cmd) {
+    cmd->add_option("--case-base", options.case_base,
+                    "Case base folder or settings file (default: MODELS/cases)");
+  };
+  options.retrieve = cbr->add_subcommand("retrieve", "Retrieve the case for a problem file");
+  options.retrieve->add_option("--problem", options.problem_file, "Problem file (JSON)")
+      ->required();
+  add_base(options.retrieve);
+  options.retrieve->add_option("--params", options.params_file,
+                               "Retrieval parameters (default: MODELS/cbr/retrieval.json)");
+  options.retrieve->add_flag("--json", options.json, "Print everything as JSON instead of text");
+  options.retrieve->add_flag("--verbose", options.verbose,
+                             "Also print why each rejected case was rejected");
+  options.retrieve->add_option("--svg", options.svg_file,
+                               "Draw the problem, the retrieved case and its ball path");
+  options.check = cbr->add_subcommand("check", "Load and validate a case base (CI)");
+  add_base(options.check);
+  options.check->add_option("--params", options.params_file,
+                            "Retrieval parameters for the free-path test (default: "
+                            "MODELS/cbr/retrieval.json)");
+  options.atlas = cbr->add_subcommand("atlas", "Draw every hand-written case on one HTML page");
+  options.atlas->add_option("--out", options.out_dir, "Output folder (replaced whole)")->required();
+  add_base(options.atlas);
+  options.atlas->add_option("--params", options.params_file,
+                            "Retrieval parameters for the ball paths (default: "
+                            "MODELS/cbr/retrieval.json)");
+}
+
+int RunCbrCommand(const CbrOptions& options, const std::string& models_dir) {
+  const fs::path models = ModelsDir(models_dir);
+  if (options.retrieve->parsed()) return RunRetrieve(options, models);
+  if (options.check->parsed()) return RunCheck(options, models);
+  if (options.atlas->parsed()) return RunAtlas(options, models);
+  throw InputError("cbr: a subcommand is required (retrieve, check or atlas)");
+}
+
+}  // namespace foresight

@@ -1,0 +1,30 @@
+// `foresight cbr`: case-based coordinated action selection (Ros et al. 2009) on the command line.
+//   cbr retrieve: the case retrieved for a problem file, with the ranking and every rejection;
+//   cbr check:    loads and validates a case base, prints its counts and overlap warnings;
+//   cbr atlas:    an HTML page drawing every hand-written case.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace foresight {
+
+struct CbrOptions {
+  std::string problem_file;
+  std::string case_base;    // folder or settings file; empty: MODELS/cases
+  std::string params_file;  // empty: MODELS/cbr/retrieval.json
+  bool json = false;
+  bool verbose = false;
+  std::string svg_file;
+  std::string out_dir;
+  CLI::App* retrieve = nullptr;
+  CLI::App* check = nullptr;
+  CLI::App* atlas = nullptr;
+};
+
+void AddCbrCommand(CLI::App& app, CbrOptions& options);
+
+// Runs the chosen subcommand; bad input throws InputError. Returns the exit code.
+int RunCbrCommand(const CbrOptions& options, const std::string& models_dir);
+
+}  // namespace foresight

@@ -1,0 +1,226 @@
+// `foresight cbr` run as a process: retrieve on the shipped example problems (each retrieves what
+// its notes say), the JSON contract (parses, same bytes twice), bad input (one line, exit 2, no
+// file left), check on the shipped case base and on small ones, and the atlas folder.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "tests/app/run_foresight.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using foresight::testing::CountOf;
+using foresight::testing::ForesightRun;
+using foresight::testing::ReadFile;
+using foresight::testing::RunResult;
+using ::testing::HasSubstr;
+using ::testing::Not;
+using ::testing::StartsWith;
+
+fs::path ShippedProblem(const std::string& name) {
+  return fs::path(FORESIGHT_TEST_MODELS_DIR) / "cbr" / "problems" / (name + ".json");
+}
+
+fs::path ShippedCase(const std::string& name) {
+  return fs::path(FORESIGHT_TEST_MODELS_DIR) / "cases" / (name + ".json");
+}
+
+struct Example {
+  std::string problem;
+  std::string retrieved;  // empty: nothing
+};
+
+class CbrCommandTest : public ForesightRun {
+ protected:
+  RunResult Cbr(std::vector<std::string> args) const {
+    args.insert(args.begin(), "cbr");
+    return Run(args);
+  }
+  // A settings file in the working folder listing `cases` of the shipped base.
+  fs::path SmallBase(const std::vector<std::string>& cases) const {
+    nlohmann::json j = {{"field", "four_legged"},
+                        {"kicks", "aibo_ers7"},
+                        {"kick_mirrors", {{"head_kick_left", "head_kick_right"}}},
+                        {"cases", nlohmann::json::array()}};
+    for (const std::string& c : cases) j["cases"].push_back(ShippedCase(c).string());
+    return Write("base.json", j.dump());
+  }
+};
+
+const std::vector<Example> kExamples{{"open_pass", "front_pass"},
+                                     {"blocked_pass", "front_pass_dg"},
+                                     {"defended_pass", "front_pass_dg"},
+                                     {"nothing_retrieved", ""}};
+
+TEST_F(CbrCommandTest, ExampleProblemsRetrieveWhatTheirNotesSay) {
+  for (const Example& e : kExamples) {
+    SCOPED_TRACE(e.problem);
+    const nlohmann::json problem = nlohmann::json::parse(ReadFile(ShippedProblem(e.problem)));
+    const std::string notes = problem.at("notes").get<std::string>();
+    const RunResult r = Cbr({"retrieve", "--problem", ShippedProblem(e.problem).string()});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    if (e.retrieved.empty()) {
+      EXPECT_THAT(notes, HasSubstr("nothing is retrieved"));
+      EXPECT_THAT(r.out, HasSubstr("retrieved: none (no case fits the problem)"));
+      EXPECT_THAT(r.out, HasSubstr("candidates: 0"));
+      EXPECT_THAT(r.out, HasSubstr("rejected: ball_out_of_scope 67 path_blocked 1\n"));
+    } else {
+      EXPECT_THAT(notes, ::testing::AnyOf(::testing::ContainsRegex("Retrieves " + e.retrieved +
+                                                                   "[:( ]"),
+                                          HasSubstr(e.retrieved + ", the pass to the left wing, "
+                                                                  "is retrieved")));
+      EXPECT_THAT(notes, HasSubstr(e.retrieved));
+      EXPECT_THAT(r.out, HasSubstr("retrieved: " + e.retrieved + " (original of " + e.retrieved));
+      EXPECT_THAT(r.out, HasSubstr("correspondence (problem robot -> case teammate"));
+      EXPECT_THAT(r.out, HasSubstr("ball path:"));
+    }
+  }
+}
+
+TEST_F(CbrCommandTest, BlockedPassRejectsTheOpenPassCaseAndSaysWhy) {
+  const RunResult r =
+      Cbr({"retrieve", "--problem", ShippedProblem("blocked_pass").string(), "--verbose"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("path_blocked 1"));
+  EXPECT_THAT(r.out, HasSubstr("case front_pass: path blocked: opponent 0 at (1.5, -0.05)"));
+}
+
+TEST_F(CbrCommandTest, JsonIsTheWholeResultAndTheSameBytesTwice) {
+  const std::vector<std::string> args{"retrieve", "--problem",
+                                      ShippedProblem("defended_pass").string(), "--json"};
+  const RunResult a = Cbr(args), b = Cbr(args);
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  EXPECT_EQ(a.out, b.out);
+  const nlohmann::json j = nlohmann::json::parse(a.out);
+  EXPECT_EQ(j.at("command"), "cbr retrieve");
+  EXPECT_EQ(j.at("case_base"), "cases");
+  EXPECT_EQ(j.at("cases"), 68);
+  const nlohmann::json& r = j.at("retrieved");
+  EXPECT_EQ(r.at("name"), "front_pass_dg");
+  EXPECT_EQ(r.at("band"), "H");
+  EXPECT_EQ(r.at("conditions"), 1);
+  ASSERT_EQ(r.at("correspondence").size(), 2u);
+  EXPECT_EQ(r.at("correspondence")[0].at("robot"), 1);
+  EXPECT_EQ(r.at("conditions_met").size(), 1u);
+  ASSERT_EQ(r.at("ball_path").size(), 2u);
+  EXPECT_EQ(r.at("ball_path")[0].at("action"), "pass");
+  EXPECT_EQ(r.at("ball_path")[0].at("receiver"), 2);
+  EXPECT_EQ(j.at("candidates")[0].at("name"), "front_pass_dg");
+  EXPECT_EQ(j.at("candidates")[0].at("rank"), 1);
+  int rejected = 0;
+  for (const auto& [verdict, n] : j.at("rejections").items()) rejected += n.get<int>();
+  EXPECT_EQ(rejected, static_cast<int>(j.at("rejected").size()));
+  EXPECT_EQ(rejected + static_cast<int>(j.at("candidates").size()), 68);
+  for (const nlohmann::json& x : j.at("rejected")) {
+    EXPECT_THAT(x.at("explanation").get<std::string>(),
+                StartsWith("case " + x.at("name").get<std::string>() + ": "));
+  }
+}
+
+TEST_F(CbrCommandTest, NothingRetrievedIsNullInJsonAndSaidInTheDrawing) {
+  const RunResult r = Cbr({"retrieve", "--problem", ShippedProblem("nothing_retrieved").string(),
+                           "--json", "--svg", "none.svg"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(nlohmann::json::parse(r.out).at("retrieved").is_null());
+  EXPECT_THAT(ReadFile(work() / "none.svg"), HasSubstr("no case retrieved"));
+}
+
+TEST_F(CbrCommandTest, SvgDrawsScopesAdaptedPositionsAndTrapezoids) {
+  const RunResult r =
+      Cbr({"retrieve", "--problem", ShippedProblem("defended_pass").string(), "--svg", "r.svg"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string svg = ReadFile(work() / "r.svg");
+  EXPECT_THAT(svg, StartsWith("<?xml"));
+  EXPECT_THAT(svg, HasSubstr("front_pass_dg"));
+  EXPECT_EQ(CountOf(svg, " A "), 2 * 3);  // ball scope and two opponent scopes, two arcs each
+  EXPECT_EQ(CountOf(svg, "fill:#ffe066"), 2 + 1);  // two trapezoids and the legend's swatch
+}
+
+TEST_F(CbrCommandTest, BadProblemFileIsOneLineExitTwoAndNoFileLeft) {
+  Write("bad.json", R"({"defending": "cyan", "ball": {"x_m": 9.0, "y_m": 0.0},
+    "teammates": [{"id": 1, "x_m": 0.0, "y_m": 0.0, "theta_deg": 0}]})");
+  for (const char* file : {"bad.json", "missing.json"}) {
+    SCOPED_TRACE(file);
+    const RunResult r = Cbr({"retrieve", "--problem", file, "--svg", "out.svg"});
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_EQ(r.out, "");
+    EXPECT_THAT(r.err, StartsWith("foresight: error: "));
+    EXPECT_THAT(r.err, HasSubstr(file));
+    EXPECT_EQ(CountOf(r.err, "\n"), 1);
+    EXPECT_EQ(Listing(), (std::set<std::string>{"bad.json"}));
+  }
+}
+
+TEST_F(CbrCommandTest, CheckOnTheShippedBaseCountsAndReportsSelfBlockedCases) {
+  const RunResult r = Cbr({"check"});
+  EXPECT_EQ(r.err, "");
+  EXPECT_THAT(r.out, HasSubstr("hand-written cases: 34\n"));
+  EXPECT_THAT(r.out, HasSubstr("stored cases: 136 (68 defending cyan, 68 defending yellow)\n"));
+  EXPECT_THAT(r.out, HasSubstr("overlapping stored cases: 0\n"));
+  // Known state of the shipped data (docs in README, foresight cbr): the "dg" cases put the
+  // goalie on their own kick at the goal's centre, so they fail their own free-path test.
+  EXPECT_THAT(r.out, HasSubstr("cases blocked by their own opponents: 13 of 34\n"));
+  EXPECT_THAT(r.out, HasSubstr("error: case front_pass_dg: its own opponent 2 at (2.45, 0.00)"));
+  EXPECT_EQ(r.exit_code, 1);
+}
+
+TEST_F(CbrCommandTest, CheckPassesOnCasesThatAreFreeAndWarnsOfOverlaps) {
+  const RunResult ok = Cbr({"check", "--case-base", SmallBase({"front_pass", "center_2d"}).string()});
+  EXPECT_EQ(ok.exit_code, 0) << ok.out << ok.err;
+  EXPECT_THAT(ok.out, HasSubstr("hand-written cases: 2\n"));
+  EXPECT_THAT(ok.out, HasSubstr("case base OK\n"));
+
+  // A case symmetric in y: its mirror_y copy is the same case (a warning, not a failure).
+  std::string text = ReadFile(ShippedCase("center_individual"));
+  const nlohmann::json c = nlohmann::json::parse(text);
+  nlohmann::json sym = c;
+  sym["name"] = "symmetric";
+  sym["ball"]["y_m"] = 0.0;
+  for (auto& t : sym["teammates"]) t["y_m"] = 0.0;
+  Write("symmetric.json", sym.dump());
+  nlohmann::json base = nlohmann::json::parse(ReadFile(SmallBase({})));
+  base["cases"] = {(work() / "symmetric.json").string()};
+  Write("sym_base.json", base.dump());
+  const RunResult warn = Cbr({"check", "--case-base", (work() / "sym_base.json").string()});
+  EXPECT_EQ(warn.exit_code, 0) << warn.out << warn.err;
+  EXPECT_THAT(warn.out, HasSubstr("warning: "));
+  EXPECT_THAT(warn.out, Not(HasSubstr("overlapping stored cases: 0")));
+}
+
+TEST_F(CbrCommandTest, CheckOfABrokenCaseBaseIsOneLineExitTwo) {
+  Write("broken.json", "{\"name\": \"broken\",");
+  nlohmann::json base = nlohmann::json::parse(ReadFile(SmallBase({})));
+  base["cases"] = {(work() / "broken.json").string()};
+  Write("base2.json", base.dump());
+  const RunResult r = Cbr({"check", "--case-base", (work() / "base2.json").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_THAT(r.err, StartsWith("foresight: error: "));
+  EXPECT_THAT(r.err, HasSubstr("broken.json"));
+  EXPECT_EQ(CountOf(r.err, "\n"), 1);
+}
+
+TEST_F(CbrCommandTest, AtlasWritesOneSelfContainedPage) {
+  const RunResult r = Cbr({"atlas", "--out", "atlas"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("atlas of 34 hand-written cases (136 stored)"));
+  const std::string html = ReadFile(work() / "atlas" / "atlas.html");
+  EXPECT_THAT(html, StartsWith("<!DOCTYPE html>"));
+  EXPECT_EQ(CountOf(html, "<figure>"), 34);
+  // (find, not HasSubstr: a failure would print the whole page)
+  EXPECT_NE(html.find(">front_pass_dg (defending cyan)</text>"), std::string::npos);
+  EXPECT_NE(html.find("/mirror_y (cyan), /mirror_x, /mirror_xy (yellow)"), std::string::npos);
+  EXPECT_NE(html.find("13 of 34 cases are not retrieved"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  const RunResult again = Cbr({"atlas", "--out", "atlas"});  // its own folder is replaced
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(ReadFile(work() / "atlas" / "atlas.html"), html);
+}
+
+}  // namespace
