@@ -19,6 +19,7 @@
 #include "cbr/case_base.h"
 #include "cbr/case_file.h"
 #include "cbr/correspondence.h"
+#include "cbr/coverage.h"
 #include "cbr/free_path.h"
 #include "cbr/gameplay_rules.h"
 #include "cbr/problem.h"
