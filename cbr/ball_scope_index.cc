@@ -46,13 +46,13 @@ BallScopeIndex::BallScopeIndex(std::span<const Case> cases, double thr_ball)
   }
   std::nth_element(sides.begin(), sides.begin() + static_cast<std::ptrdiff_t>(sides.size() / 2),
                    sides.end());
-  cell_m_ = std::max(0.05, sides[sides.size() / 2]);
+  cell_m_ = std::max(0.01, 0.5 * sides[sides.size() / 2]);
   if (!std::isfinite(cell_m_) || !std::isfinite(all.x_max - all.x_min) ||
       !std::isfinite(all.y_max - all.y_min)) {
     throw InputError("BallScopeIndex: a case's ball or scope is not finite");
   }
-  // At most 4096 cells a side (a wide case base gets coarser cells).
-  cell_m_ = std::max({cell_m_, (all.x_max - all.x_min) / 4096.0, (all.y_max - all.y_min) / 4096.0});
+  // At most 2048 cells a side (a wide case base gets coarser cells).
+  cell_m_ = std::max({cell_m_, (all.x_max - all.x_min) / 2048.0, (all.y_max - all.y_min) / 2048.0});
   x0_ = all.x_min;
   y0_ = all.y_min;
   nx_ = std::max(1, static_cast<int>(std::ceil((all.x_max - all.x_min) / cell_m_)));

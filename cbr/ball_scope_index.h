@@ -11,8 +11,9 @@
 // kBallOutOfScope by EvaluateCase (tests/cbr/ball_scope_index_test.cc checks this on random
 // problems).
 //
-// Cell size: the median box side (at least 0.05 m), so a case sits in about four cells and a
-// query touches one cell. Built once from a span of cases (for one defending goal) and thr_b;
+// Cell size: half the median box side (at least 0.01 m, at most 2048 cells a side), so a case
+// sits in about nine cells and a query reads one cell's list: about (1.5 side)^2 / side^2 = 2.3
+// times the cases whose box holds the ball, against 4 times with cells of a whole side. Built once from a span of cases (for one defending goal) and thr_b;
 // the index keeps only case indices, so it stays valid as long as the cases' order and ball
 // scopes do not change. Balls off the grid return the cells at its edge (clamped), so every
 // query is still a superset.

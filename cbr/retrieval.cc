@@ -51,37 +51,41 @@ int SimilarityBand(double similarity, const RetrievalParams& params) {
   return 3;
 }
 
-CaseEvaluation EvaluateCase(const Problem& problem, const Case& c, int index,
-                            const RetrievalParams& params) {
-  CaseEvaluation e;
+namespace {
+
+// Algorithm 1 into `out`, a default-constructed evaluation (retrieval builds it in place in the
+// result's vector: no copy of the evaluation per case).
+void Evaluate(const Problem& problem, const Case& c, int index, const RetrievalParams& params,
+              CaseEvaluation* out) {
+  CaseEvaluation& e = *out;
   e.case_index = index;
   e.teammates = static_cast<int>(c.teammates.size());
   if (c.defending != problem.defending) {
     e.verdict = Verdict::kOtherGoal;
-    return e;
+    return;
   }
   if (c.teammates.empty() || c.teammates.size() > static_cast<std::size_t>(kMaxTeammates)) {
     e.verdict = Verdict::kInvalidCase;
-    return e;
+    return;
   }
   if (problem.teammates.size() > static_cast<std::size_t>(kMaxTeammates)) {
     e.verdict = Verdict::kInvalidProblem;
-    return e;
+    return;
   }
   e.ball_similarity = BallSimilarity(problem, c);
   e.band = SimilarityBand(e.ball_similarity, params);
   if (!(e.ball_similarity > params.thr_ball)) {
     e.verdict = Verdict::kBallOutOfScope;
-    return e;
+    return;
   }
   if (c.teammates.size() > problem.teammates.size()) {
     e.verdict = Verdict::kTooFewTeammates;
-    return e;
+    return;
   }
   e.correspondence = FindCorrespondence(problem, c, params.cost, params.thr_cost_m);
   if (!e.correspondence.feasible) {
     e.verdict = Verdict::kTooFar;
-    return e;
+    return;
   }
   const CaseBallPath path =
       BuildBallPath(problem, c,
@@ -91,10 +95,18 @@ CaseEvaluation EvaluateCase(const Problem& problem, const Case& c, int index,
   e.path = CheckFreePath(path, problem.opponents, params.thr_trajectory);
   if (!e.path.free) {
     e.verdict = Verdict::kPathBlocked;
-    return e;
+    return;
   }
   e.conditions = OpponentSimilarity(problem, c, params.thr_opponent);
   e.verdict = Verdict::kCandidate;
+}
+
+}  // namespace
+
+CaseEvaluation EvaluateCase(const Problem& problem, const Case& c, int index,
+                            const RetrievalParams& params) {
+  CaseEvaluation e;
+  Evaluate(problem, c, index, params, &e);
   return e;
 }
 
@@ -168,7 +180,7 @@ void Retrieve(std::span<const Case> cases, const Problem& problem, const Retriev
               RetrievalResult* out) {
   Reset(out, true);
   for (std::size_t i = 0; i < cases.size(); ++i) {
-    out->evaluations.push_back(EvaluateCase(problem, cases[i], static_cast<int>(i), params));
+    Evaluate(problem, cases[i], static_cast<int>(i), params, &out->evaluations.emplace_back());
     if (out->evaluations.back().verdict == Verdict::kCandidate) {
       out->ranking.push_back(static_cast<int>(i));
     }
@@ -187,7 +199,7 @@ void Retrieve(std::span<const Case> cases, const BallScopeIndex& index, const Pr
   }
   Reset(out, false);
   for (const std::uint32_t i : index.Query(problem.p_F_ball)) {
-    out->evaluations.push_back(EvaluateCase(problem, cases[i], static_cast<int>(i), params));
+    Evaluate(problem, cases[i], static_cast<int>(i), params, &out->evaluations.emplace_back());
     if (out->evaluations.back().verdict == Verdict::kCandidate) {
       out->ranking.push_back(static_cast<int>(i));
     }

@@ -92,6 +92,11 @@ TEST(BallScopeIndexTest, RetrievalWithTheIndexEqualsRetrievalWithoutOnSyntheticC
   const std::vector<Case> cases =
       SyntheticCases(base.cases.Defending(DefendingGoal::kCyan), base.kick_mirrors, spec);
   EXPECT_GT(CompareOnRandomProblems(cases, DefendingGoal::kCyan, 300, 8), 100);
+  // Small scopes (as bench/cbr_bench.cc's scaled case bases): cells of a few centimetres.
+  spec.scope_scale = std::sqrt(68.0 / spec.count);
+  const std::vector<Case> small =
+      SyntheticCases(base.cases.Defending(DefendingGoal::kCyan), base.kick_mirrors, spec);
+  CompareOnRandomProblems(small, DefendingGoal::kCyan, 300, 10);
 }
 
 TEST(BallScopeIndexTest, AQueryHoldsEveryCaseWhoseScopeContainsTheBall) {
