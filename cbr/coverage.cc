@@ -85,6 +85,15 @@ AttackCoverage MeasureAttackCoverage(const LoadedCaseBase& base, DefendingGoal g
         ++cov.retrieved;
         cov.cooperative +=
             cases[static_cast<std::size_t>(*result.retrieved)].teammates.size() >= 2 ? 1 : 0;
+      } else {
+        const bool any_blocked =
+            std::any_of(result.evaluations.begin(), result.evaluations.end(),
+                        [](const CaseEvaluation& e) { return e.verdict == Verdict::kPathBlocked; });
+        const bool any_far =
+            std::any_of(result.evaluations.begin(), result.evaluations.end(),
+                        [](const CaseEvaluation& e) { return e.verdict == Verdict::kTooFar; });
+        cov.blocked += any_blocked ? 1 : 0;
+        cov.too_far += !any_blocked && any_far ? 1 : 0;
       }
     }
     if (cov.samples > 0) {

@@ -16,7 +16,8 @@
 // Counted per situation: in_scope, at least one case passes the ball filter (sim_B > thr_b,
 // the rough figure BallScopeCoverage gives on a grid); retrieved, at least one case is a
 // candidate (Algorithm 1), which is exactly when one is retrieved (Algorithm 2); cooperative,
-// the retrieved case has two teammates (a pass).
+// the retrieved case has two teammates (a pass); too_far and blocked split in_scope - retrieved
+// by the deepest test a case reached.
 #pragma once
 
 #include <cstdint>
@@ -49,6 +50,9 @@ struct RegionCoverage {
   int in_scope = 0;
   int retrieved = 0;
   int cooperative = 0;
+  // In scope but nothing retrieved: the deepest test any case reached failed there.
+  int too_far = 0;  // no case passed the cost test (thr_c)
+  int blocked = 0;  // some case passed it, but every such case's ball path was blocked
 };
 
 struct AttackCoverage {

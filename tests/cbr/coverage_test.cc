@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "tests/support/temp_files.h"
 
 namespace foresight {
@@ -26,6 +28,11 @@ TEST(CoverageTest, TheShippedCaseBaseRetrievesForMostAttacks) {
     EXPECT_LE(r.retrieved, r.in_scope);
     EXPECT_LE(r.cooperative, r.retrieved);
     EXPECT_GE(r.retrieved, 0.57 * r.samples);  // the weakest region, side, retrieves 0.593
+    EXPECT_LE(r.retrieved + r.too_far + r.blocked, r.in_scope);
+    std::printf("%-10s in scope %.3f retrieved %.3f pass %.3f too far %.3f blocked %.3f\n",
+                r.name.c_str(), 1.0 * r.in_scope / r.samples, 1.0 * r.retrieved / r.samples,
+                1.0 * r.cooperative / r.samples, 1.0 * r.too_far / r.samples,
+                1.0 * r.blocked / r.samples);
   }
   // The same situations mirrored for the other goal retrieve the mirrored cases.
   const AttackCoverage yellow =
