@@ -1,7 +1,8 @@
 // Speed of case retrieval (issue 13 targets, one core: <= 10 us for the 136 cases and a
 // 2-teammate, 2-opponent problem; sub-linear with the ball-scope index, <= 100 us at 100,000
 // cases). Run (docs/PERFORMANCE.md):
-//   taskset -c 1 build/bench/cbr_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//   taskset -c 1 build/bench/cbr_bench --benchmark_repetitions=5
+//   --benchmark_report_aggregates_only=true
 // BM_Retrieve136: a synthetic case base of solo shots and passes with 0-2 opponent scopes, their
 // balls spread so that `near` of them pass the ball filter and go on to correspondence and free
 // path (136: the worst case), and a 4-teammate, 3-opponent problem.
@@ -248,8 +249,8 @@ void BM_Synthetic(benchmark::State& state) {
   // few scopes as with the shipped cases (3 on average for these attacks); 0: the shipped
   // scopes, so a ball lies in about 4% of all the cases (420 of 10,000) whatever the index.
   if (state.range(2) != 0) spec.scope_scale = std::sqrt(68.0 / spec.count);
-  const std::vector<Case> cases = SyntheticCases(Shipped().cases.Defending(DefendingGoal::kCyan),
-                                                 Shipped().kick_mirrors, spec);
+  const std::vector<Case> cases =
+      SyntheticCases(Shipped().cases.Defending(DefendingGoal::kCyan), Shipped().kick_mirrors, spec);
   const bool indexed = state.range(1) != 0;
   const RetrievalParams params;
   const BallScopeIndex index(cases, params.thr_ball);

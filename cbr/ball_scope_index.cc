@@ -34,8 +34,7 @@ BallScopeIndex::BallScopeIndex(std::span<const Case> cases, double thr_ball)
   for (const Case& c : cases) {
     const double rx = k * std::abs(c.ball_scope.tau_x_m) + 1e-12;
     const double ry = k * std::abs(c.ball_scope.tau_y_m) + 1e-12;
-    const Box b{c.p_F_ball.x() - rx, c.p_F_ball.x() + rx, c.p_F_ball.y() - ry,
-                c.p_F_ball.y() + ry};
+    const Box b{c.p_F_ball.x() - rx, c.p_F_ball.x() + rx, c.p_F_ball.y() - ry, c.p_F_ball.y() + ry};
     boxes.push_back(b);
     sides.push_back(2.0 * rx);
     sides.push_back(2.0 * ry);

@@ -27,9 +27,9 @@ Vec2 InDisc(RandomStream& rng, double r, bool behind) {
 
 std::vector<AttackRegion> AttackRegions() {
   return {
-      {"back", -2.0, -0.7, 0.0, 1.2},       {"center", -0.7, 0.7, 0.0, 1.2},
-      {"side", -2.0, 0.7, 1.2, 1.6},        {"front", 0.7, 2.3, 0.0, 0.8},
-      {"front_side", 0.7, 2.3, 0.8, 1.6},   {"corner", 2.3, 2.6, 0.5, 1.6},
+      {"back", -2.0, -0.7, 0.0, 1.2},     {"center", -0.7, 0.7, 0.0, 1.2},
+      {"side", -2.0, 0.7, 1.2, 1.6},      {"front", 0.7, 2.3, 0.0, 0.8},
+      {"front_side", 0.7, 2.3, 0.8, 1.6}, {"corner", 2.3, 2.6, 0.5, 1.6},
   };
 }
 

@@ -5,8 +5,8 @@
 
 #include "cbr/similarity.h"
 #include "common/checks.h"
-#include "common/error.h"
 #include "common/enum_names.h"
+#include "common/error.h"
 
 namespace foresight {
 namespace {
@@ -170,9 +170,8 @@ const CaseEvaluation* RetrievalResult::Find(int case_index) const {
                ? &evaluations[static_cast<std::size_t>(case_index)]
                : nullptr;
   }
-  const auto it = std::lower_bound(
-      evaluations.begin(), evaluations.end(), case_index,
-      [](const CaseEvaluation& e, int i) { return e.case_index < i; });
+  const auto it = std::lower_bound(evaluations.begin(), evaluations.end(), case_index,
+                                   [](const CaseEvaluation& e, int i) { return e.case_index < i; });
   return it != evaluations.end() && it->case_index == case_index ? &*it : nullptr;
 }
 
@@ -185,17 +184,17 @@ void Retrieve(std::span<const Case> cases, const Problem& problem, const Retriev
       out->ranking.push_back(static_cast<int>(i));
     }
   }
-  Rank(cases, problem, params, [](int i) { return static_cast<std::size_t>(i); }, out);
+  Rank(
+      cases, problem, params, [](int i) { return static_cast<std::size_t>(i); }, out);
 }
 
 void Retrieve(std::span<const Case> cases, const BallScopeIndex& index, const Problem& problem,
               const RetrievalParams& params, RetrievalResult* out) {
   if (index.size() != cases.size() || index.thr_ball() != params.thr_ball) {
-    throw InputError("Retrieve: the ball-scope index was built for " +
-                     std::to_string(index.size()) + " cases and thr_b " +
-                     FormatNumber(index.thr_ball()) + ", not for these " +
-                     std::to_string(cases.size()) + " cases and thr_b " +
-                     FormatNumber(params.thr_ball));
+    throw InputError(
+        "Retrieve: the ball-scope index was built for " + std::to_string(index.size()) +
+        " cases and thr_b " + FormatNumber(index.thr_ball()) + ", not for these " +
+        std::to_string(cases.size()) + " cases and thr_b " + FormatNumber(params.thr_ball));
   }
   Reset(out, false);
   for (const std::uint32_t i : index.Query(problem.p_F_ball)) {
@@ -205,14 +204,15 @@ void Retrieve(std::span<const Case> cases, const BallScopeIndex& index, const Pr
     }
   }
   const auto& ev = out->evaluations;
-  Rank(cases, problem, params,
-       [&ev](int i) {
-         return static_cast<std::size_t>(
-             std::lower_bound(ev.begin(), ev.end(), i,
-                              [](const CaseEvaluation& e, int k) { return e.case_index < k; }) -
-             ev.begin());
-       },
-       out);
+  Rank(
+      cases, problem, params,
+      [&ev](int i) {
+        return static_cast<std::size_t>(
+            std::lower_bound(ev.begin(), ev.end(), i,
+                             [](const CaseEvaluation& e, int k) { return e.case_index < k; }) -
+            ev.begin());
+      },
+      out);
 }
 
 RetrievalResult Retrieve(std::span<const Case> cases, const BallScopeIndex& index,
@@ -223,8 +223,7 @@ RetrievalResult Retrieve(std::span<const Case> cases, const BallScopeIndex& inde
 }
 
 CaseEvaluation EvaluationOf(const RetrievalResult& r, std::span<const Case> cases,
-                            const Problem& problem, const RetrievalParams& params,
-                            int case_index) {
+                            const Problem& problem, const RetrievalParams& params, int case_index) {
   if (const CaseEvaluation* e = r.Find(case_index)) return *e;
   if (case_index < 0 || static_cast<std::size_t>(case_index) >= cases.size()) {
     throw InputError("EvaluationOf: case index " + std::to_string(case_index) + " out of range");

@@ -18,10 +18,12 @@ std::vector<Case> SyntheticCases(std::span<const Case> cases, const KickMirrors&
   out.reserve(static_cast<std::size_t>(spec.count));
   for (int i = 0; i < spec.count; ++i) {
     const Case& source = cases[static_cast<std::size_t>(i) % cases.size()];
-    Case c = rng.NextUniform() < 0.5 ? MirrorCase(source, CaseTransform::kMirrorY, mirrors) : source;
+    Case c =
+        rng.NextUniform() < 0.5 ? MirrorCase(source, CaseTransform::kMirrorY, mirrors) : source;
     c.name = source.name + "#" + std::to_string(i);
-    const Vec2 ball(uniform(-spec.half_length_m + spec.margin_m, spec.half_length_m - spec.margin_m),
-                    uniform(-spec.half_width_m + spec.margin_m, spec.half_width_m - spec.margin_m));
+    const Vec2 ball(
+        uniform(-spec.half_length_m + spec.margin_m, spec.half_length_m - spec.margin_m),
+        uniform(-spec.half_width_m + spec.margin_m, spec.half_width_m - spec.margin_m));
     const Vec2 shift = ball - c.p_F_ball;
     const auto jitter = [&] {
       return Vec2(uniform(-spec.jitter_m, spec.jitter_m), uniform(-spec.jitter_m, spec.jitter_m));

@@ -132,9 +132,9 @@ TEST(BallScopeIndexTest, AnIndexForOtherCasesOrThresholdsIsRefused) {
   Problem p;
   p.teammates = {{1, Pose2{{0.0, 0.0}, 0.0}}};
   EXPECT_THROW(Retrieve(cases, index, p, RetrievalParams{}), InputError);
-  EXPECT_THROW(Retrieve(cases.first(3), BallScopeIndex(cases, std::exp(-1.0)), p,
-                        RetrievalParams{}),
-               InputError);
+  EXPECT_THROW(
+      Retrieve(cases.first(3), BallScopeIndex(cases, std::exp(-1.0)), p, RetrievalParams{}),
+      InputError);
   EXPECT_THROW(BallScopeIndex(cases, 1.0), InputError);
   const BallScopeIndex empty(std::span<const Case>{}, 0.5);
   EXPECT_TRUE(empty.Query(Vec2(0.0, 0.0)).empty());

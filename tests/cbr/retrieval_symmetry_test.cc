@@ -34,7 +34,8 @@ Problem MirrorProblem(const Problem& p, CaseTransform t) {
   const Flip f = FlipOf(t);
   Problem q = p;
   if (f.x) {
-    q.defending = p.defending == DefendingGoal::kCyan ? DefendingGoal::kYellow : DefendingGoal::kCyan;
+    q.defending =
+        p.defending == DefendingGoal::kCyan ? DefendingGoal::kYellow : DefendingGoal::kCyan;
   }
   q.p_F_ball = f.Point(p.p_F_ball);
   for (ProblemTeammate& tm : q.teammates) {
@@ -123,9 +124,8 @@ class RetrievalSymmetryTest : public ::testing::Test {
     const Flip flip = FlipOf(t);
     for (std::size_t k = 0; k < d.teammates.size(); ++k) {
       EXPECT_EQ(d.teammates[k].actions.size(), expected.teammates[k].actions.size());
-      for (std::size_t n = 0; n < std::min(d.teammates[k].actions.size(),
-                                           expected.teammates[k].actions.size());
-           ++n) {
+      for (std::size_t n = 0;
+           n < std::min(d.teammates[k].actions.size(), expected.teammates[k].actions.size()); ++n) {
         const CaseAction& x = d.teammates[k].actions[n];
         const CaseAction& y = expected.teammates[k].actions[n];
         EXPECT_EQ(x.type, y.type);
@@ -134,8 +134,9 @@ class RetrievalSymmetryTest : public ::testing::Test {
         EXPECT_EQ(x.target_F, y.target_F);
       }
       // Adapted positions mirror; the same problem robots are matched.
-      EXPECT_TRUE((f.correspondence.adapted_F[k] - flip.Point(e.correspondence.adapted_F[k]))
-                      .norm() < kTol);
+      EXPECT_TRUE(
+          (f.correspondence.adapted_F[k] - flip.Point(e.correspondence.adapted_F[k])).norm() <
+          kTol);
       EXPECT_EQ(f.correspondence.problem_index[k], e.correspondence.problem_index[k]);
     }
     EXPECT_NEAR(f.ball_similarity, e.ball_similarity, kTol);
@@ -143,9 +144,9 @@ class RetrievalSymmetryTest : public ::testing::Test {
     EXPECT_EQ(f.conditions, e.conditions);
     EXPECT_EQ(b.ball_path.count, a.ball_path.count);
     for (int k = 0; k < std::min(a.ball_path.count, b.ball_path.count); ++k) {
-      EXPECT_TRUE((b.ball_path.trajectories[k].end_F -
-                   flip.Point(a.ball_path.trajectories[k].end_F))
-                      .norm() < kTol);
+      EXPECT_TRUE(
+          (b.ball_path.trajectories[k].end_F - flip.Point(a.ball_path.trajectories[k].end_F))
+              .norm() < kTol);
     }
     return true;
   }
