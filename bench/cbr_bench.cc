@@ -87,8 +87,9 @@ void BM_Retrieve136(benchmark::State& state) {
 }
 BENCHMARK(BM_Retrieve136)->Arg(10)->Arg(40)->Arg(136);
 
-// Random 2-vs-2 attacks for the team defending cyan (as cbr/coverage.h draws them): the ball
-// over x in [-2.0, 2.6], |y| <= 1.6; teammate 1 within 0.5 m behind it, teammate 2 within 1.5 m;
+// Random 2-vs-2 attacks for the team defending cyan (like cbr/coverage.h's): the ball over
+// x in [-2.0, 2.6], |y| <= 1.6; teammate 1 up to 0.5 m behind it, teammate 2 in a box of
+// +-1.5 x +-1.0 m around it;
 // a defender and a goalie in their DG home regions.
 std::vector<Problem> Attacks(int count) {
   RandomStream rng(StreamKey(13, 3));
@@ -96,13 +97,20 @@ std::vector<Problem> Attacks(int count) {
   const auto field = [](const Vec2& p) {
     return Vec2(std::clamp(p.x(), -2.7, 2.7), std::clamp(p.y(), -1.8, 1.8));
   };
+  const auto box = [&](double x_lo, double x_hi, double y_lo, double y_hi) {
+    const double x = u(x_lo, x_hi);  // x, then y: sequenced
+    return Vec2(x, u(y_lo, y_hi));
+  };
   std::vector<Problem> problems;
   for (int i = 0; i < count; ++i) {
     Problem p;
-    p.p_F_ball = Vec2(u(-2.0, 2.6), u(-1.6, 1.6));
-    p.teammates = {{1, Pose2{field(p.p_F_ball + Vec2(-u(0.0, 0.5), u(-0.3, 0.3))), 0.0}},
-                   {2, Pose2{field(p.p_F_ball + Vec2(u(-1.5, 1.5), u(-1.0, 1.0))), 0.0}}};
-    p.opponents = {Vec2(u(0.3, 2.0), u(-1.3, 1.3)), Vec2(u(2.05, 2.6), u(-0.65, 0.65))};
+    p.p_F_ball = box(-2.0, 2.6, -1.6, 1.6);
+    const Vec2 behind = box(-0.5, 0.0, -0.3, 0.3);
+    const Vec2 support = box(-1.5, 1.5, -1.0, 1.0);
+    p.teammates = {{1, Pose2{field(p.p_F_ball + behind), 0.0}},
+                   {2, Pose2{field(p.p_F_ball + support), 0.0}}};
+    const Vec2 defender = box(0.3, 2.0, -1.3, 1.3);
+    p.opponents = {defender, box(2.05, 2.6, -0.65, 0.65)};
     problems.push_back(std::move(p));
   }
   return problems;

@@ -18,7 +18,8 @@ double Uniform(RandomStream& rng, double lo, double hi) {
 // Uniform in the disc of radius r; with `behind`, only its half at x <= 0.
 Vec2 InDisc(RandomStream& rng, double r, bool behind) {
   for (;;) {
-    const Vec2 p(Uniform(rng, -r, behind ? 0.0 : r), Uniform(rng, -r, r));
+    const double x = Uniform(rng, -r, behind ? 0.0 : r);  // x, then y: a sequenced draw
+    const Vec2 p(x, Uniform(rng, -r, r));
     if (p.squaredNorm() <= r * r) return p;
   }
 }
@@ -35,7 +36,7 @@ std::vector<AttackRegion> AttackRegions() {
 
 AttackCoverage MeasureAttackCoverage(const LoadedCaseBase& base, DefendingGoal goal,
                                      const RetrievalParams& params, int samples_per_region,
-                                     std::uint64_t seed) {
+                                     std::uint64_t seed, const AttackSpec& spec) {
   const std::span<const Case> cases = base.cases.Defending(goal);
   const BallScopeIndex index(cases, params.thr_ball);
   const double half_length = base.rules.field.HalfLength();
@@ -48,7 +49,7 @@ AttackCoverage MeasureAttackCoverage(const LoadedCaseBase& base, DefendingGoal g
   const double limit = -std::log(params.thr_ball);
 
   AttackCoverage out;
-  const std::vector<AttackRegion> regions = AttackRegions();
+  const std::vector<AttackRegion>& regions = spec.regions;
   double area = 0.0;
   RetrievalResult result;
   for (std::size_t r = 0; r < regions.size(); ++r) {
@@ -60,12 +61,16 @@ AttackCoverage MeasureAttackCoverage(const LoadedCaseBase& base, DefendingGoal g
     for (int s = 0; s < samples_per_region; ++s) {
       // Drawn for cyan (attacking +x), then mirrored in x for yellow.
       const double wing = rng.NextUniform() < 0.5 ? -1.0 : 1.0;
-      const Vec2 ball(Uniform(rng, region.x_min_m, region.x_max_m),
-                      wing * Uniform(rng, region.abs_y_min_m, region.abs_y_max_m));
-      const Vec2 t1 = on_field(ball + InDisc(rng, 0.5, true));
-      const Vec2 t2 = on_field(ball + InDisc(rng, 1.5, false));
-      const Vec2 defender(Uniform(rng, 0.3, 2.0), Uniform(rng, -1.3, 1.3));
-      const Vec2 goalie(Uniform(rng, 2.05, 2.6), Uniform(rng, -0.65, 0.65));
+      const double ball_x = Uniform(rng, region.x_min_m, region.x_max_m);
+      const Vec2 ball(ball_x, wing * Uniform(rng, region.abs_y_min_m, region.abs_y_max_m));
+      const Vec2 t1 = on_field(ball + InDisc(rng, spec.behind_radius_m, true));
+      const Vec2 t2 = on_field(ball + InDisc(rng, spec.support_radius_m, false));
+      const auto in = [&](const HomeRegion& h) {
+        const double x = Uniform(rng, h.x_min_m, h.x_max_m);
+        return Vec2(x, Uniform(rng, h.y_min_m, h.y_max_m));
+      };
+      const Vec2 defender = in(spec.defender);
+      const Vec2 goalie = in(spec.goalie);
       const auto m = [&](const Vec2& p) { return Vec2(sign * p.x(), p.y()); };
       Problem p;
       p.defending = goal;

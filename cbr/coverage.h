@@ -43,6 +43,20 @@ struct AttackRegion {
 // |y| < 0.5 m, the goalie's).
 std::vector<AttackRegion> AttackRegions();
 
+// A box x in [x_min, x_max], y in [y_min, y_max] for the team defending cyan.
+struct HomeRegion {
+  double x_min_m = 0.0, x_max_m = 0.0, y_min_m = 0.0, y_max_m = 0.0;
+};
+
+// The random attacks: the assumptions listed at the top of this file, as data.
+struct AttackSpec {
+  std::vector<AttackRegion> regions = AttackRegions();
+  double behind_radius_m = 0.5;   // teammate 1: the half disc behind the ball
+  double support_radius_m = 1.5;  // teammate 2: the disc around the ball
+  HomeRegion defender{0.3, 2.0, -1.3, 1.3};
+  HomeRegion goalie{2.05, 2.6, -0.65, 0.65};
+};
+
 struct RegionCoverage {
   std::string name;
   double area_m2 = 0.0;
@@ -67,6 +81,6 @@ struct AttackCoverage {
 // (common/random.h), so the figures are reproducible.
 AttackCoverage MeasureAttackCoverage(const LoadedCaseBase& base, DefendingGoal goal,
                                      const RetrievalParams& params, int samples_per_region,
-                                     std::uint64_t seed);
+                                     std::uint64_t seed, const AttackSpec& spec = AttackSpec{});
 
 }  // namespace foresight

@@ -21,12 +21,15 @@ std::vector<Case> SyntheticCases(std::span<const Case> cases, const KickMirrors&
     Case c =
         rng.NextUniform() < 0.5 ? MirrorCase(source, CaseTransform::kMirrorY, mirrors) : source;
     c.name = source.name + "#" + std::to_string(i);
-    const Vec2 ball(
-        uniform(-spec.half_length_m + spec.margin_m, spec.half_length_m - spec.margin_m),
-        uniform(-spec.half_width_m + spec.margin_m, spec.half_width_m - spec.margin_m));
+    // x, then y: two sequenced draws (the order of a constructor's arguments is unspecified).
+    const double ball_x =
+        uniform(-spec.half_length_m + spec.margin_m, spec.half_length_m - spec.margin_m);
+    const Vec2 ball(ball_x,
+                    uniform(-spec.half_width_m + spec.margin_m, spec.half_width_m - spec.margin_m));
     const Vec2 shift = ball - c.p_F_ball;
     const auto jitter = [&] {
-      return Vec2(uniform(-spec.jitter_m, spec.jitter_m), uniform(-spec.jitter_m, spec.jitter_m));
+      const double x = uniform(-spec.jitter_m, spec.jitter_m);
+      return Vec2(x, uniform(-spec.jitter_m, spec.jitter_m));
     };
     c.p_F_ball = ball;
     c.ball_scope.tau_x_m *= spec.scope_scale;
