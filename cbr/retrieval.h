@@ -15,6 +15,10 @@
 // no teammates or more than kMaxTeammates is rejected as invalid, and so is every case for a
 // problem with more than kMaxTeammates teammates (the problem loader allows 1-4). Conditions are
 // computed for candidates only (they rank, never reject).
+//
+// Large case bases: Retrieve with a BallScopeIndex (cbr/ball_scope_index.h) evaluates only the
+// cases whose ball scope may hold the problem ball and returns the same retrieved case, ranking
+// and evaluations; the skipped cases' explanations come from EvaluationOf on request.
 #pragma once
 
 #include <optional>
