@@ -54,8 +54,21 @@ BallScopeIndex::BallScopeIndex(std::span<const Case> cases, double thr_ball)
   cell_m_ = std::max({cell_m_, (all.x_max - all.x_min) / 2048.0, (all.y_max - all.y_min) / 2048.0});
   x0_ = all.x_min;
   y0_ = all.y_min;
-  nx_ = std::max(1, static_cast<int>(std::ceil((all.x_max - all.x_min) / cell_m_)));
-  ny_ = std::max(1, static_cast<int>(std::ceil((all.y_max - all.y_min) / cell_m_)));
+  // Coarser cells while the boxes would fill more than 16 cells a case on average (a few huge
+  // scopes among small ones): memory stays O(cases).
+  for (;;) {
+    nx_ = std::max(1, static_cast<int>(std::ceil((all.x_max - all.x_min) / cell_m_)));
+    ny_ = std::max(1, static_cast<int>(std::ceil((all.y_max - all.y_min) / cell_m_)));
+    double entries = 0.0;
+    for (const Box& b : boxes) {
+      entries += (Cell(b.x_max, x0_, nx_) - Cell(b.x_min, x0_, nx_) + 1.0) *
+                 (Cell(b.y_max, y0_, ny_) - Cell(b.y_min, y0_, ny_) + 1.0);
+    }
+    if (entries <= 16.0 * static_cast<double>(boxes.size()) + 4096.0 || (nx_ == 1 && ny_ == 1)) {
+      break;
+    }
+    cell_m_ *= 2.0;
+  }
   const auto cell_x = [&](double x) { return Cell(x, x0_, nx_); };
   const auto cell_y = [&](double y) { return Cell(y, y0_, ny_); };
   // Two passes (count, then fill): compressed rows, each cell's cases ascending.

@@ -13,10 +13,11 @@
 //
 // Cell size: half the median box side (at least 0.01 m, at most 2048 cells a side), so a case
 // sits in about nine cells and a query reads one cell's list: about (1.5 side)^2 / side^2 = 2.3
-// times the cases whose box holds the ball, against 4 times with cells of a whole side. Built once
-// from a span of cases (for one defending goal) and thr_b; the index keeps only case indices, so it
-// stays valid as long as the cases' order and ball scopes do not change. Balls off the grid return
-// the cells at its edge (clamped), so every query is still a superset.
+// times the cases whose box holds the ball, against 4 times with cells of a whole side. Cells
+// double while the boxes would fill more than 16 cells a case on average (a few huge scopes). Built
+// once from a span of cases (for one defending goal) and thr_b; the index keeps only case indices,
+// so it stays valid as long as the cases' order and ball scopes do not change. Balls off the grid
+// return the cells at its edge (clamped), so every query is still a superset.
 #pragma once
 
 #include <cstdint>
@@ -37,6 +38,7 @@ class BallScopeIndex {
 
   std::size_t size() const { return size_; }  // the cases it was built from
   double thr_ball() const { return thr_ball_; }
+  std::size_t entries() const { return ids_.size(); }  // case-in-cell entries
   int columns() const { return nx_; }
   int rows() const { return ny_; }
   double cell_m() const { return cell_m_; }

@@ -125,6 +125,30 @@ TEST(BallScopeIndexTest, AQueryHoldsEveryCaseWhoseScopeContainsTheBall) {
   }
 }
 
+TEST(BallScopeIndexTest, AFewHugeScopesCoarsenTheCellsInsteadOfFillingThem) {
+  const LoadedCaseBase base = Shipped();
+  SyntheticCaseSpec spec;
+  spec.count = 2000;
+  spec.scope_scale = 0.05;
+  std::vector<Case> cases =
+      SyntheticCases(base.cases.Defending(DefendingGoal::kCyan), base.kick_mirrors, spec);
+  for (std::size_t i = 0; i < cases.size(); i += 100) cases[i].ball_scope = {30.0, 30.0};
+  const BallScopeIndex index(cases, std::exp(-1.0));
+  EXPECT_LE(index.entries(), 16u * cases.size() + 4096u);
+  RandomStream rng(StreamKey(9, 3));
+  for (int t = 0; t < 2000; ++t) {
+    Problem p;
+    p.p_F_ball = Vec2(-2.7 + 5.4 * rng.NextUniform(), 0.0);
+    p.p_F_ball.y() = -1.8 + 3.6 * rng.NextUniform();
+    const auto hits = index.Query(p.p_F_ball);
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      if (BallSimilarity(p, cases[i]) > std::exp(-1.0)) {
+        EXPECT_TRUE(std::binary_search(hits.begin(), hits.end(), static_cast<std::uint32_t>(i)));
+      }
+    }
+  }
+}
+
 TEST(BallScopeIndexTest, AnIndexForOtherCasesOrThresholdsIsRefused) {
   const LoadedCaseBase base = Shipped();
   const auto cases = base.cases.Defending(DefendingGoal::kCyan);
