@@ -6,6 +6,7 @@
 #include "cbr/similarity.h"
 #include "common/checks.h"
 #include "common/enum_names.h"
+#include "common/error.h"
 
 namespace foresight {
 namespace {
@@ -50,37 +51,41 @@ int SimilarityBand(double similarity, const RetrievalParams& params) {
   return 3;
 }
 
-CaseEvaluation EvaluateCase(const Problem& problem, const Case& c, int index,
-                            const RetrievalParams& params) {
-  CaseEvaluation e;
+namespace {
+
+// Algorithm 1 into `out`, a default-constructed evaluation (retrieval builds it in place in the
+// result's vector: no copy of the evaluation per case).
+void Evaluate(const Problem& problem, const Case& c, int index, const RetrievalParams& params,
+              CaseEvaluation* out) {
+  CaseEvaluation& e = *out;
   e.case_index = index;
   e.teammates = static_cast<int>(c.teammates.size());
   if (c.defending != problem.defending) {
     e.verdict = Verdict::kOtherGoal;
-    return e;
+    return;
   }
   if (c.teammates.empty() || c.teammates.size() > static_cast<std::size_t>(kMaxTeammates)) {
     e.verdict = Verdict::kInvalidCase;
-    return e;
+    return;
   }
   if (problem.teammates.size() > static_cast<std::size_t>(kMaxTeammates)) {
     e.verdict = Verdict::kInvalidProblem;
-    return e;
+    return;
   }
   e.ball_similarity = BallSimilarity(problem, c);
   e.band = SimilarityBand(e.ball_similarity, params);
   if (!(e.ball_similarity > params.thr_ball)) {
     e.verdict = Verdict::kBallOutOfScope;
-    return e;
+    return;
   }
   if (c.teammates.size() > problem.teammates.size()) {
     e.verdict = Verdict::kTooFewTeammates;
-    return e;
+    return;
   }
   e.correspondence = FindCorrespondence(problem, c, params.cost, params.thr_cost_m);
   if (!e.correspondence.feasible) {
     e.verdict = Verdict::kTooFar;
-    return e;
+    return;
   }
   const CaseBallPath path =
       BuildBallPath(problem, c,
@@ -90,10 +95,18 @@ CaseEvaluation EvaluateCase(const Problem& problem, const Case& c, int index,
   e.path = CheckFreePath(path, problem.opponents, params.thr_trajectory);
   if (!e.path.free) {
     e.verdict = Verdict::kPathBlocked;
-    return e;
+    return;
   }
   e.conditions = OpponentSimilarity(problem, c, params.thr_opponent);
   e.verdict = Verdict::kCandidate;
+}
+
+}  // namespace
+
+CaseEvaluation EvaluateCase(const Problem& problem, const Case& c, int index,
+                            const RetrievalParams& params) {
+  CaseEvaluation e;
+  Evaluate(problem, c, index, params, &e);
   return e;
 }
 
@@ -116,33 +129,106 @@ bool RanksBefore(const CaseEvaluation& a, const CaseEvaluation& b, const Retriev
   return a.case_index < b.case_index;
 }
 
-void Retrieve(std::span<const Case> cases, const Problem& problem, const RetrievalParams& params,
-              RetrievalResult* out) {
+namespace {
+
+void Reset(RetrievalResult* out, bool all_cases) {
   out->retrieved.reset();
   out->evaluations.clear();
+  out->all_cases = all_cases;
   out->ranking.clear();
   out->ball_path = CaseBallPath{};
+}
+
+// Algorithm 2 after the evaluations are in: sort the candidates (ranking holds their case
+// indices, `slot` maps a case index to the position of its evaluation), store their ranks,
+// build the retrieved case's ball path.
+template <typename Slot>
+void Rank(std::span<const Case> cases, const Problem& problem, const RetrievalParams& params,
+          const Slot& slot, RetrievalResult* out) {
+  auto& ev = out->evaluations;
+  std::sort(out->ranking.begin(), out->ranking.end(),
+            [&](int a, int b) { return RanksBefore(ev[slot(a)], ev[slot(b)], params); });
+  for (std::size_t r = 0; r < out->ranking.size(); ++r) {
+    ev[slot(out->ranking[r])].rank = static_cast<int>(r);
+  }
+  if (!out->ranking.empty()) {
+    const int best = out->ranking.front();
+    out->retrieved = best;
+    const Correspondence& k = ev[slot(best)].correspondence;
+    out->ball_path = BuildBallPath(
+        problem, cases[static_cast<std::size_t>(best)],
+        std::span<const Vec2>(k.adapted_F.data(), static_cast<std::size_t>(k.count)), params);
+  }
+}
+
+}  // namespace
+
+const CaseEvaluation* RetrievalResult::Find(int case_index) const {
+  if (case_index < 0) return nullptr;
+  if (all_cases) {
+    return static_cast<std::size_t>(case_index) < evaluations.size()
+               ? &evaluations[static_cast<std::size_t>(case_index)]
+               : nullptr;
+  }
+  const auto it = std::lower_bound(evaluations.begin(), evaluations.end(), case_index,
+                                   [](const CaseEvaluation& e, int i) { return e.case_index < i; });
+  return it != evaluations.end() && it->case_index == case_index ? &*it : nullptr;
+}
+
+void Retrieve(std::span<const Case> cases, const Problem& problem, const RetrievalParams& params,
+              RetrievalResult* out) {
+  Reset(out, true);
   for (std::size_t i = 0; i < cases.size(); ++i) {
-    out->evaluations.push_back(EvaluateCase(problem, cases[i], static_cast<int>(i), params));
+    Evaluate(problem, cases[i], static_cast<int>(i), params, &out->evaluations.emplace_back());
+    if (out->evaluations.back().verdict == Verdict::kCandidate) {
+      out->ranking.push_back(static_cast<int>(i));
+    }
+  }
+  Rank(
+      cases, problem, params, [](int i) { return static_cast<std::size_t>(i); }, out);
+}
+
+void Retrieve(std::span<const Case> cases, const BallScopeIndex& index, const Problem& problem,
+              const RetrievalParams& params, RetrievalResult* out) {
+  if (index.size() != cases.size() || index.thr_ball() != params.thr_ball) {
+    throw InputError(
+        "Retrieve: the ball-scope index was built for " + std::to_string(index.size()) +
+        " cases and thr_b " + FormatNumber(index.thr_ball()) + ", not for these " +
+        std::to_string(cases.size()) + " cases and thr_b " + FormatNumber(params.thr_ball));
+  }
+  Reset(out, false);
+  for (const std::uint32_t i : index.Query(problem.p_F_ball)) {
+    Evaluate(problem, cases[i], static_cast<int>(i), params, &out->evaluations.emplace_back());
     if (out->evaluations.back().verdict == Verdict::kCandidate) {
       out->ranking.push_back(static_cast<int>(i));
     }
   }
   const auto& ev = out->evaluations;
-  std::sort(out->ranking.begin(), out->ranking.end(), [&](int a, int b) {
-    return RanksBefore(ev[static_cast<std::size_t>(a)], ev[static_cast<std::size_t>(b)], params);
-  });
-  for (std::size_t r = 0; r < out->ranking.size(); ++r) {
-    out->evaluations[static_cast<std::size_t>(out->ranking[r])].rank = static_cast<int>(r);
+  Rank(
+      cases, problem, params,
+      [&ev](int i) {
+        return static_cast<std::size_t>(
+            std::lower_bound(ev.begin(), ev.end(), i,
+                             [](const CaseEvaluation& e, int k) { return e.case_index < k; }) -
+            ev.begin());
+      },
+      out);
+}
+
+RetrievalResult Retrieve(std::span<const Case> cases, const BallScopeIndex& index,
+                         const Problem& problem, const RetrievalParams& params) {
+  RetrievalResult result;
+  Retrieve(cases, index, problem, params, &result);
+  return result;
+}
+
+CaseEvaluation EvaluationOf(const RetrievalResult& r, std::span<const Case> cases,
+                            const Problem& problem, const RetrievalParams& params, int case_index) {
+  if (const CaseEvaluation* e = r.Find(case_index)) return *e;
+  if (case_index < 0 || static_cast<std::size_t>(case_index) >= cases.size()) {
+    throw InputError("EvaluationOf: case index " + std::to_string(case_index) + " out of range");
   }
-  if (!out->ranking.empty()) {
-    const int best = out->ranking.front();
-    out->retrieved = best;
-    const Correspondence& k = out->evaluations[static_cast<std::size_t>(best)].correspondence;
-    out->ball_path = BuildBallPath(
-        problem, cases[static_cast<std::size_t>(best)],
-        std::span<const Vec2>(k.adapted_F.data(), static_cast<std::size_t>(k.count)), params);
-  }
+  return EvaluateCase(problem, cases[static_cast<std::size_t>(case_index)], case_index, params);
 }
 
 RetrievalResult Retrieve(std::span<const Case> cases, const Problem& problem,

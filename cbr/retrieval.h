@@ -15,6 +15,10 @@
 // no teammates or more than kMaxTeammates is rejected as invalid, and so is every case for a
 // problem with more than kMaxTeammates teammates (the problem loader allows 1-4). Conditions are
 // computed for candidates only (they rank, never reject).
+//
+// Large case bases: Retrieve with a BallScopeIndex (cbr/ball_scope_index.h) evaluates only the
+// cases whose ball scope may hold the problem ball and returns the same retrieved case, ranking
+// and evaluations; the skipped cases' explanations come from EvaluationOf on request.
 #pragma once
 
 #include <optional>
@@ -23,6 +27,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cbr/ball_scope_index.h"
 #include "cbr/case.h"
 #include "cbr/correspondence.h"
 #include "cbr/free_path.h"
@@ -57,14 +62,19 @@ struct CaseEvaluation {
 };
 
 struct RetrievalResult {
-  std::optional<int> retrieved;             // index into the cases passed in
-  std::vector<CaseEvaluation> evaluations;  // one per case, in the cases' order
-  std::vector<int> ranking;                 // candidate case indices, best first
-  CaseBallPath ball_path;                   // of the retrieved case
+  std::optional<int> retrieved;  // index into the cases passed in
+  // all_cases: one per case, in the cases' order (evaluations[i].case_index == i). Retrieval
+  // with a BallScopeIndex: only the cases the index returned, in ascending case_index; every
+  // other case is not a candidate (kBallOutOfScope, or kOtherGoal / kInvalidCase /
+  // kInvalidProblem as for every case) and EvaluationOf computes its explanation on request.
+  std::vector<CaseEvaluation> evaluations;
+  bool all_cases = true;
+  std::vector<int> ranking;  // candidate case indices, best first
+  CaseBallPath ball_path;    // of the retrieved case
 
-  const CaseEvaluation* Best() const {
-    return retrieved ? &evaluations[static_cast<std::size_t>(*retrieved)] : nullptr;
-  }
+  // The stored evaluation of case `case_index`, or nullptr if it was not evaluated.
+  const CaseEvaluation* Find(int case_index) const;
+  const CaseEvaluation* Best() const { return retrieved ? Find(*retrieved) : nullptr; }
 };
 
 // The similarity band of sec. 3.4: 0 (H) for sim >= band_lower[0], ..., 3 (L) below band_lower[2].
@@ -83,6 +93,21 @@ RetrievalResult Retrieve(std::span<const Case> cases, const Problem& problem,
                          const RetrievalParams& params);
 void Retrieve(std::span<const Case> cases, const Problem& problem, const RetrievalParams& params,
               RetrievalResult* out);
+
+// Algorithm 2 evaluating only the cases `index` returns for the problem ball (the others cannot
+// pass the ball filter): the same retrieved case, ranking, ball path and, for every evaluated
+// case, the same evaluation as Retrieve without the index; out->all_cases is false.
+// Preconditions (InputError otherwise): `index` was built from `cases` with params.thr_ball.
+void Retrieve(std::span<const Case> cases, const BallScopeIndex& index, const Problem& problem,
+              const RetrievalParams& params, RetrievalResult* out);
+RetrievalResult Retrieve(std::span<const Case> cases, const BallScopeIndex& index,
+                         const Problem& problem, const RetrievalParams& params);
+
+// The evaluation of case `case_index` for the result `r` of retrieving `problem` from `cases`:
+// the stored one, or (a case the index skipped) EvaluateCase's, which is what retrieval without
+// the index stores for it (rank -1).
+CaseEvaluation EvaluationOf(const RetrievalResult& r, std::span<const Case> cases,
+                            const Problem& problem, const RetrievalParams& params, int case_index);
 
 // One line on why `e` was rejected or where it ranked, naming robots by id and opponents by
 // their index in the problem ("path blocked: opponent 1 at (0.5, 0.02) on trajectory 0 (pass
