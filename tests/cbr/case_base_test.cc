@@ -74,7 +74,9 @@ TEST(CaseBaseTest, ReportsACaseSymmetricInYAsAnOverlap) {
   Case c;
   c.name = c.source = "centre";
   c.ball_scope = {0.5, 0.5};
-  c.teammates = {{1, Vec2(-0.3, 0.0), {CaseAction{ActionType::kGetBall}}}};
+  CaseAction get_ball;
+  get_ball.type = ActionType::kGetBall;
+  c.teammates = {{1, Vec2(-0.3, 0.0), {get_ball}}};
   const CaseBase base({c}, {});
   const auto warnings = CheckCaseBase(base);
   ASSERT_EQ(warnings.size(), 2u);
