@@ -17,11 +17,13 @@ build: setup
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS)
 
-# The test command (CI runs exactly this through .ci/run): the GoogleTest suite, then the
-# physics checks of models/check_specs/default.json (JUnit XML in $(BUILD)/check-junit.xml).
+# The test command (CI runs it through .ci/run): the GoogleTest suite with the layering check,
+# the physics checks of models/check_specs/default.json (JUnit XML in
+# $(BUILD)/check-junit.xml) and the check of the shipped case base.
 test: build
 	@ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 	@$(BUILD)/app/foresight check --junit $(BUILD)/check-junit.xml
+	@$(BUILD)/app/foresight cbr check
 
 # The main job on the shipped defaults: calibrate the NAO's kicks from physics, write the
 # calibrated kick model, compare the coarse model (with that model) against physics on the
