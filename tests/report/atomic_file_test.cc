@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "common/error.h"
+#include "tests/support/temp_files.h"
 
 namespace foresight {
 namespace {
@@ -17,17 +18,11 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path FreshDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "foresight_atomic_test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return testing::FreshTempDir(name);
 }
 
 std::string Read(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return testing::ReadText(file);
 }
 
 TEST(AtomicFileTest, WritesTheWholeContentAndNoTemporaryRemains) {

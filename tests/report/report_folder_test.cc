@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "tests/support/temp_files.h"
 
 namespace foresight {
 namespace {
@@ -19,17 +20,11 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path FreshDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "foresight_report_folder_test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return testing::FreshTempDir(name);
 }
 
 std::string Read(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return testing::ReadText(file);
 }
 
 std::set<std::string> Names(const fs::path& dir) {

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace foresight::testing {
@@ -25,6 +26,23 @@ inline std::filesystem::path WriteTempFile(const std::string& name, const std::s
   const std::filesystem::path file = dir / name;
   std::ofstream(file) << text;
   return file;
+}
+
+// A new, empty folder `name` in this process's temporary folder.
+inline std::filesystem::path FreshTempDir(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "foresight_tests" /
+                                    ("pid" + std::to_string(::getpid())) / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// The whole text of `file` ("" if it cannot be read).
+inline std::string ReadText(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 }  // namespace foresight::testing
