@@ -121,15 +121,20 @@ const LoadedCaseBase& Shipped() {
   return base;
 }
 
-void BM_Shipped(benchmark::State& state) {
-  const LoadedCaseBase& base = Shipped();
-  std::vector<Case> cases;
-  const auto cyan = base.cases.Defending(DefendingGoal::kCyan);
-  cases.assign(cyan.begin(), cyan.end());
-  if (state.range(0) == 136) {
-    const auto yellow = base.cases.Defending(DefendingGoal::kYellow);
+// The shipped cases for cyan (68), or for both goals (136): retrieval then also rejects the other
+// goal's half, as a caller that does not index by goal would make it.
+std::vector<Case> ShippedCases(bool both_goals) {
+  const auto cyan = Shipped().cases.Defending(DefendingGoal::kCyan);
+  std::vector<Case> cases(cyan.begin(), cyan.end());
+  if (both_goals) {
+    const auto yellow = Shipped().cases.Defending(DefendingGoal::kYellow);
     cases.insert(cases.end(), yellow.begin(), yellow.end());
   }
+  return cases;
+}
+
+void BM_Shipped(benchmark::State& state) {
+  const std::vector<Case> cases = ShippedCases(state.range(0) == 136);
   const std::vector<Problem> problems = Attacks(256);
   const RetrievalParams params;
   RetrievalResult result;
@@ -205,12 +210,8 @@ Problem ShippedWorstProblem(std::span<const Case> cases, const RetrievalParams& 
 }
 
 void BM_ShippedWorst(benchmark::State& state) {
-  const LoadedCaseBase& base = Shipped();
-  std::vector<Case> cases;
-  const auto cyan = base.cases.Defending(DefendingGoal::kCyan);
-  cases.assign(cyan.begin(), cyan.end());
-  const auto yellow = base.cases.Defending(DefendingGoal::kYellow);
-  cases.insert(cases.end(), yellow.begin(), yellow.end());
+  const std::vector<Case> cases = ShippedCases(true);
+  const auto cyan = Shipped().cases.Defending(DefendingGoal::kCyan);
   const RetrievalParams params;
   const Problem p = ShippedWorstProblem(cyan, params);
   RetrievalResult result;
