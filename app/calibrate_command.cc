@@ -86,11 +86,25 @@ void Fit(CalibrationRun& run) {
   run.fitted = ApplyCalibration(run.base, fits, run.deceleration);
 }
 
+// Whether --out names a file directly in the --report folder.
+bool ModelInsideReport(const CalibrateOptions& options) {
+  if (options.report_dir.empty()) return false;
+  const std::filesystem::path model_dir =
+      std::filesystem::path(options.out_file).parent_path().lexically_normal();
+  const std::filesystem::path report = std::filesystem::path(options.report_dir).lexically_normal();
+  const auto without_slash = [](const std::filesystem::path& p) {
+    return p.has_filename() || !p.has_parent_path() ? p : p.parent_path();
+  };
+  return std::filesystem::weakly_canonical(without_slash(model_dir)) ==
+         std::filesystem::weakly_canonical(without_slash(report));
+}
+
 // The kick model's folder must exist, and the report folder must be one foresight may replace.
 void CheckOutputs(const CalibrateOptions& options) {
   const std::filesystem::path out_dir = std::filesystem::path(options.out_file).parent_path();
   std::error_code ec;
-  if (!out_dir.empty() && !std::filesystem::is_directory(out_dir, ec)) {
+  if (!out_dir.empty() && !ModelInsideReport(options) &&
+      !std::filesystem::is_directory(out_dir, ec)) {
     throw InputError("--out: " + options.out_file + ": the folder " + out_dir.string() +
                      " does not exist");
   }
@@ -181,12 +195,15 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
     files.push_back({dir / "calibration_summary.csv", CalibrationSummaryCsv(run)});
     files.push_back({dir / "calibration.html", CalibrationHtml(run)});
   }
-  files.push_back({options.out_file, model});
   const std::string text = CalibrationText(run);
-  // The kick model first: if it cannot be written, no report is left behind either.
   CheckOutputs(options);
-  WriteFileAtomically(files.back().first, files.back().second);
-  files.pop_back();
+  if (ModelInsideReport(options)) {
+    // The report folder is replaced whole, so a model inside it is one of its files.
+    files.push_back({options.out_file, model});
+  } else {
+    // The kick model first: if it cannot be written, no report is left behind either.
+    WriteFileAtomically(options.out_file, model);
+  }
   if (!options.report_dir.empty()) WriteReportFiles(options.report_dir, "--report", files);
   std::cout << text << "wrote the calibrated kick model to " << options.out_file << "\n";
   if (!options.report_dir.empty()) {

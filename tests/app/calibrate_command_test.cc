@@ -176,6 +176,21 @@ TEST_F(CalibrateCommandTest, FromCsvFitsObservedKicks) {
   EXPECT_EQ(CountOf(ReadFile(work() / "csv_report" / "calibration_kicks.csv"), "\n"), 13);
 }
 
+// The report folder is replaced whole (report/report_folder.h): a kick model written into it is
+// one of its files, not a stranger that makes the folder irreplaceable, also on a second run.
+TEST_F(CalibrateCommandTest, ModelInsideTheReportFolderIsPartOfIt) {
+  std::vector<std::string> args = {"--robot",  "nao",    "--kick",      "forward",
+                                   "--trials", "8",      "--out",       "report/model.json",
+                                   "--report", "report", "--resamples", "100"};
+  const RunResult first = Calibrate(args);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const RunResult again = Calibrate(args);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_TRUE(fs::exists(work() / "report" / "model.json"));
+  EXPECT_TRUE(fs::exists(work() / "report" / "calibration.html"));
+  EXPECT_EQ(ReadFile(work() / "report" / "model.json").empty(), false);
+}
+
 TEST_F(CalibrateCommandTest, UnwritableModelLeavesNoReportBehind) {
   const RunResult r = Calibrate({"--robot", "nao", "--kick", "forward", "--trials", "10", "--out",
                                  "no_such_folder/model.json", "--report", "report"});
