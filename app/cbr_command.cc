@@ -8,8 +8,8 @@
 #include "app/cbr_retrieve_output.h"
 #include "app/cli_values.h"
 #include "app/report_text.h"
-#include "cbr/own_situation.h"
 #include "cbr/case_base.h"
+#include "cbr/own_situation.h"
 #include "cbr/problem.h"
 #include "cbr/retrieval.h"
 #include "cbr/retrieval_params.h"
@@ -49,7 +49,7 @@ int RunRetrieve(const CbrOptions& o, const fs::path& models) {
   run.problem = LoadProblem(run.problem_file, models);
   const LoadedCaseBase base = LoadCaseBase(run.case_base_path, models);
   run.base = &base;
-  run.params = LoadRetrievalParams(run.params_file);
+  run.params = LoadRetrievalParams(run.params_file, base.rules.field);
   run.cases = base.cases.Defending(run.problem.defending);
   run.result = Retrieve(run.cases, run.problem, run.params);
   // Everything is made before anything is written, so a failure leaves no file behind.
@@ -75,17 +75,18 @@ int RunCheck(const CbrOptions& o, const fs::path& models) {
   // The attacking side of the field: x from -0.9 m to the goal line for a team defending cyan,
   // mirrored for yellow (the shipped cases' region, models/cases/README.md).
   const double half = base.rules.field.HalfLength();
-  s += Format("ball scope coverage, x in [-0.9, %.1f] m towards the attacked goal: %.1f %% "
-              "(cyan), %.1f %% (yellow)\n",
-              half, 100.0 * BallScopeCoverage(base, DefendingGoal::kCyan, -0.9, half, 0.05),
-              100.0 * BallScopeCoverage(base, DefendingGoal::kYellow, -half, 0.9, 0.05));
+  s += Format(
+      "ball scope coverage, x in [-0.9, %.1f] m towards the attacked goal: %.1f %% "
+      "(cyan), %.1f %% (yellow)\n",
+      half, 100.0 * BallScopeCoverage(base, DefendingGoal::kCyan, -0.9, half, 0.05),
+      100.0 * BallScopeCoverage(base, DefendingGoal::kYellow, -half, 0.9, 0.05));
   // Overlaps are legal (the copy only costs retrieval time, cbr/case_base.h): warnings only.
   const std::vector<std::string> warnings = CheckCaseBase(cases);
   for (const std::string& w : warnings) s += "warning: " + w + "\n";
   s += Format("overlapping stored cases: %zu\n", warnings.size());
   // A case whose own opponent is on its own ball path is dead data: it is never retrieved in the
   // situation it was written for. That fails the check.
-  const RetrievalParams params = LoadRetrievalParams(ParamsPath(o, models));
+  const RetrievalParams params = LoadRetrievalParams(ParamsPath(o, models), base.rules.field);
   int blocked = 0;
   for (const DefendingGoal goal : {DefendingGoal::kCyan, DefendingGoal::kYellow}) {
     for (const Case& c : cases.Defending(goal)) {
@@ -94,11 +95,12 @@ int RunCheck(const CbrOptions& o, const fs::path& models) {
       if (own.free) continue;
       ++blocked;
       const CaseOpponent& opp = c.opponents[static_cast<std::size_t>(own.opponent)];
-      s += Format("error: case %s: its own opponent %d at (%.2f, %.2f) is on its ball path "
-                  "(trajectory %d, mu %.3f > thr_t %.3f): not retrieved where it was written "
-                  "for\n",
-                  c.name.c_str(), opp.id, opp.p_F.x(), opp.p_F.y(), own.trajectory,
-                  own.membership, params.thr_trajectory);
+      s += Format(
+          "error: case %s: its own opponent %d at (%.2f, %.2f) is on its ball path "
+          "(trajectory %d, mu %.3f > thr_t %.3f): not retrieved where it was written "
+          "for\n",
+          c.name.c_str(), opp.id, opp.p_F.x(), opp.p_F.y(), own.trajectory, own.membership,
+          params.thr_trajectory);
     }
   }
   s += Format("cases blocked by their own opponents: %d of %zu\n", blocked,
@@ -116,7 +118,7 @@ int RunAtlas(const CbrOptions& o, const fs::path& models) {
   input.models_dir = models;
   const LoadedCaseBase base = LoadCaseBase(input.case_base_path, models);
   input.base = &base;
-  input.params = LoadRetrievalParams(input.params_file);
+  input.params = LoadRetrievalParams(input.params_file, base.rules.field);
   const std::string html = CbrAtlasHtml(input);
   const fs::path page = fs::path(o.out_dir) / "atlas.html";
   WriteReportFiles(o.out_dir, "--out", {{page, html}});

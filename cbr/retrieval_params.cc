@@ -114,12 +114,11 @@ void UseKickModelWidths(const KickModel& model, RetrievalParams* params) {
   params->widths = TrajectoryWidths::kKickModel;
 }
 
-RetrievalParams LoadRetrievalParams(const std::filesystem::path& file) {
+RetrievalParams LoadRetrievalParams(const std::filesystem::path& file, const FieldSpec& field) {
   JsonDocument doc = JsonDocument::Load(file);
   JsonObject root = doc.Root();
   root.RejectUnknownKeys({"thr_ball", "thr_cost_m", "thr_trajectory", "thr_opponent", "bands",
-                          "cost", "order", "goal_x_m", "widths", "width_sigmas",
-                          "opponent_radius_m", "ball_radius_m", "default_kick", "kicks"});
+                          "cost", "order", "widths", "width_sigmas", "default_kick", "kicks"});
   RetrievalParams p;
   p.thr_ball = root.Number("thr_ball");
   p.thr_cost_m = root.Number("thr_cost_m");
@@ -146,7 +145,6 @@ RetrievalParams LoadRetrievalParams(const std::filesystem::path& file) {
     }
     p.order[i] = *parsed;
   }
-  p.goal_x_m = root.Number("goal_x_m");
   const std::string widths = root.String("widths");
   if (auto parsed = kWidthNames.Parse(widths)) {
     p.widths = *parsed;
@@ -154,8 +152,9 @@ RetrievalParams LoadRetrievalParams(const std::filesystem::path& file) {
     root.Fail("widths", "must be one of " + kWidthNames.List() + ", got \"" + widths + "\"");
   }
   p.width_sigmas = root.Number("width_sigmas");
-  p.opponent_radius_m = root.Number("opponent_radius_m");
-  p.ball_radius_m = root.Number("ball_radius_m");
+  p.goal_x_m = field.HalfLength();
+  p.opponent_radius_m = field.default_obstacle_radius_m;
+  p.ball_radius_m = field.ball.radius_m;
   p.default_kick = ReadKick(root.Object("default_kick"), "default");
   for (const JsonObject& item : root.ObjectArray("kicks")) {
     p.kicks.push_back(ReadKick(item, item.String("kick")));

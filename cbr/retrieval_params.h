@@ -19,6 +19,8 @@
 #include <string_view>
 #include <vector>
 
+#include "models/field_spec.h"
+
 namespace foresight {
 
 struct KickModel;
@@ -64,8 +66,9 @@ struct RetrievalParams {
   CostFunction cost = CostFunction::kSum;
   std::array<RankCriterion, 3> order{RankCriterion::kConditions, RankCriterion::kTeammates,
                                      RankCriterion::kBandThenCost};
-  // x of the centre of the goal a team defending cyan attacks (the other: -goal_x_m); the
-  // Four-Legged field is 5.4 m long (models/fields/four_legged.json).
+  // x of the centre of the goal a team defending cyan attacks (the other: -goal_x_m). This and
+  // the two radii below are set from the field by LoadRetrievalParams; the defaults are the
+  // Four-Legged field's (models/fields/four_legged.json) for parameters built in code.
   double goal_x_m = 2.7;
   TrajectoryWidths widths = TrajectoryWidths::kData;
   double width_sigmas = 1.0;        // k of the kick-model widths
@@ -83,7 +86,9 @@ struct RetrievalParams {
 // the default widths for kicks that have none) and selects TrajectoryWidths::kKickModel.
 void UseKickModelWidths(const KickModel& model, RetrievalParams* params);
 
-RetrievalParams LoadRetrievalParams(const std::filesystem::path& file);
+// Reads `file`; the goal line, the opponents' and the ball's radii come from `field` (the field
+// the case base is written for), not from the file, so no number is written twice.
+RetrievalParams LoadRetrievalParams(const std::filesystem::path& file, const FieldSpec& field);
 
 // Names as the JSON file spells them ("sum", "max_then_sum"; "conditions", "teammates",
 // "band_then_cost"; "data", "kick_model").

@@ -109,7 +109,12 @@ const std::map<std::string, Reader>& Readers() {
        }},
       {"problem", [](auto d, auto n) { LoadProblem(Write("problem.json", d, n), models); }},
       {"case_base", [](auto d, auto n) { LoadCaseBase(Write("case_base.json", d, n), models); }},
-      {"retrieval", [](auto d, auto n) { LoadRetrievalParams(Write("retrieval.json", d, n)); }},
+      {"retrieval",
+       [](auto d, auto n) {
+         static const FieldSpec field =
+             LoadFieldSpec(DataFile(models, DataFolder::kFields, "four_legged"));
+         LoadRetrievalParams(Write("retrieval.json", d, n), field);
+       }},
   };
   return readers;
 }

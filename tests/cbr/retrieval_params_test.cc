@@ -16,8 +16,14 @@ namespace {
 
 using ::testing::HasSubstr;
 
+const FieldSpec& FourLegged() {
+  static const FieldSpec field = LoadFieldSpec(testing::ModelsDir() / "fields/four_legged.json");
+  return field;
+}
+
 TEST(RetrievalParamsTest, ShippedFileHoldsThePapersDefaults) {
-  const RetrievalParams p = LoadRetrievalParams(testing::ModelsDir() / "cbr/retrieval.json");
+  const RetrievalParams p =
+      LoadRetrievalParams(testing::ModelsDir() / "cbr/retrieval.json", FourLegged());
   const RetrievalParams d;
   EXPECT_DOUBLE_EQ(p.thr_ball, std::exp(-1.0));
   EXPECT_DOUBLE_EQ(p.thr_ball, d.thr_ball);
@@ -31,7 +37,8 @@ TEST(RetrievalParamsTest, ShippedFileHoldsThePapersDefaults) {
   EXPECT_EQ(p.widths, TrajectoryWidths::kData);
   EXPECT_DOUBLE_EQ(p.default_kick.r_min_m, 0.1);
   EXPECT_DOUBLE_EQ(p.default_kick.r_max_m, 0.3);
-  EXPECT_DOUBLE_EQ(p.goal_x_m, 2.7);
+  EXPECT_DOUBLE_EQ(p.goal_x_m, FourLegged().HalfLength());  // from the field, not the file
+  EXPECT_DOUBLE_EQ(p.ball_radius_m, FourLegged().ball.radius_m);
   EXPECT_NO_THROW(d.Validate());
 }
 
@@ -39,8 +46,7 @@ std::string Json(const std::string& cost, const std::string& order) {
   return R"({"thr_ball": 0.3, "thr_cost_m": 1.5, "thr_trajectory": 0.3, "thr_opponent": 0.3,
     "bands": {"H": 0.8, "h": 0.6, "l": 0.4}, "cost": ")" +
          cost + R"(", "order": )" + order +
-         R"(, "goal_x_m": 2.7, "widths": "data", "width_sigmas": 1, "opponent_radius_m": 0.1,
-    "ball_radius_m": 0.04, "default_kick": {"r_min_m": 0.1, "r_max_m": 0.3},
+         R"(, "widths": "data", "width_sigmas": 1, "default_kick": {"r_min_m": 0.1, "r_max_m": 0.3},
     "kicks": [{"kick": "forward", "r_min_m": 0.05, "r_max_m": 0.4, "reach_m": 2}]})";
 }
 
@@ -48,7 +54,7 @@ TEST(RetrievalParamsTest, ReadsCostOrderAndKicks) {
   const auto file = testing::WriteTempFile(
       "retrieval_ok.json",
       Json("max_then_sum", R"(["band_then_cost", "teammates", "conditions"])"));
-  const RetrievalParams p = LoadRetrievalParams(file);
+  const RetrievalParams p = LoadRetrievalParams(file, FourLegged());
   EXPECT_EQ(p.cost, CostFunction::kMaxThenSum);
   EXPECT_EQ(p.order[0], RankCriterion::kBandThenCost);
   EXPECT_EQ(p.order[2], RankCriterion::kConditions);
@@ -61,7 +67,7 @@ TEST(RetrievalParamsTest, BadValuesNameFileAndField) {
   const auto bad_cost = testing::WriteTempFile(
       "retrieval_bad_cost.json", Json("mean", R"(["conditions", "teammates", "band_then_cost"])"));
   try {
-    LoadRetrievalParams(bad_cost);
+    LoadRetrievalParams(bad_cost, FourLegged());
     FAIL();
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), HasSubstr("retrieval_bad_cost.json: cost: must be one of sum, max"));
@@ -69,7 +75,7 @@ TEST(RetrievalParamsTest, BadValuesNameFileAndField) {
   const auto twice = testing::WriteTempFile(
       "retrieval_twice.json", Json("sum", R"(["conditions", "conditions", "band_then_cost"])"));
   try {
-    LoadRetrievalParams(twice);
+    LoadRetrievalParams(twice, FourLegged());
     FAIL();
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), HasSubstr("retrieval_twice.json: order: "));
