@@ -37,8 +37,14 @@ void ValidateKick(const std::string& at, const KickTrajectory& k) {
   RequireInRange(at + "sigma_direction_deg", k.sigma_direction_rad * kRadToDeg, 0.0, 45.0);
 }
 
+// A kick's widths; `name` empty: the default entry, which names no kick.
 KickTrajectory ReadKick(const JsonObject& item, std::string name) {
-  item.RejectUnknownKeys({"kick", "r_min_m", "r_max_m", "reach_m", "sigma_direction_deg"});
+  if (name.empty()) {
+    item.RejectUnknownKeys({"r_min_m", "r_max_m", "reach_m", "sigma_direction_deg"});
+    name = "default";
+  } else {
+    item.RejectUnknownKeys({"kick", "r_min_m", "r_max_m", "reach_m", "sigma_direction_deg"});
+  }
   KickTrajectory k;
   k.kick = std::move(name);
   k.r_min_m = item.Number("r_min_m");
@@ -155,7 +161,7 @@ RetrievalParams LoadRetrievalParams(const std::filesystem::path& file, const Fie
   p.goal_x_m = field.HalfLength();
   p.opponent_radius_m = field.default_obstacle_radius_m;
   p.ball_radius_m = field.ball.radius_m;
-  p.default_kick = ReadKick(root.Object("default_kick"), "default");
+  p.default_kick = ReadKick(root.Object("default_kick"), "");
   for (const JsonObject& item : root.ObjectArray("kicks")) {
     p.kicks.push_back(ReadKick(item, item.String("kick")));
   }

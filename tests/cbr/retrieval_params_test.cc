@@ -104,5 +104,18 @@ TEST(RetrievalParamsTest, KickModelWidthsTakeEachKicksDirectionNoise) {
   EXPECT_NO_THROW(p.Validate());
 }
 
+TEST(RetrievalParamsTest, TheDefaultKickNamesNoKick) {
+  std::string text = Json("sum", R"(["conditions", "teammates", "band_then_cost"])");
+  const std::string from = R"("default_kick": {)";
+  text.replace(text.find(from), from.size(), R"("default_kick": {"kick": "forward", )");
+  const auto file = testing::WriteTempFile("retrieval_default_kick.json", text);
+  try {
+    LoadRetrievalParams(file, FourLegged());
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("default_kick.kick: unknown field"));
+  }
+}
+
 }  // namespace
 }  // namespace foresight
