@@ -19,29 +19,38 @@ struct CarpetParams {
   double patch_size_m = 0.0;               // the carpet is laid in square patches ...
   double patch_sigma_rel = 0.0;            // ... each with its own factor on a (fixed layout)
   std::uint64_t patch_seed = 0;            // the layout of the patches
-  double friction = 0.0;                   // Coulomb friction ball-carpet (sliding after a kick)
-  double restitution = 0.0;
 };
 
+// One coefficient per pair of bodies the ball can touch. "foot" is every link of the kicking
+// robot (its foot, or its head in a head kick); "robot" is the standing obstacle robots.
+struct BallPairs {
+  double carpet = 0.0;
+  double post = 0.0;  // posts and crossbar
+  double net = 0.0;
+  double foot = 0.0;
+  double robot = 0.0;
+};
+
+// Bullet combines two bodies' coefficients as their product; physics/ gives the ball 1 and
+// every other body the pair's value, so each contact realises exactly the value here.
 struct MaterialParams {
-  double ball_restitution = 0.0;
-  double ball_friction = 0.0;
-  double post_restitution = 0.0;
-  double net_restitution = 0.0;
-  double net_friction = 0.0;
-  double robot_restitution = 0.0;  // robot links and obstacle robots
-  double robot_friction = 0.0;
+  BallPairs restitution;  // normal separation speed / approach speed
+  BallPairs friction;     // Coulomb coefficients
   double net_thickness_m = 0.0;
 };
 
 struct StepParams {
   double kick_time_step_s = 0.0;  // while the kicking robot is simulated
-  double near_time_step_s = 0.0;  // rolling near a post, net or obstacle
+  double near_time_step_s = 0.0;  // rolling near a post, net or obstacle, ...
+  double max_overlap_m = 0.0;     // ... or shorter, so one step moves it at most this far
   double free_time_step_s = 0.0;  // rolling on open carpet
   double max_kick_time_s = 0.0;   // after that the kick phase ends, touched or not
   double max_roll_time_s = 0.0;   // a ball still moving then is reported as not settled
   double rest_speed_mps = 0.0;    // below this (and on the carpet) the ball rests
   int solver_iterations = 0;
+  // Contacts approaching slower than this do not bounce (Bullet's restitution threshold): a
+  // ball resting on the carpet must not jitter.
+  double restitution_threshold_mps = 0.0;
 };
 
 // Joint motors follow the motion's targets as velocity constraints (Bullet's

@@ -41,7 +41,7 @@ std::unique_ptr<btCollisionConfiguration> MakeConfig() {
 
 }  // namespace
 
-BulletWorld::BulletWorld(Kind kind, int solver_iterations)
+BulletWorld::BulletWorld(Kind kind, const SolverSettings& solver)
     : config_(MakeConfig()),
       dispatcher_(std::make_unique<btCollisionDispatcher>(config_.get())),
       broadphase_(std::make_unique<btDbvtBroadphase>()) {
@@ -58,7 +58,14 @@ BulletWorld::BulletWorld(Kind kind, int solver_iterations)
                                                        solver_.get(), config_.get());
   }
   world_->setGravity(btVector3(0, 0, -9.81));
-  world_->getSolverInfo().m_numIterations = solver_iterations;
+  btContactSolverInfo& info = world_->getSolverInfo();
+  info.m_numIterations = solver.iterations;
+  info.m_restitutionVelocityThreshold = static_cast<btScalar>(solver.restitution_threshold_mps);
+  // Always split: an overlap is undone by moving the bodies apart, never by adding speed. By
+  // default only overlaps deeper than 4 cm are split and the rest get Baumgarte's
+  // 0.2 * overlap / dt on top of the bounce, a rebound that grows with the step's phase.
+  info.m_splitImpulse = 1;
+  info.m_splitImpulsePenetrationThreshold = 0.0;
 }
 
 BulletWorld::~BulletWorld() {

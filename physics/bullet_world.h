@@ -38,11 +38,20 @@ struct Material {
   double restitution = 0.0;
   double friction = 0.0;
 };
+// Bullet multiplies the two bodies' coefficients; the ball's are 1, so the other body's value
+// is the pair's (models/physics_params.h).
+inline constexpr Material kBallMaterial{1.0, 1.0};
+
+// The contact solver's settings for the ball's contacts.
+struct SolverSettings {
+  int iterations = 0;
+  double restitution_threshold_mps = 0.0;
+};
 
 class BulletWorld {
  public:
   enum class Kind { kRigid, kMultiBody };
-  BulletWorld(Kind kind, int solver_iterations);
+  BulletWorld(Kind kind, const SolverSettings& solver);
   ~BulletWorld();
   BulletWorld(const BulletWorld&) = delete;
   BulletWorld& operator=(const BulletWorld&) = delete;

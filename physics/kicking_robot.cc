@@ -56,8 +56,8 @@ void AddColliders(BulletWorld& world, btMultiBody& body, const RobotModel& model
     auto collider = std::make_unique<btMultiBodyLinkCollider>(&body, index);
     collider->setCollisionShape(shape);
     collider->setUserIndex(static_cast<int>(BodyTag::kKicker));
-    collider->setRestitution(params.materials.robot_restitution);
-    collider->setFriction(params.materials.robot_friction);
+    collider->setRestitution(params.materials.restitution.foot);
+    collider->setFriction(params.materials.friction.foot);
     btMultiBodyLinkCollider* raw = collider.get();
     if (index < 0) {
       body.setBaseCollider(raw);

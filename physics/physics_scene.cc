@@ -28,8 +28,8 @@ void AddGoal(BulletWorld& world, const PhysicsScene& scene, double side) {
   const MaterialParams& m = scene.params.materials;
   const double t = m.net_thickness_m;
   const double h = g.net_height_m;
-  const Material post{m.post_restitution, m.ball_friction};
-  const Material net{m.net_restitution, m.net_friction};
+  const Material post{m.restitution.post, m.friction.post};
+  const Material net{m.restitution.net, m.friction.net};
   auto* post_shape = world.Own(
       std::make_unique<btCylinderShapeZ>(btVector3(g.post_radius_m, g.post_radius_m, 0.5 * h)));
   for (double y_side : {1.0, -1.0}) {
@@ -97,16 +97,16 @@ PhysicsScene MakePhysicsScene(const FieldSpec& field, const PhysicsParams& param
 }
 
 void AddStatics(BulletWorld& world, const PhysicsScene& scene) {
-  const CarpetParams& c = scene.params.carpet;
   auto* plane = world.Own(std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), 0.0));
-  world.AddStatic(plane, btTransform::getIdentity(), BodyTag::kCarpet, {c.restitution, c.friction});
+  const MaterialParams& m = scene.params.materials;
+  world.AddStatic(plane, btTransform::getIdentity(), BodyTag::kCarpet,
+                  {m.restitution.carpet, m.friction.carpet});
   AddGoal(world, scene, 1.0);
   AddGoal(world, scene, -1.0);
   if (scene.obstacle_poses.empty()) return;
   const std::vector<Eigen::Isometry3d> poses = LinkPoses(scene.robot->model, scene.standing_q_rad);
   btCompoundShape* shape = MakeRobotShape(world, scene.robot->model, poses);
-  const Material material{scene.params.materials.robot_restitution,
-                          scene.params.materials.robot_friction};
+  const Material material{m.restitution.robot, m.friction.robot};
   for (const Pose2& pose : scene.obstacle_poses) {
     const Eigen::Isometry3d pose_F_root =
         PlanarPose(pose.p_F.x(), pose.p_F.y(), scene.robot->spec.base_height_m, pose.theta_rad);
@@ -116,11 +116,16 @@ void AddStatics(BulletWorld& world, const PhysicsScene& scene) {
 
 double RollTimeStep(const PhysicsScene& scene, const Vec2& p_F, double speed_mps, bool on_carpet) {
   const StepParams& steps = scene.params.steps;
-  if (!on_carpet) return steps.near_time_step_s;
+  // Contacts are solved once the ball overlaps (no speculative contacts), so a step may carry it
+  // speed * dt into a post or a net before it bounces: near them the step keeps that overlap
+  // below max_overlap_m.
+  const double near_step =
+      std::min(steps.near_time_step_s, steps.max_overlap_m / std::max(speed_mps, 1e-9));
+  if (!on_carpet) return near_step;
   // Within one large step the ball moves speed * dt; keep a ball length of margin on top.
   const double reach = speed_mps * steps.free_time_step_s + 2.0 * scene.field->ball.radius_m;
   for (const NearZone& zone : scene.near_zones) {
-    if ((p_F - zone.centre).norm() < zone.radius_m + reach) return steps.near_time_step_s;
+    if ((p_F - zone.centre).norm() < zone.radius_m + reach) return near_step;
   }
   return steps.free_time_step_s;
 }

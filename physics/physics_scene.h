@@ -45,8 +45,9 @@ PhysicsScene MakePhysicsScene(const FieldSpec& field, const PhysicsParams& param
 // Adds carpet, goals and obstacle robots to a world.
 void AddStatics(BulletWorld& world, const PhysicsScene& scene);
 
-// Time step for a ball at p_F moving at speed_mps: small near goals and obstacles (and in the
-// air), large on open carpet, so a fast ball never crosses a post or a net within one step.
+// Time step for a ball at p_F moving at speed_mps (3D): small near goals and obstacles (and in
+// the air), and there short enough that the ball overlaps a post or net by at most
+// steps.max_overlap_m before it bounces; large on open carpet.
 double RollTimeStep(const PhysicsScene& scene, const Vec2& p_F, double speed_mps, bool on_carpet);
 
 }  // namespace foresight

@@ -64,6 +64,7 @@
 #include "physics/bullet_convert.h"
 #include "physics/bullet_world.h"
 #include "physics/carpet.h"
+#include "physics/impact_probe.h"
 #include "physics/kicking_robot.h"
 #include "physics/phases.h"
 #include "physics/physics_runs.h"

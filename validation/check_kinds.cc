@@ -74,44 +74,67 @@ CheckResult Run(const FreeRollCheck& c, const CheckSpec& spec, const std::filesy
                         (trial.settled ? "" : ", did not settle"));
 }
 
+// The time step of a ball at this speed near a goal, and the gap that puts its contact at
+// phase k of `phases` within that step.
+double NearStep(const PhysicsParams& params, double speed_mps) {
+  return std::min(params.steps.near_time_step_s, params.steps.max_overlap_m / speed_mps);
+}
+
+double GapAtPhase(const PhysicsParams& params, double speed_mps, int k, int phases) {
+  constexpr double kBaseGapM = 0.01;
+  return kBaseGapM + speed_mps * NearStep(params, speed_mps) * k / phases;
+}
+
 CheckResult Run(const NoTunnellingCheck& c, const CheckSpec& spec,
                 const std::filesystem::path& models, int) {
   const UniformWorld w = LoadUniformWorld(c.field, spec, models);
   const PhysicsScene scene = MakePhysicsScene(w.field, w.params, nullptr, {}, Vec2(0, 0));
-  const GoalSpec& g = w.field.goal;
-  const double r = w.field.ball.radius_m;
-  Vec2 start;
-  double heading = 0.0;
-  // clearance(p): how far the ball's surface is from the target's surface (negative: inside).
-  std::function<double(const Vec2&)> clearance;
-  if (c.target == TunnellingTarget::kPost) {
-    const Vec2 post(g.post_centre_x_m, g.post_centre_y_m);
-    start = post - Vec2(1.0, 0.0);
-    clearance = [=](const Vec2& p) { return (p - post).norm() - g.post_radius_m - r; };
-  } else if (c.target == TunnellingTarget::kBackNet) {
-    const double back_x = g.post_centre_x_m + g.net_depth_m;
-    start = Vec2(g.post_centre_x_m - 1.0, 0.1 * g.post_centre_y_m);
-    clearance = [=](const Vec2& p) { return back_x - p.x() - r; };
-  } else {
-    const double outer_y = g.post_centre_y_m + w.params.materials.net_thickness_m;
-    start = Vec2(g.post_centre_x_m + 0.5 * g.net_depth_m, outer_y + 1.0);
-    heading = -0.5 * kPi;
-    clearance = [=](const Vec2& p) { return p.y() - outer_y - r; };
-  }
   const double v = c.speed_mps;
-  const TrialResult trial = RunRollTrial(scene, RollingBall(start, r, v, heading), 1, true);
-  double penetration = 0.0;
-  for (const TracePoint& p : trial.trace) {
-    if (p.p_F.z() > g.net_height_m) continue;  // over the goal: nothing to hit
-    penetration = std::max(penetration, -clearance(p.p_F.head<2>()));
+  const double step_m = v * NearStep(w.params, v);
+  double deepest = 0.0;
+  int untouched = 0;
+  for (int k = 0; k < c.phases; ++k) {
+    const ImpactResult r = FireAt(scene, c.target, v, GapAtPhase(w.params, v, k, c.phases));
+    deepest = std::max(deepest, r.penetration_m);
+    untouched += r.touched ? 0 : 1;
   }
-  const bool touched = trial.outcome.first_contact != Contact::kNone;
-  const bool ok = touched && penetration <= c.max_penetration_m;
+  const double limit = c.max_penetration_steps * step_m;
+  const bool ok = untouched == 0 && deepest <= limit;
   return Result(ok, "ball at " + Fixed(v, 1) + " m/s into the " +
-                        std::string(TunnellingTargetName(c.target)) + ": deepest " +
-                        Fixed(penetration * 1000.0, 1) + " mm into it (limit " +
-                        Fixed(c.max_penetration_m * 1000.0, 1) + " mm), first contact " +
-                        std::string(ContactName(trial.outcome.first_contact)));
+                        std::string(ImpactTargetName(c.target)) + " at " +
+                        std::to_string(c.phases) + " phases: deepest " +
+                        Fixed(deepest * 1000.0, 1) + " mm into it (limit " +
+                        Fixed(limit * 1000.0, 1) + " mm, one step " + Fixed(step_m * 1000.0, 1) +
+                        " mm)" + (untouched > 0 ? ", " + std::to_string(untouched) +
+                                                      " shots never touched it"
+                                                : ""));
+}
+
+CheckResult Run(const ReboundCheck& c, const CheckSpec& spec, const std::filesystem::path& models,
+                int) {
+  const UniformWorld w = LoadUniformWorld(c.field, spec, models);
+  const PhysicsScene scene = MakePhysicsScene(w.field, w.params, nullptr, {}, Vec2(0, 0));
+  const double e = TargetRestitution(scene, c.target);
+  bool ok = true;
+  std::string detail;
+  for (double v : c.speeds_mps) {
+    double worst_ratio = e, worst_error = 0.0;
+    for (int k = 0; k < c.phases; ++k) {
+      const ImpactResult r = FireAt(scene, c.target, v, GapAtPhase(w.params, v, k, c.phases));
+      const double expected = e * r.approach_mps;
+      const double error = std::abs(r.rebound_mps - expected);
+      const double allowed = std::max(c.min_error_mps, c.max_error_rel * expected);
+      if (!r.touched || error > allowed) ok = false;
+      if (error >= worst_error) {
+        worst_error = error;
+        worst_ratio = r.approach_mps > 0.0 ? r.rebound_mps / r.approach_mps : 0.0;
+      }
+    }
+    detail += (detail.empty() ? "" : "; ") + Fixed(v, 1) + " m/s: worst rebound/approach " +
+              Fixed(worst_ratio, 3) + " (off by " + Fixed(worst_error * 1000.0, 1) + " mm/s)";
+  }
+  return Result(ok, std::string(ImpactTargetName(c.target)) + ", e = " + Fixed(e, 3) + ", " +
+                        std::to_string(c.phases) + " phases per speed: " + detail);
 }
 
 // The calibration situation of the spec's robot with the spec's kick model, as `foresight
@@ -209,7 +232,17 @@ void FreeRollCheck::Validate() const {
 }
 
 void NoTunnellingCheck::Validate() const {
-  RequirePositive("speed_mps", speed_mps);
+  RequireInRange("speed_mps", speed_mps, 0.05, 20.0);
+  RequireInRange("phases", phases, 1, kMaxCheckPhases);
+  RequireInRange("max_penetration_steps", max_penetration_steps, 0.0, 10.0);
+}
+
+void ReboundCheck::Validate() const {
+  if (speeds_mps.empty()) throw InputError("speeds_mps: must list at least one speed");
+  for (double v : speeds_mps) RequireInRange("speeds_mps", v, 0.05, 20.0);
+  RequireInRange("phases", phases, 1, kMaxCheckPhases);
+  RequireInRange("max_error_rel", max_error_rel, 0.0, 1.0);
+  RequireInRange("min_error_mps", min_error_mps, 0.0, 1.0);
 }
 
 void KickDirectionCheck::Validate() const {
@@ -223,28 +256,6 @@ void CalibrationBandCheck::Validate() const {
 
 void FidelityFloorCheck::Validate() const {
   RequireInRange("trials", trials, kMinCheckTrials, kMaxCheckTrials);
-}
-
-namespace {
-
-constexpr EnumNames<TunnellingTarget, 3> kTargetNames{{{
-    {TunnellingTarget::kPost, "post"},
-    {TunnellingTarget::kBackNet, "back_net"},
-    {TunnellingTarget::kSideNet, "side_net"},
-}}};
-
-}  // namespace
-
-std::string_view TunnellingTargetName(TunnellingTarget target) {
-  return kTargetNames.Name(target);
-}
-
-std::optional<TunnellingTarget> ParseTunnellingTarget(std::string_view name) {
-  return kTargetNames.Parse(name);
-}
-
-std::string TunnellingTargetNames() {
-  return kTargetNames.List();
 }
 
 std::string_view KindName(const CheckKind& kind) {

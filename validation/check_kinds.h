@@ -13,6 +13,9 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
+
+#include "physics/impact_probe.h"
 
 namespace foresight {
 
@@ -26,6 +29,7 @@ struct CheckResult {
 
 inline constexpr int kMinCheckTrials = 2;
 inline constexpr int kMaxCheckTrials = 100000;
+inline constexpr int kMaxCheckPhases = 1000;
 inline constexpr double kMaxCheckSeed = 9007199254740992.0;  // 2^53: a JSON number holds it exactly
 
 // A ball set rolling on a uniform carpet (the field's physics file, its variation switched
@@ -40,20 +44,30 @@ struct FreeRollCheck {
   void Validate() const;
 };
 
-enum class TunnellingTarget { kPost, kBackNet, kSideNet };
-// "post", "back_net", "side_net": the spec's words.
-std::string_view TunnellingTargetName(TunnellingTarget target);
-std::optional<TunnellingTarget> ParseTunnellingTarget(std::string_view name);
-std::string TunnellingTargetNames();  // "post, back_net, side_net"
-
-// A fast ball fired at a post, the back net or a side net from outside never gets closer to it
-// than the ball's radius less max_penetration_m.
+// A fast ball fired at a post, the back net or a side net from outside (physics/impact_probe.h),
+// with the contact at `phases` evenly spread points of a time step, never gets deeper into it
+// than max_penetration_steps times the distance it rolls in one step at that speed.
 struct NoTunnellingCheck {
   static constexpr std::string_view kKind = "no_tunnelling";
   std::string field;
-  TunnellingTarget target = TunnellingTarget::kPost;
+  ImpactTarget target = ImpactTarget::kPost;
   double speed_mps = 0.0;
-  double max_penetration_m = 0.0;
+  int phases = 0;
+  double max_penetration_steps = 0.0;
+  void Validate() const;
+};
+
+// A ball rolled at a post or net at each speed, with the contact at `phases` points of a time
+// step, comes back at e * v (e from the field's physics file, v the speed it arrived with)
+// within max_error_rel of e * v or min_error_mps, whichever is larger.
+struct ReboundCheck {
+  static constexpr std::string_view kKind = "rebound";
+  std::string field;
+  ImpactTarget target = ImpactTarget::kPost;
+  std::vector<double> speeds_mps;
+  int phases = 0;
+  double max_error_rel = 0.0;
+  double min_error_mps = 0.0;
   void Validate() const;
 };
 
@@ -97,7 +111,7 @@ struct FidelityFloorCheck {
   void Validate() const;
 };
 
-using CheckKind = std::variant<FreeRollCheck, NoTunnellingCheck, KickDirectionCheck,
+using CheckKind = std::variant<FreeRollCheck, NoTunnellingCheck, ReboundCheck, KickDirectionCheck,
                                CalibrationBandCheck, FidelityFloorCheck>;
 
 std::string_view KindName(const CheckKind& kind);

@@ -35,9 +35,14 @@ int Trials(const JsonObject& item, double value) {
       WholeNumber(item, "trials", value, kMinCheckTrials, kMaxCheckTrials, range));
 }
 
-TunnellingTarget Target(const JsonObject& item, const std::string& text) {
-  if (const std::optional<TunnellingTarget> t = ParseTunnellingTarget(text)) return *t;
-  item.Fail("target", "must be one of " + TunnellingTargetNames() + ", got '" + text + "'");
+ImpactTarget Target(const JsonObject& item, const std::string& text) {
+  if (const std::optional<ImpactTarget> t = ParseImpactTarget(text)) return *t;
+  item.Fail("target", "must be one of " + ImpactTargetNames() + ", got '" + text + "'");
+}
+
+int Phases(const JsonObject& item, double value) {
+  return static_cast<int>(WholeNumber(item, "phases", value, 1, kMaxCheckPhases,
+                                      "[1, " + std::to_string(kMaxCheckPhases) + "]"));
 }
 
 // Each reader takes the strings first, then the numbers, then turns them into their types: a
@@ -57,8 +62,23 @@ CheckKind ReadNoTunnelling(const JsonObject& item) {
   c.field = item.String("field");
   const std::string target = item.String("target");
   c.speed_mps = item.Number("speed_mps");
-  c.max_penetration_m = item.Number("max_penetration_m");
+  const double phases = item.Number("phases");
+  c.max_penetration_steps = item.Number("max_penetration_steps");
   c.target = Target(item, target);
+  c.phases = Phases(item, phases);
+  return c;
+}
+
+CheckKind ReadRebound(const JsonObject& item) {
+  ReboundCheck c;
+  c.field = item.String("field");
+  const std::string target = item.String("target");
+  c.speeds_mps = item.NumberArray("speeds_mps");
+  const double phases = item.Number("phases");
+  c.max_error_rel = item.Number("max_error_rel");
+  c.min_error_mps = item.Number("min_error_mps");
+  c.target = Target(item, target);
+  c.phases = Phases(item, phases);
   return c;
 }
 
@@ -110,8 +130,11 @@ const std::vector<KindReader>& Readers() {
        {"field", "speed_mps", "heading_deg", "max_error_rel", "max_lateral_m"},
        ReadFreeRoll},
       {NoTunnellingCheck::kKind,
-       {"field", "target", "speed_mps", "max_penetration_m"},
+       {"field", "target", "speed_mps", "phases", "max_penetration_steps"},
        ReadNoTunnelling},
+      {ReboundCheck::kKind,
+       {"field", "target", "speeds_mps", "phases", "max_error_rel", "min_error_mps"},
+       ReadRebound},
       {KickDirectionCheck::kKind,
        {"robot", "kick", "kicks", "trials", "max_error_deg"},
        ReadKickDirection},

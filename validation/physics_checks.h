@@ -4,7 +4,9 @@
 // A spec file: {"name": ..., "checks": [{"name": ..., "kind": ..., KEYS}, ...]} with the check
 // names unique. Kinds of check and their keys (validation/check_kinds.h has what each tests):
 //   free_roll         field, speed_mps, heading_deg, max_error_rel, max_lateral_m
-//   no_tunnelling     field, target (post | back_net | side_net), speed_mps, max_penetration_m
+//   no_tunnelling     field, target (post | back_net | side_net), speed_mps, phases,
+//                     max_penetration_steps
+//   rebound           field, target, speeds_mps, phases, max_error_rel, min_error_mps
 //   kick_direction    robot, kick, kicks (model), trials, max_error_deg
 //   calibration_band  robot, kicks, trials, seed, band_rel, band_deg
 //   fidelity_floor    situations, kicks, trials, min_tau_b, max_regret

@@ -52,7 +52,11 @@ INSTANTIATE_TEST_SUITE_P(
                    "steps.free_time_step_s"},
         BrokenCase{"\"position_gain\": 0.2", "\"position_gain\": 2",
                    "motors.position_gain: must be in [0, 1], got 2"},
-        BrokenCase{"\"net_friction\": 1.0", "\"net_frictoin\": 1.0", "net_frictoin"},
+        BrokenCase{"\"ball_net\": 0.8", "\"ball_nett\": 0.8", "friction.ball_nett: unknown field"},
+        BrokenCase{"\"ball_post\": 0.3,", "\"ball_post\": 1.3,",
+                   "materials.restitution.ball_post: must be in [0, 1], got 1.3"},
+        BrokenCase{"\"ball_net\": \"assumption: a slack net absorbs the ball (3 %)\"",
+                   "\"ball_net\": \"\"", "restitution.sources.ball_net: must say where"},
         BrokenCase{"\"patch_seed\": 2026", "\"patch_seed\": -4", "carpet.patch_seed"}));
 
 }  // namespace

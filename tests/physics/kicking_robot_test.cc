@@ -39,7 +39,7 @@ TEST_P(KickingRobotTest, LinkFramesMatchForwardKinematics) {
   for (std::uint64_t seed : {1u, 2u, 3u}) {
     const std::vector<double> q = RandomPose(robot.model, seed);
     const Eigen::Isometry3d pose_F_root = PlanarPose(0.5, -1.0, 0.4, 0.7);
-    BulletWorld world(BulletWorld::Kind::kMultiBody, 10);
+    BulletWorld world(BulletWorld::Kind::kMultiBody, {10, 0.02});
     KickingRobot kicker(world, robot, pose_F_root, q, MovingJoints(robot.model, {}), data->params,
                         0.002);
     const std::vector<Eigen::Isometry3d> fk = LinkPoses(robot.model, q);
@@ -63,7 +63,8 @@ TEST_P(KickingRobotTest, MotorsHoldTheStandingPoseAgainstGravity) {
   const auto data = testing::LoadPhysicsFixture("spl", true);
   std::vector<double> q = RandomPose(robot.model, 5);
   for (std::size_t j = 0; j < q.size(); ++j) q[j] *= 0.5;  // away from the limits
-  BulletWorld world(BulletWorld::Kind::kMultiBody, data->params.steps.solver_iterations);
+  BulletWorld world(BulletWorld::Kind::kMultiBody,
+                    {data->params.steps.solver_iterations, data->params.steps.restitution_threshold_mps});
   const double dt = data->params.steps.kick_time_step_s;
   KickingRobot kicker(world, robot, PlanarPose(0, 0, 0.6, 0), q, MovingJoints(robot.model, {}),
                       data->params, dt);

@@ -30,9 +30,10 @@ TEST(CheckKindsTest, KindNamesAreTheSpecsWords) {
   EXPECT_EQ(KindName(KickDirectionCheck{}), "kick_direction");
   EXPECT_EQ(KindName(CalibrationBandCheck{}), "calibration_band");
   EXPECT_EQ(KindName(FidelityFloorCheck{}), "fidelity_floor");
-  EXPECT_EQ(TunnellingTargetName(TunnellingTarget::kPost), "post");
-  EXPECT_EQ(TunnellingTargetName(TunnellingTarget::kBackNet), "back_net");
-  EXPECT_EQ(TunnellingTargetName(TunnellingTarget::kSideNet), "side_net");
+  EXPECT_EQ(KindName(ReboundCheck{}), "rebound");
+  EXPECT_EQ(ImpactTargetName(ImpactTarget::kPost), "post");
+  EXPECT_EQ(ImpactTargetName(ImpactTarget::kBackNet), "back_net");
+  EXPECT_EQ(ImpactTargetName(ImpactTarget::kSideNet), "side_net");
 }
 
 TEST(CheckKindsTest, ValidateNamesTheFieldAndTheValue) {
@@ -53,9 +54,10 @@ TEST(CheckKindsTest, ValidateNamesTheFieldAndTheValue) {
 TEST(CheckKindsTest, RunsACheckBuiltInCode) {
   NoTunnellingCheck post;
   post.field = "spl";
-  post.target = TunnellingTarget::kPost;
+  post.target = ImpactTarget::kPost;
   post.speed_mps = 10.0;
-  post.max_penetration_m = 0.01;
+  post.phases = 3;
+  post.max_penetration_steps = 1.2;
   CheckSpec spec;
   spec.name = "post";
   spec.kind = post;

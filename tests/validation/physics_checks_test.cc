@@ -39,15 +39,26 @@ std::string Roll(const std::string& max_error) {
   return text;
 }
 
+const CheckSpec& Named(const CheckSuite& suite, const std::string& name) {
+  for (const CheckSpec& spec : suite.checks) {
+    if (spec.name == name) return spec;
+  }
+  ADD_FAILURE() << "no check " << name;
+  return suite.checks.front();
+}
+
 TEST(PhysicsChecksTest, ShippedSpecLoads) {
   const CheckSuite suite = LoadCheckSuite(testing::ModelsDir() / "check_specs" / "default.json");
   EXPECT_EQ(suite.name, "default");
-  EXPECT_EQ(suite.checks.size(), 14u);
   // Each check is read into its kind's typed settings.
-  const auto& net = std::get<NoTunnellingCheck>(suite.checks[4].kind);
-  EXPECT_EQ(net.target, TunnellingTarget::kBackNet);
-  EXPECT_EQ(net.speed_mps, 10.0);
-  const auto& band = std::get<CalibrationBandCheck>(suite.checks[11].kind);
+  const CheckSpec& net_spec = Named(suite, "spl_back_net_12mps");
+  const auto& net = std::get<NoTunnellingCheck>(net_spec.kind);
+  EXPECT_EQ(net.target, ImpactTarget::kBackNet);
+  EXPECT_EQ(net.speed_mps, 12.0);
+  EXPECT_EQ(net.phases, 20);
+  const auto& rebound = std::get<ReboundCheck>(Named(suite, "spl_post_rebound").kind);
+  EXPECT_EQ(rebound.speeds_mps, (std::vector<double>{0.3, 1.0, 2.0, 5.0, 10.0}));
+  const auto& band = std::get<CalibrationBandCheck>(Named(suite, "nao_calibration_band").kind);
   EXPECT_EQ(band.robot, "nao");
   EXPECT_EQ(band.trials, 200);
   EXPECT_EQ(band.seed, 7u);
@@ -61,23 +72,29 @@ TEST(PhysicsChecksTest, BadSpecsNameFileAndField) {
   } cases[] = {
       {"kind.json", R"({"name": "a", "kind": "levitate"})", "unknown kind 'levitate'"},
       {"key.json",
-       R"({"name": "a", "kind": "no_tunnelling", "field": "spl", "target": "post", "speed_mps": 5, "max_penetration_m": 0.01, "colour": "red"})",
+       R"({"name": "a", "kind": "no_tunnelling", "field": "spl", "target": "post", "speed_mps": 5, "phases": 4, "max_penetration_steps": 1.2, "colour": "red"})",
        "colour"},
       {"target.json",
-       R"({"name": "a", "kind": "no_tunnelling", "field": "spl", "target": "goalie", "speed_mps": 5, "max_penetration_m": 0.01})",
+       R"({"name": "a", "kind": "no_tunnelling", "field": "spl", "target": "goalie", "speed_mps": 5, "phases": 4, "max_penetration_steps": 1.2})",
        "goalie"},
       {"trials.json",
        R"({"name": "a", "kind": "kick_direction", "robot": "nao", "kick": "forward", "kicks": "nao", "trials": 2.5, "max_error_deg": 5})",
        "trials"},
       {"missing.json", R"({"name": "a", "kind": "free_roll", "field": "spl"})", "speed_mps"},
       {"speed.json",
-       R"({"name": "a", "kind": "no_tunnelling", "field": "spl", "target": "post", "speed_mps": -5, "max_penetration_m": 0.01})",
-       "checks[0].speed_mps: must be > 0, got -5"},
+       R"({"name": "a", "kind": "no_tunnelling", "field": "spl", "target": "post", "speed_mps": -5, "phases": 4, "max_penetration_steps": 1.2})",
+       "checks[0].speed_mps: must be in [0.05, 20], got -5"},
       {"seed.json",
        R"({"name": "a", "kind": "calibration_band", "robot": "nao", "kicks": "nao", "trials": 20, "seed": 1.5, "band_rel": 0.2, "band_deg": 2})",
        "checks[0].seed: must be a whole number"},
       {"twice.json", Roll("0.02") + "," + Roll("0.02"), "duplicate check name 'roll'"},
       {"empty.json", "", "checks"},
+      {"phases.json",
+       R"({"name": "a", "kind": "rebound", "field": "spl", "target": "post", "speeds_mps": [1], "phases": 0, "max_error_rel": 0.05, "min_error_mps": 0.005})",
+       "checks[0].phases: must be a whole number in [1, 1000], got 0"},
+      {"speeds.json",
+       R"({"name": "a", "kind": "rebound", "field": "spl", "target": "post", "speeds_mps": [], "phases": 3, "max_error_rel": 0.05, "min_error_mps": 0.005})",
+       "checks[0].speeds_mps: must list at least one speed"},
   };
   for (const auto& c : cases) {
     const auto file = Spec(c.name, c.checks);
@@ -102,10 +119,29 @@ TEST(PhysicsChecksTest, FreeRollPassesWithinItsToleranceAndFailsWithoutOne) {
 TEST(PhysicsChecksTest, FastBallDoesNotTunnelThroughThePost) {
   const CheckSuite suite = LoadCheckSuite(Spec(
       "post.json",
-      R"({"name": "post", "kind": "no_tunnelling", "field": "spl", "target": "post", "speed_mps": 10, "max_penetration_m": 0.01})"));
+      R"({"name": "post", "kind": "no_tunnelling", "field": "spl", "target": "post", "speed_mps": 10, "phases": 4, "max_penetration_steps": 1.2})"));
   const CheckResult r = RunChecks(suite, testing::ModelsDir(), 1, {})[0];
   EXPECT_TRUE(r.passed) << r.detail;
-  EXPECT_THAT(r.detail, HasSubstr("first contact post"));
+  EXPECT_THAT(r.detail, HasSubstr("into the post at 4 phases"));
+}
+
+TEST(PhysicsChecksTest, ReboundPassesWithTheMaterialsAndFailsWithoutATolerance) {
+  const std::string rebound =
+      R"({"name": "rebound", "kind": "rebound", "field": "spl", "target": "post", "speeds_mps": [1, 5], "phases": 3, "max_error_rel": TOL, "min_error_mps": MIN})";
+  const auto with = [&](const char* tol, const char* min) {
+    std::string text = rebound;
+    text.replace(text.find("TOL"), 3, tol);
+    text.replace(text.find("MIN"), 3, min);
+    return text;
+  };
+  const CheckResult pass =
+      RunChecks(LoadCheckSuite(Spec("rebound.json", with("0.05", "0.005"))), testing::ModelsDir(), 1, {})[0];
+  EXPECT_TRUE(pass.passed) << pass.detail;
+  EXPECT_THAT(pass.detail, HasSubstr("post, e = 0.300"));
+  // The solver is not exact to the last bit: no tolerance at all must fail.
+  const CheckResult strict =
+      RunChecks(LoadCheckSuite(Spec("rebound0.json", with("0", "0"))), testing::ModelsDir(), 1, {})[0];
+  EXPECT_FALSE(strict.passed) << strict.detail;
 }
 
 TEST(PhysicsChecksTest, JUnitXmlCountsFailuresAndEscapes) {
