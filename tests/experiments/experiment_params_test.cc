@@ -4,6 +4,8 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include "models/kick_model.h"
 #include <unistd.h>
 
 #include "common/error.h"
@@ -73,7 +75,9 @@ TEST(ExperimentParamsTest, KicksOverrideReplacesTheScenesKickModel) {
   const auto kicks = Models() / "kicks" / "nao_calibrated.json";
   const StrategiesParams p = LoadStrategiesParams("strategies", Models(), kicks);
   EXPECT_EQ(p.situation.kicks_file, kicks);
-  EXPECT_NEAR(p.situation.kicks.kicks[0].speed_mps, 0.772, 0.01);
+  // The calibrated model's forward kick, not the paper's 1.08 m/s of the scene's own model.
+  EXPECT_EQ(p.situation.kicks.kicks[0].speed_mps, LoadKickModel(kicks).kicks[0].speed_mps);
+  EXPECT_NE(p.situation.kicks.kicks[0].speed_mps, 1.08);
 }
 
 TEST(ExperimentParamsTest, BadValuesNameFileFieldAndValue) {
