@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "common/checks.h"
 #include "common/error.h"
@@ -71,7 +72,40 @@ void CheckStandingPose(const Robot& robot, const std::string& spec_file) {
   }
 }
 
-void CheckMotion(const KickMotion& motion, const RobotModel& model, const std::string& file) {
+// The motion's targets sampled this finely find the spline's fastest point to well under 1 %.
+constexpr double kSpeedCheckStepS = 0.001;
+
+// No joint may be asked to turn faster than its URDF velocity limit, at the fastest playback;
+// the message names the worst excess (joint, time, speed).
+void CheckJointSpeeds(const KickMotion& motion, const RobotModel& model, double max_factor,
+                      const std::string& file) {
+  const std::size_t n = motion.joints.size();
+  std::vector<double> q(n), qdot(n);
+  double worst_share = 1.0, worst_speed = 0.0, worst_t = 0.0;
+  const RobotJoint* worst = nullptr;
+  for (double t = 0.0; t <= motion.DurationS(); t += kSpeedCheckStepS) {
+    motion.Sample(t, q, qdot);
+    for (std::size_t j = 0; j < n; ++j) {
+      const RobotJoint& joint = model.joints[*model.FindJoint(motion.joints[j])];
+      const double speed = std::abs(qdot[j]) * max_factor;
+      if (speed <= worst_share * joint.velocity_radps) continue;
+      worst_share = speed / joint.velocity_radps;
+      worst_speed = speed;
+      worst_t = t;
+      worst = &joint;
+    }
+  }
+  if (worst == nullptr) return;
+  char message[256];
+  std::snprintf(message, sizeof message,
+                "keyframes: %s must turn at %.3f rad/s at t = %.3f s when played %.3g times as "
+                "fast (the fastest trial), over its limit of %.3f rad/s",
+                worst->name.c_str(), worst_speed, worst_t, max_factor, worst->velocity_radps);
+  throw InputError(file + ": " + message);
+}
+
+void CheckMotion(const KickMotion& motion, const RobotModel& model, double max_factor,
+                 const std::string& file) {
   for (std::size_t j = 0; j < motion.joints.size(); ++j) {
     const std::string joint_field = "joints[" + std::to_string(j) + "]";
     const RobotJoint& joint = RevoluteJoint(model, motion.joints[j], file, joint_field);
@@ -81,6 +115,7 @@ void CheckMotion(const KickMotion& motion, const RobotModel& model, const std::s
       RequireWithinLimits(joint, motion.keyframes[k].positions_rad[j], file, label);
     }
   }
+  CheckJointSpeeds(motion, model, max_factor, file);
 }
 
 }  // namespace
@@ -192,7 +227,7 @@ Robot LoadRobot(const std::string& name, const std::filesystem::path& models_dir
       throw InputError(motion_file.string() + ": name: must be '" + kick_name + "' (the kick in " +
                        spec_file.string() + "), got '" + motion.name + "'");
     }
-    CheckMotion(motion, robot.model, motion_file.string());
+    CheckMotion(motion, robot.model, robot.spec.variation.MaxSpeedFactor(), motion_file.string());
   }
   return robot;
 }

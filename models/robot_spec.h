@@ -15,12 +15,17 @@
 
 namespace foresight {
 
+// Each trial draws these errors from normal distributions clipped at kClipSigmas (a robot never
+// stands a metre off, a motion never plays at twice its speed).
 struct TrialVariation {
+  static constexpr double kClipSigmas = 3.0;
   double placement_sigma_x_m = 0.0;        // robot's placement error along R's x
   double placement_sigma_y_m = 0.0;        // ... along R's y
   double placement_sigma_theta_rad = 0.0;  // heading error
   double motion_speed_sigma_rel = 0.0;     // relative std. dev. of the motion's playback speed
   void Validate(const std::string& file) const;
+  // The fastest a motion is ever played (1 = as written).
+  double MaxSpeedFactor() const { return 1.0 + kClipSigmas * motion_speed_sigma_rel; }
 };
 
 struct RobotSpec {
@@ -36,7 +41,8 @@ RobotSpec LoadRobotSpec(const std::filesystem::path& file);
 
 // A robot ready for physics: its spec, body and kick motions, checked against each other
 // (every joint a motion or the standing pose names exists and is revolute; every target lies
-// within the joint's limits).
+// within the joint's limits; no motion, played at the fastest speed a trial draws, asks a joint
+// for more than its velocity limit).
 struct Robot {
   RobotSpec spec;
   RobotModel model;

@@ -73,7 +73,8 @@ BallMonitor::BallMonitor(const FieldLines& lines, const Vec2& p_F_start, bool re
       category_(ClassifyPosition(lines, p_F_start)),
       record_trace_(record_trace) {}
 
-void BallMonitor::Observe(double t_s, const BallState& state, Contact contact) {
+void BallMonitor::Observe(double t_s, const BallState& state, const StepContacts& contacts) {
+  const Contact contact = contacts.other;
   if (first_contact_ == Contact::kNone) first_contact_ = contact;
   const Vec2 p = state.Planar();
   if (category_ == Category::kInfield) {
@@ -82,7 +83,7 @@ void BallMonitor::Observe(double t_s, const BallState& state, Contact contact) {
     if (length > 0.0) category_ = ClassifyPath(lines_, last_p_F_, step / length, length);
   }
   last_p_F_ = p;
-  if (record_trace_) trace_.push_back({t_s, state.p_F, state.v_F});
+  if (record_trace_) trace_.push_back({t_s, state.p_F, state.v_F, contacts.kicker});
 }
 
 }  // namespace foresight

@@ -35,6 +35,7 @@ struct TracePoint {
   double t_s = 0.0;
   Eigen::Vector3d p_F = Eigen::Vector3d::Zero();
   Eigen::Vector3d v_F = Eigen::Vector3d::Zero();
+  bool kicker_contact = false;  // the kicking robot touched the ball in this step
 };
 
 // What the ball touched in the last step.
@@ -50,7 +51,7 @@ class BallMonitor {
  public:
   BallMonitor(const FieldLines& lines, const Vec2& p_F_start, bool record_trace);
 
-  void Observe(double t_s, const BallState& state, Contact contact);
+  void Observe(double t_s, const BallState& state, const StepContacts& contacts);
   Category category() const { return category_; }
   Contact first_contact() const { return first_contact_; }
   std::vector<TracePoint>& trace() { return trace_; }

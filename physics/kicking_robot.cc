@@ -111,6 +111,9 @@ KickingRobot::KickingRobot(BulletWorld& world, const Robot& robot,
                                                          model.joints[j].effort_nm * dt_s);
     motor->setPositionTarget(q_rad[j], params.motors.position_gain);
     motor->setVelocityTarget(0.0, params.motors.velocity_gain);
+    // The motor never aims faster than the joint can turn, whatever its position error (the
+    // motions are checked at load; this bounds the catch-up after a lag or a speed draw).
+    motor->setRhsClamp(model.joints[j].velocity_radps);
     motors_[j] = motor.get();
     world.AddConstraint(std::move(motor));
   }

@@ -7,7 +7,7 @@
 //   rot_parent_to_this = R_CL_CP,          joint axis in CL = R_CL_L * axis_J,
 //   parent COM to pivot = t(pose_CP_J),    pivot to this COM (in CL) = R_CL_L * t_L_CL.
 // Motors: one btMultiBodyJointMotor per moving joint, its impulse limited by the URDF effort
-// times the step.
+// times the step and the speed it aims at by the URDF velocity limit.
 #pragma once
 
 #include <Eigen/Geometry>

@@ -74,7 +74,7 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
       end.touched = true;
       last_touch_s = t;
     }
-    monitor.Observe(t, end.ball, contacts.other);
+    monitor.Observe(t, end.ball, contacts);
     if (end.touched && t - last_touch_s >= kReleaseTimeS && RollsFreely(end.ball, radius)) {
       end.launched = true;
       break;
@@ -107,7 +107,7 @@ PhaseEnd RunRollPhase(const PhysicsScene& scene, const Carpet& carpet, const Bal
     world.world().stepSimulation(dt, 0, dt);
     end.t_s += dt;
     end.ball = ReadBall(*ball);
-    monitor.Observe(end.t_s, end.ball, ContactsOf(*world.world().getDispatcher(), *ball).other);
+    monitor.Observe(end.t_s, end.ball, ContactsOf(*world.world().getDispatcher(), *ball));
   }
   return end;
 }

@@ -11,9 +11,8 @@ namespace foresight {
 
 namespace {
 
-// Normal draws are clipped at 3 sigma: a robot never stands a metre off.
 double ClippedNormal(RandomStream& stream) {
-  return std::clamp(stream.NextNormal(), -3.0, 3.0);
+  return std::clamp(stream.NextNormal(), -TrialVariation::kClipSigmas, TrialVariation::kClipSigmas);
 }
 
 // A missed ball is what went wrong first: it then lies still, so it also settles.

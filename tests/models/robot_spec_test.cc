@@ -64,8 +64,8 @@ constexpr const char* kForward = R"({
   "joints": ["KneePitch", "HipPitch"],
   "keyframes": [
     {"time_s": 0.0, "positions_deg": [40.0, -20.0]},
-    {"time_s": 0.2, "positions_deg": [100.0, -60.0]},
-    {"time_s": 0.4, "positions_deg": [40.0, -20.0]}
+    {"time_s": 0.35, "positions_deg": [100.0, -60.0]},
+    {"time_s": 0.7, "positions_deg": [40.0, -20.0]}
   ]
 })";
 
@@ -233,6 +233,25 @@ TEST(RobotSpecTest, LoadRobotAssemblesSpecModelAndMotions) {
   EXPECT_EQ(robot.FindMotion("forward"), 0);
   EXPECT_EQ(robot.FindMotion("side"), 1);
   EXPECT_EQ(robot.FindMotion("Side"), std::nullopt);
+}
+
+TEST(RobotSpecTest, MotionFasterThanAJointCanTurnIsRejected) {
+  // Knee 40 -> 100 deg in 0.1 s: the spline's peak is 1.5 * 60 deg / 0.1 s = 15.7 rad/s, and a
+  // trial may play it 1.15 times as fast; the URDF allows 6 rad/s.
+  const std::filesystem::path models = TesterModels(
+      "too_fast", {"motions/forward.json", "\"time_s\": 0.35", "\"time_s\": 0.1"});
+  const std::string message = RobotError(models);
+  EXPECT_THAT(message, StartsWith((models / "robots/tester/motions/forward.json").string() +
+                                  ": keyframes: KneePitch must turn at 18."));
+  EXPECT_THAT(message, HasSubstr("when played 1.15 times as fast (the fastest trial), over its "
+                                 "limit of 6.000 rad/s"));
+}
+
+TEST(RobotSpecTest, ShippedMotionsRespectTheJointSpeedLimits) {
+  for (const char* name : {"nao", "aibo_ers7"}) {
+    const Robot robot = LoadRobot(name, ModelsDir());  // throws if a motion is too fast
+    EXPECT_FALSE(robot.motions.empty()) << name;
+  }
 }
 
 TEST(RobotSpecTest, StandingPositionsFollowTheModelsJointOrder) {
