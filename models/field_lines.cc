@@ -27,6 +27,9 @@ FieldLines FieldLines::Of(const FieldSpec& field) {
   lines.out_y_m = field.HalfWidth() + beyond_line;
   lines.goal_half_width_m = field.goal.post_centre_y_m;
   lines.goal_depth_x_m = field.goal.post_centre_x_m + field.goal.net_depth_m;
+  // Under the crossbar (centred at the net's height, as thick as a post) with the whole ball.
+  lines.goal_max_centre_z_m =
+      field.goal.net_height_m - field.goal.post_radius_m - field.ball.radius_m;
   return lines;
 }
 

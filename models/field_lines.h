@@ -18,6 +18,9 @@ struct FieldLines {
   double out_y_m = 0.0;            // |y| beyond this: over a side line
   double goal_half_width_m = 0.0;  // |y| below this when crossing a goal line: a goal
   double goal_depth_x_m = 0.0;     // x of the back nets
+  // Physics only (the coarse model's ball never leaves the carpet): a ball whose centre is
+  // higher than this as it crosses a goal line passes over the crossbar, which is out.
+  double goal_max_centre_z_m = 0.0;
 
   static FieldLines Of(const FieldSpec& field);
 };

@@ -34,6 +34,9 @@ void FieldSpec::Validate() const {
   RequireInRange("ball.radius_m", ball.radius_m, 1e-3, goal.InnerHalfWidth());
   RequirePositive("ball.mass_kg", ball.mass_kg);
   RequireInRange("ball.mass_kg", ball.mass_kg, 0.0, kMaxBallMassKg);
+  // A sphere's mass can lie no farther out than its surface (k = 2/3) and no closer in than a
+  // point at its centre (k = 0); every real ball lies between a solid one and a shell.
+  RequireInRange("ball.inertia_factor", ball.inertia_factor, 0.4, 2.0 / 3.0);
   RequireInRange("default_obstacle_radius_m", default_obstacle_radius_m, 0.01, 2.0);
 }
 
@@ -62,9 +65,10 @@ FieldSpec LoadFieldSpec(const std::filesystem::path& file) {
   spec.goal.net_height_m = goal.Number("net_height_m");
 
   JsonObject ball = root.Object("ball");
-  ball.RejectUnknownKeys({"radius_m", "mass_kg"});
+  ball.RejectUnknownKeys({"radius_m", "mass_kg", "inertia_factor"});
   spec.ball.radius_m = ball.Number("radius_m");
   spec.ball.mass_kg = ball.Number("mass_kg");
+  spec.ball.inertia_factor = ball.Number("inertia_factor");
 
   WithFile(file.string(), [&] { spec.Validate(); });
   return spec;

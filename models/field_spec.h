@@ -23,6 +23,9 @@ struct GoalSpec {
 struct BallSpec {
   double radius_m = 0.0;
   double mass_kg = 0.0;
+  // k = I / (m r^2): 2/5 for a solid ball, 2/3 for a thin hollow shell. A ball kicked sliding
+  // starts to roll at 1 / (1 + k) of its speed (5/7 solid, 3/5 hollow).
+  double inertia_factor = 0.0;
 };
 
 struct FieldSpec {

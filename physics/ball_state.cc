@@ -81,9 +81,11 @@ void BallMonitor::Observe(double t_s, const BallState& state, const StepContacts
     const Vec2 step = p - last_p_F_;
     const double length = step.norm();
     if (length > 0.0) category_ = ClassifyPath(lines_, last_p_F_, step / length, length);
+    const bool goal = category_ == Category::kOppGoal || category_ == Category::kOwnGoal;
+    if (goal && state.p_F.z() > lines_.goal_max_centre_z_m) category_ = Category::kOut;
   }
   last_p_F_ = p;
-  if (record_trace_) trace_.push_back({t_s, state.p_F, state.v_F, contacts.kicker});
+  if (record_trace_) trace_.push_back({t_s, state.p_F, state.v_F, state.w_F, contacts.kicker});
 }
 
 }  // namespace foresight

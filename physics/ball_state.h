@@ -35,6 +35,7 @@ struct TracePoint {
   double t_s = 0.0;
   Eigen::Vector3d p_F = Eigen::Vector3d::Zero();
   Eigen::Vector3d v_F = Eigen::Vector3d::Zero();
+  Eigen::Vector3d w_F = Eigen::Vector3d::Zero();
   bool kicker_contact = false;  // the kicking robot touched the ball in this step
 };
 
@@ -46,7 +47,8 @@ struct StepContacts {
 StepContacts ContactsOf(btDispatcher& dispatcher, const btCollisionObject& ball);
 
 // Follows the ball step by step: the first line its path crosses decides the category (as in
-// the coarse model), the first post, net or obstacle it touches is the first contact.
+// the coarse model, and a ball crossing a goal line over the crossbar is out), the first post,
+// net or obstacle it touches is the first contact.
 class BallMonitor {
  public:
   BallMonitor(const FieldLines& lines, const Vec2& p_F_start, bool record_trace);

@@ -28,6 +28,10 @@ BodyTag TagOf(const btCollisionObject& object) {
   return static_cast<BodyTag>(object.getUserIndex());
 }
 
+void MakeContactsNonSpeculative(btCollisionObject& object) {
+  object.setContactProcessingThreshold(0.0);
+}
+
 namespace {
 
 std::unique_ptr<btCollisionConfiguration> MakeConfig() {
@@ -90,6 +94,7 @@ btRigidBody* BulletWorld::AddStatic(btCollisionShape* shape, const btTransform& 
   info.m_friction = material.friction;
   auto body = std::make_unique<btRigidBody>(info);
   body->setUserIndex(static_cast<int>(tag));
+  if (tag != BodyTag::kCarpet) MakeContactsNonSpeculative(*body);
   btRigidBody* raw = body.get();
   objects_.push_back(std::move(body));
   world_->addRigidBody(raw, kGroupStatic, kGroupBall);
@@ -97,11 +102,9 @@ btRigidBody* BulletWorld::AddStatic(btCollisionShape* shape, const btTransform& 
 }
 
 btRigidBody* BulletWorld::AddDynamic(btCollisionShape* shape, double mass_kg,
-                                     const btTransform& pose_F, BodyTag tag, Material material,
-                                     int group, int mask) {
-  btVector3 inertia(0, 0, 0);
-  shape->calculateLocalInertia(mass_kg, inertia);
-  btRigidBody::btRigidBodyConstructionInfo info(mass_kg, nullptr, shape, inertia);
+                                     const btVector3& inertia_kgm2, const btTransform& pose_F,
+                                     BodyTag tag, Material material, int group, int mask) {
+  btRigidBody::btRigidBodyConstructionInfo info(mass_kg, nullptr, shape, inertia_kgm2);
   info.m_startWorldTransform = pose_F;
   info.m_restitution = material.restitution;
   info.m_friction = material.friction;

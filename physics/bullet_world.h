@@ -26,6 +26,15 @@ enum class BodyTag : int { kUntagged = 0, kCarpet, kBall, kPost, kNet, kObstacle
 Contact ContactOf(BodyTag tag);
 BodyTag TagOf(const btCollisionObject& object);
 
+// What the ball bounces off (posts, nets, robots: everything but the carpet) gets no speculative
+// contacts. Bullet otherwise reports a contact while a gap remains and aims at a separation
+// speed e*v - gap/dt, so the ball arrives too slowly to bounce (restitution lost, or random with
+// where in the step the contact falls). Such contacts are solved once the bodies overlap; the
+// roll's time steps keep the overlap small (physics_scene.h, RollTimeStep). A pair's threshold
+// is the smaller of its bodies', so the carpet keeps Bullet's default and the ball rests on it
+// without falling in and out of contact every step.
+void MakeContactsNonSpeculative(btCollisionObject& object);
+
 // Collision groups: the kicking robot touches only the ball (its base is fixed, so carpet
 // contacts would only fight the motors).
 enum CollisionGroup : int {
@@ -70,9 +79,10 @@ class BulletWorld {
   // A static body (posts, nets, carpet, obstacle robots).
   btRigidBody* AddStatic(btCollisionShape* shape, const btTransform& pose_F, BodyTag tag,
                          Material material);
-  // A dynamic rigid body; the ball.
-  btRigidBody* AddDynamic(btCollisionShape* shape, double mass_kg, const btTransform& pose_F,
-                          BodyTag tag, Material material, int group, int mask);
+  // A dynamic rigid body (the ball) with the principal moments of inertia inertia_kgm2.
+  btRigidBody* AddDynamic(btCollisionShape* shape, double mass_kg, const btVector3& inertia_kgm2,
+                          const btTransform& pose_F, BodyTag tag, Material material, int group,
+                          int mask);
   // Takes ownership of a multibody, its colliders and constraints (multibody worlds only).
   btMultiBody* AddMultiBody(std::unique_ptr<btMultiBody> body);
   void AddCollider(std::unique_ptr<btCollisionObject> collider, int group, int mask);

@@ -7,6 +7,10 @@
 // heading. Bullet's own rolling friction on a btRigidBody bends the path when the ball rolls off
 // the world axes (bullet3 issue #2117), which is why it is not used.
 //
+// The resistance acts only while the ball rolls: a ball that slides (just kicked, or after a
+// bounce) is slowed by Coulomb friction at its contact point instead, which also spins it up
+// until it rolls at v / (1 + k) (k from the field's ball).
+//
 // a varies: by a factor per trial (the day's carpet, wear) and by a factor per square patch of
 // carpet (a fixed layout drawn from the patch seed). docs/ARCHITECTURE.md, "One physics trial".
 #pragma once
@@ -24,7 +28,7 @@ class Carpet {
 
   // The deceleration of a freely rolling ball at p_F.
   double DecelerationAt(const Vec2& p_F) const;
-  // Applies this step's resisting force to `ball` if it touches the carpet (the force is
+  // Applies this step's resisting force to `ball` if it rolls on the carpet (the force is
   // capped so it stops the ball within the step instead of pushing it backwards).
   void ApplyRollingResistance(btRigidBody& ball, double radius_m, double dt_s) const;
 
@@ -36,6 +40,13 @@ class Carpet {
 // Whether a ball of this radius whose centre is at height z_m touches the carpet.
 inline bool TouchesCarpet(double z_m, double radius_m) {
   return z_m < radius_m + 1e-3;
+}
+
+// Whether a ball moving at speed_mps whose contact point slips at slip_mps rolls rather than
+// slides: the slip is below 1 % of its speed or 1 cm/s (the solver never makes it exactly 0).
+inline bool IsRolling(double slip_mps, double speed_mps) {
+  constexpr double kSlipShare = 0.01, kSlipFloorMps = 0.01;
+  return slip_mps < kSlipFloorMps || slip_mps < kSlipShare * speed_mps;
 }
 
 }  // namespace foresight

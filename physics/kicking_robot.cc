@@ -56,6 +56,7 @@ void AddColliders(BulletWorld& world, btMultiBody& body, const RobotModel& model
     auto collider = std::make_unique<btMultiBodyLinkCollider>(&body, index);
     collider->setCollisionShape(shape);
     collider->setUserIndex(static_cast<int>(BodyTag::kKicker));
+    MakeContactsNonSpeculative(*collider);
     collider->setRestitution(params.materials.restitution.foot);
     collider->setFriction(params.materials.friction.foot);
     btMultiBodyLinkCollider* raw = collider.get();

@@ -11,25 +11,19 @@ namespace foresight {
 
 namespace {
 
-// A ball counts as launched once the robot has not touched it for this long ...
+// A ball counts as launched once the robot has not touched it for this long and it rolls.
 constexpr double kReleaseTimeS = 0.02;
-// ... and its contact point slides slower than this share of its speed (or 1 cm/s).
-constexpr double kRollingSlipShare = 0.01;
-constexpr double kRollingSlipFloorMps = 0.01;
 // Once the motion is over this long without a touch, the kick missed.
 constexpr double kMissGraceS = 0.2;
 
 btRigidBody* AddBall(BulletWorld& world, const PhysicsScene& scene, const BallState& state) {
   const BallSpec& spec = scene.field->ball;
   auto* shape = world.Own(std::make_unique<btSphereShape>(spec.radius_m));
-  btRigidBody* ball = world.AddDynamic(shape, spec.mass_kg, btTransform::getIdentity(),
-                                       BodyTag::kBall, kBallMaterial, kGroupBall,
-                                       kGroupStatic | kGroupKicker);
-  // No speculative contacts: Bullet reports a contact while a gap remains and then aims at a
-  // separation speed e*v - gap/dt, so the ball arrives too slowly to bounce (restitution lost
-  // or random with the step's phase). Contacts are solved once the ball touches; the time
-  // steps keep the overlap below v*dt, far less than the thinnest thing it can hit.
-  ball->setContactProcessingThreshold(0.0);
+  // Bullet's sphere has the inertia of a solid ball; the field says what this ball is.
+  const double inertia = spec.inertia_factor * spec.mass_kg * spec.radius_m * spec.radius_m;
+  btRigidBody* ball = world.AddDynamic(shape, spec.mass_kg, btVector3(inertia, inertia, inertia),
+                                       btTransform::getIdentity(), BodyTag::kBall, kBallMaterial,
+                                       kGroupBall, kGroupStatic | kGroupKicker);
   WriteBall(*ball, state);
   return ball;
 }
@@ -40,8 +34,7 @@ SolverSettings SolverOf(const StepParams& steps) {
 
 bool RollsFreely(const BallState& ball, double radius_m) {
   if (!TouchesCarpet(ball.p_F.z(), radius_m) || std::abs(ball.v_F.z()) > 0.05) return false;
-  const double tolerance = std::max(kRollingSlipFloorMps, kRollingSlipShare * ball.PlanarSpeed());
-  return ball.SlipSpeed(radius_m) < tolerance;
+  return IsRolling(ball.SlipSpeed(radius_m), ball.PlanarSpeed());
 }
 
 }  // namespace
@@ -97,8 +90,9 @@ PhaseEnd RunRollPhase(const PhysicsScene& scene, const Carpet& carpet, const Bal
   const double t_limit = t_start_s + steps.max_roll_time_s;
   while (end.t_s < t_limit) {
     const bool on_carpet = TouchesCarpet(end.ball.p_F.z(), radius);
-    if (on_carpet && end.ball.PlanarSpeed() < steps.rest_speed_mps &&
-        std::abs(end.ball.v_F.z()) < steps.rest_speed_mps) {
+    const bool rests = on_carpet && end.ball.PlanarSpeed() < steps.rest_speed_mps &&
+                       std::abs(end.ball.v_F.z()) < steps.rest_speed_mps;
+    if (rests || (scene.carpet_has_edge && !WithinCarpet(scene, end.ball.Planar()))) {
       end.settled = true;
       break;
     }

@@ -4,7 +4,8 @@
 // until the ball has left the robot and rolls without sliding on the carpet (it has "launched"),
 // the motion is over without a touch, or the phase's time limit is reached.
 // Roll phase: a light world without the kicking robot (carpet, goals, obstacle robots, ball),
-// stepped with RollTimeStep, until the ball rests or the roll's time limit is reached.
+// stepped with RollTimeStep, until the ball rests, leaves the carpet (its edge stops it) or the
+// roll's time limit is reached.
 // Splitting is what makes a trial cheap: the multibody costs far more per step than the ball,
 // and after the launch the robot no longer matters (the ball does not come back to it: a
 // limitation of the split, see physics_simulator.h).

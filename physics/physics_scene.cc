@@ -114,6 +114,11 @@ void AddStatics(BulletWorld& world, const PhysicsScene& scene) {
   }
 }
 
+bool WithinCarpet(const PhysicsScene& scene, const Vec2& p_F) {
+  return std::abs(p_F.x()) <= 0.5 * scene.field->carpet_length_m &&
+         std::abs(p_F.y()) <= 0.5 * scene.field->carpet_width_m;
+}
+
 double RollTimeStep(const PhysicsScene& scene, const Vec2& p_F, double speed_mps, bool on_carpet) {
   const StepParams& steps = scene.params.steps;
   // Contacts are solved once the ball overlaps (no speculative contacts), so a step may carry it

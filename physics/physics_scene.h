@@ -34,7 +34,14 @@ struct PhysicsScene {
   std::vector<Pose2> obstacle_poses;   // robots standing still, root frame on the carpet
   std::vector<NearZone> near_zones;    // goals and obstacles, grown by the ball's radius
   std::vector<double> standing_q_rad;  // the robot's standing joint positions
+  // The carpet ends (field.carpet_length_m x carpet_width_m) where boards stop a real ball: a
+  // trial ends when the ball's centre leaves it, the ball resting there (it crossed a line, so
+  // it is out or in a goal already). The engine checks roll on an unbounded carpet instead.
+  bool carpet_has_edge = true;
 };
+
+// Whether the ball's centre at p_F lies on the carpet.
+bool WithinCarpet(const PhysicsScene& scene, const Vec2& p_F);
 
 // Builds the scene of a situation: the obstacles stand where the situation puts them, facing
 // the ball. `robot` may be null when the situation has no obstacles and no kick is simulated.

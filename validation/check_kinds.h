@@ -32,8 +32,8 @@ inline constexpr int kMaxCheckTrials = 100000;
 inline constexpr int kMaxCheckPhases = 1000;
 inline constexpr double kMaxCheckSeed = 9007199254740992.0;  // 2^53: a JSON number holds it exactly
 
-// A ball set rolling on a uniform carpet (the field's physics file, its variation switched
-// off) stops at v^2 / 2a within max_error_rel and within max_lateral_m of its line.
+// A ball set rolling on a uniform carpet without edges (the field's physics file, its variation
+// switched off) stops at v^2 / 2a within max_error_rel and within max_lateral_m of its line.
 struct FreeRollCheck {
   static constexpr std::string_view kKind = "free_roll";
   std::string field;  // a field name or file, as a situation names it

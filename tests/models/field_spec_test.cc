@@ -102,8 +102,22 @@ TEST(FieldSpecTest, NumberGivenAsStringNamesTheValue) {
 
 TEST(FieldSpecTest, MissingBallObjectIsReported) {
   const auto file = BrokenSplField(
-      "no_ball", "\"ball\": {\n    \"radius_m\": 0.05,\n    \"mass_kg\": 0.045\n  },", "");
+      "no_ball",
+      "\"ball\": {\n    \"radius_m\": 0.05,\n    \"mass_kg\": 0.045,\n    \"inertia_factor\": 0.4\n  },",
+      "");
   EXPECT_EQ(LoadError(file), file.string() + ": ball: missing");
+}
+
+TEST(FieldSpecTest, InertiaFactorBeyondAShellIsRejected) {
+  const auto file =
+      BrokenSplField("shell", "\"inertia_factor\": 0.4", "\"inertia_factor\": 0.8");
+  EXPECT_EQ(LoadError(file),
+            file.string() + ": ball.inertia_factor: must be in [0.4, 0.6666666666666666], got 0.8");
+}
+
+TEST(FieldSpecTest, InertiaFactorIsRequired) {
+  const auto file = BrokenSplField("no_inertia", ",\n    \"inertia_factor\": 0.4", "");
+  EXPECT_EQ(LoadError(file), file.string() + ": ball.inertia_factor: missing");
 }
 
 TEST(FieldSpecTest, NegativePostRadiusNamesFieldAndValue) {

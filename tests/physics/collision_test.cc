@@ -127,3 +127,31 @@ TEST(ObstacleCollisionTest, FastBallNeverPassesThroughAStandingRobotsLegs) {
 
 }  // namespace
 }  // namespace foresight
+
+namespace foresight {
+namespace {
+
+// Issue 12: a ball that flies over the crossbar crosses the goal line between the posts but is
+// out; a ball rolling off the carpet stops at its edge instead of rolling on for tens of metres.
+TEST_F(CollisionTest, BallOverTheCrossbarIsOut) {
+  BallState lob = RollingBall(Vec2(3.8, 0.0), r_, 2.0, 0.0);
+  lob.v_F.z() = 4.5;  // at the goal line (0.4 s later) its centre is about 1 m up; the bar 0.8 m
+  const TrialResult result = RunRollTrial(scene_, lob, 7, true);
+  bool over_the_line_high = false;
+  for (const TracePoint& p : result.trace) {
+    if (std::abs(p.p_F.x() - goal_.post_centre_x_m) < 0.05) over_the_line_high = p.p_F.z() > 0.8;
+  }
+  EXPECT_TRUE(over_the_line_high);
+  EXPECT_EQ(result.outcome.category, Category::kOut);
+}
+
+TEST_F(CollisionTest, TheCarpetsEdgeStopsARollingBall) {
+  const TrialResult result = Roll(scene_, Vec2(0.0, 2.0), 4.0, 90.0);
+  EXPECT_TRUE(result.settled);
+  EXPECT_EQ(result.outcome.category, Category::kOut);
+  EXPECT_NEAR(result.outcome.p_F_rest.y(), 0.5 * data_->field.carpet_width_m, 0.05);
+  EXPECT_LT(result.outcome.time_s, 1.0);  // 1.7 m at about 4 m/s, not the 15 s of a 30 m roll
+}
+
+}  // namespace
+}  // namespace foresight
