@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "common/checks.h"
 #include "common/error.h"
@@ -79,28 +80,15 @@ constexpr double kSpeedCheckStepS = 0.001;
 // the message names the worst excess (joint, time, speed).
 void CheckJointSpeeds(const KickMotion& motion, const RobotModel& model, double max_factor,
                       const std::string& file) {
-  const std::size_t n = motion.joints.size();
-  std::vector<double> q(n), qdot(n);
-  double worst_share = 1.0, worst_speed = 0.0, worst_t = 0.0;
-  const RobotJoint* worst = nullptr;
-  for (double t = 0.0; t <= motion.DurationS(); t += kSpeedCheckStepS) {
-    motion.Sample(t, q, qdot);
-    for (std::size_t j = 0; j < n; ++j) {
-      const RobotJoint& joint = model.joints[*model.FindJoint(motion.joints[j])];
-      const double speed = std::abs(qdot[j]) * max_factor;
-      if (speed <= worst_share * joint.velocity_radps) continue;
-      worst_share = speed / joint.velocity_radps;
-      worst_speed = speed;
-      worst_t = t;
-      worst = &joint;
-    }
-  }
-  if (worst == nullptr) return;
+  const PeakJointSpeed peak = FindPeakJointSpeed(motion, model);
+  if (peak.joint < 0 || peak.share * max_factor <= 1.0) return;
+  const RobotJoint& joint = model.joints[peak.joint];
   char message[256];
   std::snprintf(message, sizeof message,
                 "keyframes: %s must turn at %.3f rad/s at t = %.3f s when played %.3g times as "
                 "fast (the fastest trial), over its limit of %.3f rad/s",
-                worst->name.c_str(), worst_speed, worst_t, max_factor, worst->velocity_radps);
+                joint.name.c_str(), peak.speed_radps * max_factor, peak.t_s, max_factor,
+                joint.velocity_radps);
   throw InputError(file + ": " + message);
 }
 
@@ -119,6 +107,31 @@ void CheckMotion(const KickMotion& motion, const RobotModel& model, double max_f
 }
 
 }  // namespace
+
+PeakJointSpeed FindPeakJointSpeed(const KickMotion& motion, const RobotModel& model) {
+  const std::size_t n = motion.joints.size();
+  std::vector<double> q(n), qdot(n);
+  PeakJointSpeed peak;
+  for (double t = 0.0; t <= motion.DurationS(); t += kSpeedCheckStepS) {
+    motion.Sample(t, q, qdot);
+    for (std::size_t j = 0; j < n; ++j) {
+      const int index = *model.FindJoint(motion.joints[j]);
+      const double share = std::abs(qdot[j]) / model.joints[index].velocity_radps;
+      if (share <= peak.share) continue;
+      peak = {index, t, std::abs(qdot[j]), share};
+    }
+  }
+  return peak;
+}
+
+double FastestAllowedPlayback(const Robot& robot) {
+  double fastest = std::numeric_limits<double>::infinity();
+  for (const KickMotion& motion : robot.motions) {
+    const PeakJointSpeed peak = FindPeakJointSpeed(motion, robot.model);
+    if (peak.share > 0.0) fastest = std::min(fastest, 1.0 / peak.share);
+  }
+  return fastest;
+}
 
 void TrialVariation::Validate(const std::string& file) const {
   WithFile(file, [&] {

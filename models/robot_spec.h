@@ -39,6 +39,21 @@ struct RobotSpec {
 
 RobotSpec LoadRobotSpec(const std::filesystem::path& file);
 
+struct Robot;
+
+// The fastest a joint turns in a motion played as written, sampled every millisecond: the joint
+// (index into model.joints; -1 if no joint moves), when, how fast, and as a share of its limit.
+struct PeakJointSpeed {
+  int joint = -1;
+  double t_s = 0.0;
+  double speed_radps = 0.0;
+  double share = 0.0;
+};
+PeakJointSpeed FindPeakJointSpeed(const KickMotion& motion, const RobotModel& model);
+
+// The fastest playback factor at which no motion of the robot exceeds a joint's speed limit.
+double FastestAllowedPlayback(const Robot& robot);
+
 // A robot ready for physics: its spec, body and kick motions, checked against each other
 // (every joint a motion or the standing pose names exists and is revolute; every target lies
 // within the joint's limits; no motion, played at the fastest speed a trial draws, asks a joint

@@ -6,6 +6,7 @@
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 
 #include <cassert>
+#include <mutex>
 
 namespace foresight {
 
@@ -30,6 +31,27 @@ BodyTag TagOf(const btCollisionObject& object) {
 
 void MakeContactsNonSpeculative(btCollisionObject& object) {
   object.setContactProcessingThreshold(0.0);
+}
+
+namespace {
+
+// Marks a new contact of a striking body: no Baumgarte term (see MakeStriking).
+bool OnStrikingContact(btManifoldPoint& point, const btCollisionObjectWrapper*, int, int,
+                       const btCollisionObjectWrapper*, int, int) {
+  point.m_contactPointFlags |= BT_CONTACT_FLAG_HAS_CONTACT_ERP;
+  point.m_contactERP = 0.0;
+  return true;
+}
+
+}  // namespace
+
+void MakeStriking(btCollisionObject& object) {
+  // Bullet has one process-wide hook; it is set once, to a function without state, before any
+  // world steps (worlds run in parallel threads).
+  static std::once_flag once;
+  std::call_once(once, [] { gContactAddedCallback = OnStrikingContact; });
+  object.setCollisionFlags(object.getCollisionFlags() |
+                           btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
 }
 
 namespace {

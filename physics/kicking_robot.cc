@@ -57,6 +57,7 @@ void AddColliders(BulletWorld& world, btMultiBody& body, const RobotModel& model
     collider->setCollisionShape(shape);
     collider->setUserIndex(static_cast<int>(BodyTag::kKicker));
     MakeContactsNonSpeculative(*collider);
+    MakeStriking(*collider);
     collider->setRestitution(params.materials.restitution.foot);
     collider->setFriction(params.materials.friction.foot);
     btMultiBodyLinkCollider* raw = collider.get();

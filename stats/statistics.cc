@@ -105,6 +105,17 @@ MeanSd SampleMeanSd(std::span<const double> x) {
   return s;
 }
 
+double RobustSd(std::span<const double> x) {
+  if (x.size() < 2) return 0.0;
+  constexpr double kNormalConsistency = 1.4826;  // 1 / Phi^-1(3/4)
+  std::vector<double> sorted(x.begin(), x.end());
+  std::sort(sorted.begin(), sorted.end());
+  const double median = QuantileOfSorted(sorted, 0.5);
+  for (double& v : sorted) v = std::abs(v - median);
+  std::sort(sorted.begin(), sorted.end());
+  return kNormalConsistency * QuantileOfSorted(sorted, 0.5);
+}
+
 CircularSummary SummarizeCircular(std::span<const double> angles_rad) {
   if (angles_rad.empty()) return {};
   double cos_sum = 0.0, sin_sum = 0.0;

@@ -35,6 +35,11 @@ struct MeanSd {
 };
 MeanSd SampleMeanSd(std::span<const double> x);
 
+// A spread that outliers do not move: the median absolute deviation from the median times
+// 1.4826, which estimates a normal's sd (Rousseeuw & Croux, "Alternatives to the median absolute
+// deviation", JASA 88 (1993) 1273-1283). Fewer than two values: 0.
+double RobustSd(std::span<const double> x);
+
 // Circular mean atan2(sum sin, sum cos) in (-pi, pi], mean resultant length R in [0, 1] and
 // circular standard deviation sqrt(-2 ln R) (infinite for R = 0). No angles: all 0.
 struct CircularSummary {

@@ -117,6 +117,7 @@
 #include "validation/observed_kicks.h"
 #include "validation/physics_calibration.h"
 #include "validation/physics_checks.h"
+#include "validation/variation_fit.h"
 #include "validation/physics_evaluator.h"
 
 int main() {

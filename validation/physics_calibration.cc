@@ -67,6 +67,8 @@ PhysicsCalibration RunPhysicsCalibration(const PhysicsCalibrationSettings& setti
                               ? DataFile(models_dir, DataFolder::kCalibration, settings.robot)
                               : settings.situation_file;
   const auto setup = LoadCalibrationSetup(settings, result.situation_file, models_dir);
+  // The scene reads the robot's variation at every trial, so this is all it takes.
+  if (settings.variation) setup->robot.spec.variation = *settings.variation;
   const std::vector<std::string> kicks =
       ChooseKicks(settings.kick, KicksWithMotion(*setup), settings.kick_field,
                   "the motions of robot '" + settings.robot + "'");

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@ struct PhysicsCalibrationSettings {
   std::filesystem::path situation_file;  // empty: MODELS/calibration/<robot>.json
   std::filesystem::path kicks_file;      // empty: the situation's kick model
   std::filesystem::path physics_file;    // empty: MODELS/physics/<field>.json
+  std::optional<TrialVariation> variation;  // replaces robot.json's trial_variation
   // Called before each kick's trials with the kick's name; what it returns sees (done, total).
   std::function<std::function<void(int, int)>(const std::string& kick)> progress;
 };

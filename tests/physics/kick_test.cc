@@ -79,11 +79,13 @@ INSTANTIATE_TEST_SUITE_P(
       return std::string(info.param.robot) + "_" + info.param.kick;
     });
 
-// A forward kick is a strike, not a push: the foot touches the ball for a few milliseconds and
-// the ball leaves it faster than the foot (it bounces off it). Before the contacts realised
-// their restitution (issue 12) the foot pushed the ball along for 40-70 ms.
-TEST(KickStrikeTest, ForwardKicksTouchTheBallForAFewMilliseconds) {
-  constexpr double kMaxStrikeS = 0.02;
+// A forward kick is a strike, not a push: the ball takes its speed from the foot within a few
+// milliseconds of the first touch (it bounces off the foot). Before the contacts realised their
+// restitution (issue 12) the foot pushed the ball along for 40-70 ms. (Bullet keeps reporting
+// the contact while foot and ball still overlap after the bounce, without any force: the overlap
+// is not corrected, see MakeStriking. So the test times the speed, not the contact.)
+TEST(KickStrikeTest, ForwardKicksGiveTheBallItsSpeedWithinAFewMilliseconds) {
+  constexpr double kMaxStrikeS = 0.006;
   for (const auto& [robot, field] : {std::pair{"nao", "spl"}, std::pair{"aibo_ers7", "four_legged"}}) {
     const auto data = testing::LoadPhysicsFixture(field, true, robot);
     const Vec2 ball(-0.3, 0.2);
@@ -93,14 +95,15 @@ TEST(KickStrikeTest, ForwardKicksTouchTheBallForAFewMilliseconds) {
     request.stream = 5;
     request.record_trace = true;
     const TrialResult r = RunKickTrial(testing::SceneOf(*data, {}, ball), request);
-    double first_s = -1.0, last_s = -1.0;
+    double first_touch_s = -1.0, peak_mps = 0.0, peak_s = 0.0;
     for (const TracePoint& p : r.trace) {
-      if (!p.kicker_contact) continue;
-      if (first_s < 0.0) first_s = p.t_s;
-      last_s = p.t_s;
+      if (p.kicker_contact && first_touch_s < 0.0) first_touch_s = p.t_s;
+      const double speed = p.v_F.head<2>().norm();
+      if (speed > peak_mps) peak_mps = speed, peak_s = p.t_s;
     }
-    ASSERT_GE(first_s, 0.0) << robot;
-    EXPECT_LE(last_s - first_s, kMaxStrikeS) << robot;
+    ASSERT_GE(first_touch_s, 0.0) << robot;
+    EXPECT_LE(peak_s - first_touch_s, kMaxStrikeS) << robot;
+    EXPECT_GT(peak_mps, 0.3) << robot;
   }
 }
 

@@ -351,3 +351,24 @@ TEST(SummaryTest, CircularSummaryWrapsAndMatchesTheFit) {
 
 }  // namespace
 }  // namespace foresight
+
+namespace foresight {
+namespace {
+
+TEST(RobustSdTest, ExactOnASmallSampleAndDeafToAnOutlier) {
+  // Median 3, absolute deviations {2, 1, 0, 1, 2}: MAD 1, so 1.4826.
+  EXPECT_DOUBLE_EQ(RobustSd(std::vector<double>{1, 2, 3, 4, 5}), 1.4826);
+  // One wild value barely moves it (the sample sd jumps from 1.6 to 44).
+  EXPECT_DOUBLE_EQ(RobustSd(std::vector<double>{1, 2, 3, 4, 100}), 1.4826);
+  EXPECT_EQ(RobustSd(std::vector<double>{7}), 0.0);
+}
+
+TEST(RobustSdTest, EstimatesTheSdOfNormalDraws) {
+  RandomStream stream(StreamKey(3, 0, 0));
+  std::vector<double> x(20000);
+  for (double& v : x) v = 2.5 * stream.NextNormal();
+  EXPECT_NEAR(RobustSd(x), 2.5, 0.06);  // the MAD's sampling sd here is about 0.02
+}
+
+}  // namespace
+}  // namespace foresight
