@@ -2,9 +2,11 @@
 
 #include <chrono>
 #include <iostream>
+#include <map>
 
 #include "app/cli_values.h"
 #include "app/report_text.h"
+#include "app/variation_fit_output.h"
 #include "common/error.h"
 #include "models/model_paths.h"
 #include "report/atomic_file.h"
@@ -12,6 +14,7 @@
 #include "validation/calibration_report.h"
 #include "validation/observed_kicks.h"
 #include "validation/physics_calibration.h"
+#include "validation/variation_fit.h"
 
 namespace foresight {
 
@@ -146,14 +149,56 @@ void AddCalibrateCommand(CLI::App& app, CalibrateOptions& options) {
   cmd->add_option("--from-csv", options.from_csv,
                   "Fit observed kicks from this CSV instead of running physics")
       ->excludes(trials);
+  cmd->add_flag("--fit-variation", options.fit_variation,
+                "With --from-csv: fit the physical causes of the spread (placement, playback "
+                "speed) so physics kicks spread as the logged ones; --out gets robot.json's "
+                "trial_variation");
+  cmd->add_option("--fit-trials", options.fit_trials,
+                  "Physics trials per kick and run of --fit-variation")
+      ->capture_default_str();
   cmd->add_option("--confidence", options.confidence, "Interval level")->capture_default_str();
   cmd->add_option("--resamples", options.resamples, "Bootstrap resamples")->capture_default_str();
 }
+
+namespace {
+
+// --fit-variation: the observed spreads of the log, the physical causes fitted to them.
+int RunVariationFit(const CalibrateOptions& options, const std::filesystem::path& models) {
+  if (options.from_csv.empty()) throw InputError("--fit-variation: needs --from-csv LOG");
+  if (!options.report_dir.empty()) throw InputError("--report: not with --fit-variation");
+  CheckOutputs(options);
+  const KickModel base = LoadKickModel(options.kicks_file.empty()
+                                           ? DataFile(models, DataFolder::kKicks, options.robot)
+                                           : std::filesystem::path(options.kicks_file));
+  const ObservedKicks observed = ReadObservedKicks(options.from_csv, base.rolling_deceleration_mps2);
+  std::map<std::string, LaunchSpread> spreads;
+  for (const std::string& name : ChosenKicks(options, observed.kick_names, options.from_csv)) {
+    spreads[name] = SpreadOf(observed.by_kick.at(name));
+  }
+  VariationFitSettings settings;
+  settings.robot = options.robot;
+  settings.trials = ParseCount("--fit-trials", options.fit_trials, 50, kMaxTrials);
+  settings.seed = ParseSeed(options.seed);
+  settings.threads = ParseCount("--threads", options.threads, 0, kMaxThreads);
+  const VariationFit fit = FitVariation(settings, spreads, models);
+  const std::string json = VariationFitJson(options.robot, options.from_csv, fit).dump(2) + "\n";
+  const std::string text = VariationFitText(fit);
+  CheckOutputs(options);
+  WriteFileAtomically(options.out_file, json);
+  std::cout << text << "wrote the fitted trial_variation to " << options.out_file
+            << " (copy it into the robot's robot.json)\n"
+            << std::flush;
+  if (!std::cout) throw InputError("cannot write to standard output");
+  return 0;
+}
+
+}  // namespace
 
 int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir) {
   const auto start = std::chrono::steady_clock::now();
   const std::filesystem::path models =
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+  if (options.fit_variation) return RunVariationFit(options, models);
   CalibrationRun run;
   run.provenance.version = FORESIGHT_VERSION;
   run.robot = options.robot;

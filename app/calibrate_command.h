@@ -23,6 +23,8 @@ struct CalibrateOptions {
   std::string kicks_file;      // the committed model to start from (default: the situation's)
   std::string physics_file;
   std::string from_csv;
+  bool fit_variation = false;     // with from_csv: fit the physical causes, not the kick model
+  std::string fit_trials = "400";  // physics trials per kick and run of that fit
   // The defaults of the fit are CalibrationSettings' (shown by --help).
   std::string confidence = DefaultText(CalibrationSettings{}.confidence);
   std::string resamples = std::to_string(CalibrationSettings{}.resamples);

@@ -18,6 +18,7 @@
 #include "app/report_text.h"
 #include "app/simulate_command.h"
 #include "app/simulation_output.h"
+#include "app/variation_fit_output.h"
 #include "cbr/ball_scope_index.h"
 #include "cbr/case.h"
 #include "cbr/case_base.h"

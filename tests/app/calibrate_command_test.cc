@@ -176,6 +176,33 @@ TEST_F(CalibrateCommandTest, FromCsvFitsObservedKicks) {
   EXPECT_EQ(CountOf(ReadFile(work() / "csv_report" / "calibration_kicks.csv"), "\n"), 13);
 }
 
+// --fit-variation reads a log's spreads and writes the fitted causes as robot.json's block.
+TEST_F(CalibrateCommandTest, FitVariationWritesTheFittedTrialVariation) {
+  std::string csv = "kick,robot_x_m,robot_y_m,robot_theta_deg,ball_x_m,ball_y_m,launch_speed_mps,"
+                    "launch_direction_deg\n";
+  for (int i = 0; i < 40; ++i) {  // speeds 0.70..0.80, directions -4..+4 deg
+    csv += "forward,0,0,0,0.18,-0.05," + std::to_string(0.70 + 0.1 * (i % 10) / 9.0) + "," +
+           std::to_string(-4.0 + 8.0 * (i % 8) / 7.0) + "\n";
+  }
+  Write("log.csv", csv);
+  const RunResult r = Calibrate({"--robot", "nao", "--from-csv", "log.csv", "--fit-variation",
+                                 "--fit-trials", "60", "--threads", "2", "--out", "var.json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("physics, fitted"));
+  const nlohmann::json j = nlohmann::json::parse(ReadFile(work() / "var.json"));
+  EXPECT_EQ(j["robot"], "nao");
+  EXPECT_GT(j["trial_variation"]["placement_sigma_x_m"].get<double>(), 0.0);
+  EXPECT_EQ(j["fit"]["kicks"][0]["kick"], "forward");
+  EXPECT_TRUE(j["fit"].contains("rms_residual_rel"));
+}
+
+TEST_F(CalibrateCommandTest, FitVariationNeedsALog) {
+  const RunResult r = Calibrate({"--robot", "nao", "--fit-variation", "--out", "var.json"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, StartsWith("foresight: error: --fit-variation: needs --from-csv LOG"));
+  EXPECT_FALSE(std::filesystem::exists(work() / "var.json"));
+}
+
 // The report folder is replaced whole (report/report_folder.h): a kick model written into it is
 // one of its files, not a stranger that makes the folder irreplaceable, also on a second run.
 TEST_F(CalibrateCommandTest, ModelInsideTheReportFolderIsPartOfIt) {
