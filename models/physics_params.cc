@@ -41,6 +41,9 @@ void PhysicsParams::Validate() const {
   RequireInRange("steps.near_time_step_s", steps.near_time_step_s, 1e-5, 0.01);
   RequireInRange("steps.max_overlap_m", steps.max_overlap_m, 1e-4, 0.02);
   RequireInRange("steps.free_time_step_s", steps.free_time_step_s, steps.near_time_step_s, 0.05);
+  RequireInRange("steps.slow_time_step_s", steps.slow_time_step_s, steps.near_time_step_s,
+                 steps.free_time_step_s);
+  RequireInRange("steps.slow_speed_mps", steps.slow_speed_mps, 0.0, 2.0);
   RequireInRange("steps.max_kick_time_s", steps.max_kick_time_s, 0.1, 60.0);
   RequireInRange("steps.max_roll_time_s", steps.max_roll_time_s, 1.0, 3600.0);
   RequireInRange("steps.rest_speed_mps", steps.rest_speed_mps, 1e-5, 0.1);
@@ -97,6 +100,7 @@ MotorParams ReadMotors(const JsonObject& o) {
 
 StepParams ReadSteps(const JsonObject& o) {
   o.RejectUnknownKeys({"kick_time_step_s", "near_time_step_s", "max_overlap_m", "free_time_step_s",
+                       "slow_speed_mps", "slow_time_step_s",
                        "max_kick_time_s", "max_roll_time_s", "rest_speed_mps",
                        "solver_iterations", "restitution_threshold_mps"});
   StepParams s;
@@ -104,6 +108,8 @@ StepParams ReadSteps(const JsonObject& o) {
   s.near_time_step_s = o.Number("near_time_step_s");
   s.max_overlap_m = o.Number("max_overlap_m");
   s.free_time_step_s = o.Number("free_time_step_s");
+  s.slow_speed_mps = o.Number("slow_speed_mps");
+  s.slow_time_step_s = o.Number("slow_time_step_s");
   s.max_kick_time_s = o.Number("max_kick_time_s");
   s.max_roll_time_s = o.Number("max_roll_time_s");
   s.rest_speed_mps = o.Number("rest_speed_mps");

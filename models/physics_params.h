@@ -43,7 +43,9 @@ struct StepParams {
   double kick_time_step_s = 0.0;  // while the kicking robot is simulated
   double near_time_step_s = 0.0;  // rolling near a post, net or obstacle, ...
   double max_overlap_m = 0.0;     // ... or shorter, so one step moves it at most this far
-  double free_time_step_s = 0.0;  // rolling on open carpet
+  double free_time_step_s = 0.0;  // rolling on open carpet, ...
+  double slow_speed_mps = 0.0;     // ... and once slower than this ...
+  double slow_time_step_s = 0.0;   // ... with this step
   double max_kick_time_s = 0.0;   // after that the kick phase ends, touched or not
   double max_roll_time_s = 0.0;   // a ball still moving then is reported as not settled
   double rest_speed_mps = 0.0;    // below this (and on the carpet) the ball rests

@@ -132,7 +132,7 @@ double RollTimeStep(const PhysicsScene& scene, const Vec2& p_F, double speed_mps
   for (const NearZone& zone : scene.near_zones) {
     if ((p_F - zone.centre).norm() < zone.radius_m + reach) return near_step;
   }
-  return steps.free_time_step_s;
+  return speed_mps < steps.slow_speed_mps ? steps.slow_time_step_s : steps.free_time_step_s;
 }
 
 }  // namespace foresight

@@ -48,7 +48,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BrokenCase{"\"rolling_deceleration_mps2\": 0.2697", "\"rolling_deceleration_mps2\": -1",
                    "carpet.rolling_deceleration_mps2: must be in [0.001, 10], got -1"},
-        BrokenCase{"\"free_time_step_s\": 0.008", "\"free_time_step_s\": 0.001",
+        BrokenCase{"\"free_time_step_s\": 0.016", "\"free_time_step_s\": 0.001",
                    "steps.free_time_step_s"},
         BrokenCase{"\"position_gain\": 0.2", "\"position_gain\": 2",
                    "motors.position_gain: must be in [0, 1], got 2"},
