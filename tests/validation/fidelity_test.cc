@@ -314,7 +314,7 @@ TEST(FidelitySetTest, ShippedSetsLoad) {
   EXPECT_EQ(quick.rotations_rad.size(), 12u);
   const FidelitySet def = LoadFidelitySet("default", testing::ModelsDir());
   EXPECT_EQ(def.name, "default");
-  EXPECT_EQ(def.cases.size(), 20u);
+  EXPECT_EQ(def.cases.size(), 24u);
   EXPECT_EQ(def.rotations_rad.size(), 24u);
   for (const FidelityCase& c : def.cases) {
     EXPECT_FALSE(c.situation_class.empty()) << c.file;
