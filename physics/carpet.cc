@@ -38,7 +38,7 @@ void Carpet::ApplyRollingResistance(btRigidBody& ball, double radius_m, double d
   const btVector3 slip = v + ball.getAngularVelocity().cross(btVector3(0, 0, -radius_m));
   v.setZ(0.0);
   const double speed = v.length();
-  if (speed <= 0.0 || !IsRolling(btVector3(slip.x(), slip.y(), 0).length(), speed)) return;
+  if (speed <= 0.0 || IsSliding(btVector3(slip.x(), slip.y(), 0).length(), speed)) return;
   const double mass = 1.0 / ball.getInvMass();
   const double k = 1.0 / (ball.getInvInertiaDiagLocal().x() * mass * radius_m * radius_m);
   const double deceleration = std::min(DecelerationAt(Vec2(p.x(), p.y())), speed / dt_s);

@@ -91,3 +91,34 @@ TEST(PhysicsCalibrationTest, UnknownKickAndOtherRobotsModelAreInputErrors) {
 
 }  // namespace
 }  // namespace foresight
+
+namespace foresight {
+namespace {
+
+// The deceleration calibration reads from kicked balls is the carpet's: rolling resistance acts
+// on every rolling step (issue 12: when it was switched off whenever the solver's slip flickered
+// above 1 %, the AIBO's head-kicked balls decelerated at 0.217 instead of 0.270 m/s^2).
+TEST(PhysicsCalibrationTest, KickedBallsDecelerateAtTheCarpetsRate) {
+  for (const char* robot : {"nao", "aibo_ers7"}) {
+    PhysicsCalibrationSettings settings;
+    settings.robot = robot;
+    settings.trials = 40;
+    settings.threads = 2;
+    const PhysicsCalibration r = RunPhysicsCalibration(settings, testing::ModelsDir());
+    std::vector<KickObservation> all;
+    for (const PhysicsKickTrials& k : r.kicks) {
+      all.insert(all.end(), k.observations.begin(), k.observations.end());
+    }
+    CalibrationSettings fit;
+    fit.resamples = 200;
+    const std::optional<DecelerationFit> d = FitPooledDeceleration(all, fit);
+    ASSERT_TRUE(d.has_value()) << robot;
+    // The carpet's per-trial and per-patch factors average out to within a few percent.
+    EXPECT_NEAR(d->deceleration_mps2, r.carpet_deceleration_mps2,
+                0.03 * r.carpet_deceleration_mps2)
+        << robot;
+  }
+}
+
+}  // namespace
+}  // namespace foresight
