@@ -13,16 +13,6 @@ namespace foresight {
 
 namespace {
 
-// The two groups of causes, scaled.
-TrialVariation Scaled(const TrialVariation& base, double placement, double playback) {
-  TrialVariation v = base;
-  v.placement_sigma_x_m *= placement;
-  v.placement_sigma_y_m *= placement;
-  v.placement_sigma_theta_rad *= placement;
-  v.motion_speed_sigma_rel *= playback;
-  return v;
-}
-
 // Every kick of `observed` played in physics with `variation`, the same seeds every time.
 std::map<std::string, LaunchSpread> Spreads(const VariationFitSettings& settings,
                                             const std::map<std::string, LaunchSpread>& observed,
@@ -91,6 +81,15 @@ constexpr double kMinScale = 0.05;
 
 }  // namespace
 
+TrialVariation ScaledVariation(const TrialVariation& base, double placement, double playback) {
+  TrialVariation v = base;
+  v.placement_sigma_x_m *= placement;
+  v.placement_sigma_y_m *= placement;
+  v.placement_sigma_theta_rad *= placement;
+  v.motion_speed_sigma_rel *= playback;
+  return v;
+}
+
 LaunchSpread SpreadOf(const std::vector<KickObservation>& observations) {
   std::vector<double> speeds, directions;
   for (const KickObservation& o : observations) {
@@ -123,8 +122,8 @@ VariationFit FitVariation(const VariationFitSettings& settings,
   double s_p = 1.0, s_s = std::min(1.0, max_playback_scale);
   std::map<std::string, LaunchSpread> placement, playback;
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-    placement = Spreads(settings, observed, Scaled(fit.base, s_p, 0.0), models);
-    playback = Spreads(settings, observed, Scaled(fit.base, 0.0, s_s), models);
+    placement = Spreads(settings, observed, ScaledVariation(fit.base, s_p, 0.0), models);
+    playback = Spreads(settings, observed, ScaledVariation(fit.base, 0.0, s_s), models);
     std::vector<Equation> equations;
     for (const auto& [kick, o] : observed) {
       const LaunchSpread& p = placement.at(kick);
@@ -145,7 +144,7 @@ VariationFit FitVariation(const VariationFitSettings& settings,
   }
   fit.placement_scale = s_p;
   fit.playback_scale = s_s;
-  fit.fitted = Scaled(fit.base, fit.placement_scale, fit.playback_scale);
+  fit.fitted = ScaledVariation(fit.base, fit.placement_scale, fit.playback_scale);
   fit.playback_at_limit = fit.playback_scale >= max_playback_scale * (1.0 - 1e-9);
   const auto fitted = Spreads(settings, observed, fit.fitted, models);
   double sum = 0.0;

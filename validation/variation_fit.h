@@ -39,6 +39,10 @@ struct LaunchSpread {
 // the plain sd one such trial in 300 moved the fit by a factor of two.
 LaunchSpread SpreadOf(const std::vector<KickObservation>& observations);
 
+// robot.json's variation with the placement sigmas times `placement` and the playback sigma
+// times `playback`: the two groups the fit scales.
+TrialVariation ScaledVariation(const TrialVariation& base, double placement, double playback);
+
 struct VariationFitSettings {
   std::string robot;
   int trials = 400;  // per kick and run (three runs)

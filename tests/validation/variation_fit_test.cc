@@ -14,15 +14,6 @@ namespace {
 
 constexpr int kTrials = 200;
 
-TrialVariation Truth(const TrialVariation& base, double placement, double playback) {
-  TrialVariation v = base;
-  v.placement_sigma_x_m *= placement;
-  v.placement_sigma_y_m *= placement;
-  v.placement_sigma_theta_rad *= placement;
-  v.motion_speed_sigma_rel *= playback;
-  return v;
-}
-
 // The "real robot": physics with the true magnitudes and seeds the fit never uses.
 std::map<std::string, LaunchSpread> SyntheticLog(const TrialVariation& truth) {
   std::map<std::string, LaunchSpread> log;
@@ -44,7 +35,7 @@ TEST(VariationFitTest, RecoversTheMagnitudesALogWasDrawnWith) {
   // Chosen so both groups show in the log: placement sets the direction's spread, the playback
   // speed most of the speed's. (A log whose speed spread placement alone explains cannot tell
   // the playback spread apart: the fit then puts it near 0, and says so in its residual.)
-  const std::map<std::string, LaunchSpread> log = SyntheticLog(Truth(base, 0.6, 0.9));
+  const std::map<std::string, LaunchSpread> log = SyntheticLog(ScaledVariation(base, 0.6, 0.9));
   VariationFitSettings settings;
   settings.robot = "nao";
   settings.trials = kTrials;
