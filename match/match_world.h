@@ -1,0 +1,49 @@
+// The state of one trial of the match simulator (match/match.h): the robots (attackers first,
+// then opponents), what each is doing, the ball and the messages on their way.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "match/ball_motion.h"
+#include "match/trial_result.h"
+#include "models/team_policy.h"
+
+namespace foresight {
+
+enum class Activity : std::uint8_t { kFree, kGrabbing, kKicking };
+
+struct RobotState {
+  Side side = Side::kAttackers;
+  int index = 0;  // within its team
+  Pose2 pose;
+  Activity activity = Activity::kFree;
+  double busy_until_s = 0.0;
+  int kick_index = kNoKick;
+  bool touching = false;
+  bool backing_up = false;
+  std::vector<TeamMessage> inbox;
+};
+
+struct MatchBall {
+  Vec2 p_F{0.0, 0.0};
+  std::optional<BallRoll> roll;
+  int holder = -1;           // robot holding it, or -1
+  int leaving_kicker = -1;   // the kicker, until the ball is clear of its body
+};
+
+struct MessageInFlight {
+  double deliver_at_s = 0.0;
+  Side side = Side::kAttackers;
+  TeamMessage message;
+};
+
+struct MatchWorld {
+  double time_s = 0.0;
+  std::vector<RobotState> robots;
+  MatchBall ball;
+  std::vector<MessageInFlight> messages;
+  int kicks_made = 0;  // numbers the kicks' random streams
+};
+
+}  // namespace foresight
