@@ -181,6 +181,7 @@ class Match {
   MatchWorld world_;
   MatchTrialResult result_;
   double next_trace_s_ = 0.0;
+  int last_toucher_ = -1;  // the robot that began the last counted touch
 };
 
 
@@ -280,6 +281,7 @@ void Match::Launch(int robot) {
   world_.ball.holder = -1;
   world_.ball.roll = RollFromOutcome(world_.ball.p_F, outcome, s_.kicks->rolling_deceleration_mps2);
   world_.ball.leaving_kicker = robot;
+  last_toucher_ = -1;  // a kick ends a possession: the next touch counts, whoever makes it
   auto& kicks = r.side == Side::kAttackers ? result_.counters.attacker_kicks
                                            : result_.counters.opponent_kicks;
   ++kicks[static_cast<std::size_t>(r.index)];
@@ -380,12 +382,17 @@ std::optional<TrialOutcome> Match::UpdateTouches() {
   std::optional<TrialOutcome> end;
   for (std::size_t i = 0; i < world_.robots.size(); ++i) {
     RobotState& r = world_.robots[i];
+    const int robot = static_cast<int>(i);
     const bool touching =
-        world_.ball.holder == static_cast<int>(i) ||
-        (static_cast<int>(i) != world_.ball.leaving_kicker &&
+        world_.ball.holder == robot ||
+        (robot != world_.ball.leaving_kicker &&
          (world_.ball.p_F - r.pose.p_F).norm() <= contact_m_ + s_.sim->touch_tolerance_m);
-    if (touching && !r.touching) {
-      Event(EventKind::kTouch, static_cast<int>(i));
+    // A touch is a contact that begins while another robot (or none) touched the ball last, so
+    // a robot jostling a ball it already has counts once (the paper's possession: how often an
+    // opponent "touched or kicked the ball").
+    if (touching && !r.touching && last_toucher_ != robot) {
+      last_toucher_ = robot;
+      Event(EventKind::kTouch, robot);
       if (r.side == Side::kOpponents) {
         ++result_.counters.opponent_touches[static_cast<std::size_t>(r.index)];
         if (s_.config->opponents[static_cast<std::size_t>(r.index)].role == OpponentRole::kGoalie) {

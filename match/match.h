@@ -16,7 +16,8 @@
 //     first body it meets (match/ball_motion.h); resting, a body that walks into it pushes it
 //     out to the body's edge;
 //  5. touches: a robot touches the ball when its body comes within touch_tolerance_m of it (or it
-//     grabs it); a new touch by the goalie ends the trial as "block";
+//     grabs it); a touch counts when another robot (or nobody since the last kick) touched the
+//     ball last; the goalie's touch ends the trial as "block";
 //  6. the referee judges the ball's move; the time limit ends the trial as "timeout".
 // Randomness comes from the trial's key only (perception noise, grabs, message loss, kicks), so a
 // trial gives the same result on any thread.

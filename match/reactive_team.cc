@@ -25,6 +25,7 @@ void ReactiveParams::Validate() const {
   RequireInRange("hold_limit_s", hold_limit_s, 0.1, 60.0);
   RequireInRange("aim_tolerance_deg", aim_tolerance_rad * kRadToDeg, 0.1, 180.0);
   RequireInRange("back_off_distance_m", back_off_distance_m, 0.0, 5.0);
+  RequireInRange("back_off_release_m", back_off_release_m, 0.0, 5.0);
   RequireInRange("support_behind_m", support_behind_m, -5.0, 5.0);
   RequireInRange("support_side_m", support_side_m, 0.0, 5.0);
   RequireInRange("claim_margin_m", claim_margin_m, 0.0, 5.0);
@@ -40,11 +41,11 @@ ReactiveParams LoadReactiveParams(const std::string& reference,
   const JsonObject root = doc.Root();
   root.RejectUnknownKeys({"name", "sources", "dodge_radius_m", "dodge_angle_deg", "hold_limit_s",
                           "shoot_kick", "aim_tolerance_deg", "back_off_distance_m",
-                          "support_behind_m", "support_side_m", "claim_margin_m",
+                          "back_off_release_m", "support_behind_m", "support_side_m", "claim_margin_m",
                           "message_period_s", "report_stale_s"});
   RequireSources(root, {"dodge_radius_m", "dodge_angle_deg", "hold_limit_s", "shoot_kick",
-                        "aim_tolerance_deg", "back_off_distance_m", "support_behind_m",
-                        "support_side_m", "claim_margin_m", "message_period_s",
+                        "aim_tolerance_deg", "back_off_distance_m", "back_off_release_m",
+                        "support_behind_m", "support_side_m", "claim_margin_m", "message_period_s",
                         "report_stale_s"});
   p.dodge_radius_m = root.Number("dodge_radius_m");
   p.dodge_angle_rad = root.Number("dodge_angle_deg") * kDegToRad;
@@ -52,6 +53,7 @@ ReactiveParams LoadReactiveParams(const std::string& reference,
   p.shoot_kick = root.String("shoot_kick");
   p.aim_tolerance_rad = root.Number("aim_tolerance_deg") * kDegToRad;
   p.back_off_distance_m = root.Number("back_off_distance_m");
+  p.back_off_release_m = root.Number("back_off_release_m");
   p.support_behind_m = root.Number("support_behind_m");
   p.support_side_m = root.Number("support_side_m");
   p.claim_margin_m = root.Number("claim_margin_m");
@@ -96,6 +98,7 @@ RobotCommand ReactiveTeam::Decide(const Perception& p) {
   Memory& m = memory_[static_cast<std::size_t>(p.self)];
   const double distance_m = (p.p_F_ball - p.pose.p_F).norm();
   const bool chasing = ChooseChasing(m, p, distance_m);
+  if (chasing || p.holding_ball) m.backing_up = false;
   if (p.holding_ball && !m.was_holding) m.holding_since_s = p.time_s;
   m.was_holding = p.holding_ball;
   RobotCommand command;
@@ -105,7 +108,7 @@ RobotCommand ReactiveTeam::Decide(const Perception& p) {
     } else if (chasing) {
       command.kind = CommandKind::kGetBall;
     } else {
-      command = Support(p, distance_m);
+      command = Support(m, p, distance_m);
     }
   }
   const int kind = p.holding_ball ? kHolding : (chasing ? kChasing : kSupporting);
@@ -152,13 +155,17 @@ RobotCommand ReactiveTeam::Hold(Memory& m, const Perception& p) const {
   return walk;
 }
 
-RobotCommand ReactiveTeam::Support(const Perception& p, double distance_m) const {
+RobotCommand ReactiveTeam::Support(Memory& m, const Perception& p, double distance_m) const {
   const Vec2& ball = p.p_F_ball;
   const double face = HeadingTowards(p.pose.p_F, ball);
-  if (distance_m < params_.back_off_distance_m) {
+  // Backing up starts nearer than back_off_distance_m and lasts until back_off_release_m
+  // further out (hysteresis: one backing-up, not one per step at the edge).
+  const double release_m = params_.back_off_distance_m + params_.back_off_release_m;
+  m.backing_up = m.backing_up ? distance_m < release_m : distance_m < params_.back_off_distance_m;
+  if (m.backing_up) {
     const Vec2 away = distance_m > 1e-6 ? Vec2((p.pose.p_F - ball) / distance_m)
                                         : UnitVector(p.pose.theta_rad + kPi);
-    RobotCommand back = WalkTowards(p.pose, ball + params_.back_off_distance_m * away, face, dt_s_);
+    RobotCommand back = WalkTowards(p.pose, ball + release_m * away, face, dt_s_);
     back.backing_up = true;
     return back;
   }

@@ -19,8 +19,8 @@
 //    It kicks the shoot kick when the goal line is within the kick's mean roll
 //    distance (v^2 / 2a of the kick model) and it faces the goal within aim_tolerance_deg, and
 //    the same kick forward when it has held the ball for hold_limit_s minus the kick's time.
-//  - supporter: backs up (walks away from the ball, the "backing up" of Table 2) while it is
-//    nearer than back_off_distance_m to the ball; otherwise it walks to the support point
+//  - supporter: backs up (walks away from the ball, the "backing up" of Table 2) once it is
+//    nearer than back_off_distance_m to the ball, until it is back_off_release_m further; otherwise it walks to the support point
 //    support_behind_m behind the ball and support_side_m to its own side, facing the ball.
 #pragma once
 
@@ -42,6 +42,7 @@ struct ReactiveParams {
   std::string shoot_kick;
   double aim_tolerance_rad = 0.0;
   double back_off_distance_m = 0.0;
+  double back_off_release_m = 0.0;
   double support_behind_m = 0.0;
   double support_side_m = 0.0;
   double claim_margin_m = 0.0;
@@ -70,11 +71,12 @@ class ReactiveTeam final : public TeamPolicy {
     double mate_time_s = 0.0;
     double last_report_s = -1e9;
     bool was_holding = false;
+    bool backing_up = false;
     double holding_since_s = 0.0;
   };
   bool ChooseChasing(Memory& m, const Perception& p, double distance_m) const;
   RobotCommand Hold(Memory& m, const Perception& p) const;
-  RobotCommand Support(const Perception& p, double distance_m) const;
+  RobotCommand Support(Memory& m, const Perception& p, double distance_m) const;
 
   ReactiveParams params_;
   const FieldSpec* field_;

@@ -49,7 +49,9 @@ struct MatchEvent {
 };
 
 struct TrialCounters {
-  std::vector<int> opponent_touches;  // per opponent: contact episodes begun (grabs included)
+  // Per opponent: touches begun (grabs included) while another robot, or nobody since the last
+  // kick, had touched the ball last: how often it got at the ball (the paper's possession).
+  std::vector<int> opponent_touches;
   std::vector<int> opponent_kicks;    // per opponent
   std::vector<int> attacker_backups;  // per attacker: backing-ups begun
   std::vector<int> attacker_kicks;
