@@ -8,6 +8,7 @@
 #include "common/error.h"
 #include "experiments/passing_example.h"
 #include "experiments/passing_figures.h"
+#include "experiments/passing_replay.h"
 #include "experiments/passing_report.h"
 #include "experiments/stability_report.h"
 #include "experiments/strategies_report.h"
@@ -221,6 +222,8 @@ int RunPassingExperiment(const PassingOptions& o, const std::filesystem::path& m
   for (std::size_t i = 0; i < run.result.scenarios.size(); ++i) {
     files.push_back({dir / ("passing_example_" + run.result.scenarios[i].name + ".svg"),
                      PassingExampleSvg(run, i)});
+    files.push_back({dir / ("passing_replay_" + run.result.scenarios[i].name + ".html"),
+                     PassingReplayHtml(run, i)});
   }
   WriteReport(o.out_dir, files, PassingText(run), "passing_outcomes.svg");
   return 0;

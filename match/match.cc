@@ -189,6 +189,11 @@ void Match::Act(const std::vector<RobotCommand>& commands) {
   std::vector<Pose2> proposed;
   for (std::size_t i = 0; i < world_.robots.size(); ++i) {
     RobotState& r = world_.robots[i];
+    if (r.activity == Activity::kKicking && r.kick_index != kNoKick &&
+        world_.time_s >= r.launch_at_s - 1e-9) {
+      if (world_.ball.holder == static_cast<int>(i)) Launch(static_cast<int>(i));
+      r.kick_index = kNoKick;  // the ball has left (or was taken away): the motion runs out
+    }
     if (r.activity != Activity::kFree && world_.time_s >= r.busy_until_s - 1e-9) {
       FinishActivity(static_cast<int>(i));
     }
@@ -215,6 +220,7 @@ Pose2 Match::Propose(int robot, const RobotCommand& command) {
           command.kick_index < static_cast<int>(s_.kicks->kicks.size())) {
         r.activity = Activity::kKicking;
         r.kick_index = command.kick_index;
+        r.launch_at_s = world_.time_s + rp.kick_launch_s;
         r.busy_until_s = world_.time_s + rp.kick_time_s;
       }
       return r.pose;
@@ -242,10 +248,7 @@ void Match::FinishActivity(int robot) {
   RobotState& r = world_.robots[static_cast<std::size_t>(robot)];
   const Activity done = r.activity;
   r.activity = Activity::kFree;
-  if (done == Activity::kKicking) {
-    if (world_.ball.holder == robot) Launch(robot);
-    return;
-  }
+  if (done == Activity::kKicking) return;
   // A grab: the ball must still lie within reach (it may have rolled on or been taken away).
   if (world_.ball.holder == robot || !InGrabReach(r)) return;
   if (rng_.NextUniform() < s_.robot->grab_failure_rate) {
@@ -254,6 +257,11 @@ void Match::FinishActivity(int robot) {
     return;
   }
   const int previous = world_.ball.holder;
+  // Taking a held ball is a fight between two robots (sec. 5.3.1): it succeeds only so often.
+  if (previous >= 0 && rng_.NextUniform() >= s_.robot->steal_success_rate) {
+    Event(EventKind::kGrabFailed, robot, "steal");
+    return;
+  }
   world_.ball.holder = robot;
   world_.ball.roll.reset();
   Event(previous >= 0 ? EventKind::kSteal : EventKind::kGrab, robot);

@@ -21,6 +21,8 @@ void RobotParams::Validate() const {
   RequireInRange("grab_time_s", grab_time_s, 0.0, 10.0);
   RequireInRange("grab_failure_rate", grab_failure_rate, 0.0, 0.99);
   RequireInRange("kick_time_s", kick_time_s, 0.0, 10.0);
+  RequireInRange("kick_launch_s", kick_launch_s, 0.0, kick_time_s);
+  RequireInRange("steal_success_rate", steal_success_rate, 0.0, 1.0);
 }
 
 void SimulationParams::Validate() const {
@@ -53,10 +55,12 @@ RobotParams LoadRobotParams(const std::string& reference,
   root.RejectUnknownKeys({"name", "sources", "body_radius_m", "walk_speed_mps",
                           "turn_speed_deg_per_s", "dribble_speed_mps",
                           "dribble_turn_speed_deg_per_s", "grab_reach_m", "grab_cone_deg",
-                          "grab_time_s", "grab_failure_rate", "kick_time_s"});
+                          "grab_time_s", "grab_failure_rate", "kick_time_s", "kick_launch_s",
+                          "steal_success_rate"});
   RequireSources(root, {"body_radius_m", "walk_speed_mps", "turn_speed_deg_per_s",
                         "dribble_speed_mps", "dribble_turn_speed_deg_per_s", "grab_reach_m",
-                        "grab_cone_deg", "grab_time_s", "grab_failure_rate", "kick_time_s"});
+                        "grab_cone_deg", "grab_time_s", "grab_failure_rate", "kick_time_s",
+                        "kick_launch_s", "steal_success_rate"});
   RobotParams p;
   p.name = root.String("name");
   p.body_radius_m = root.Number("body_radius_m");
@@ -69,6 +73,8 @@ RobotParams LoadRobotParams(const std::string& reference,
   p.grab_time_s = root.Number("grab_time_s");
   p.grab_failure_rate = root.Number("grab_failure_rate");
   p.kick_time_s = root.Number("kick_time_s");
+  p.kick_launch_s = root.Number("kick_launch_s");
+  p.steal_success_rate = root.Number("steal_success_rate");
   WithFile(file.string(), [&] { p.Validate(); });
   return p;
 }

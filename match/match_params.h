@@ -7,8 +7,9 @@
 //   turning at up to turn_speed_radps; holding the ball it walks at dribble_speed_mps and turns
 //   at dribble_turn_speed_radps. It grabs a ball whose centre lies within grab_reach_m of its
 //   front (the body's edge) and within grab_cone_rad of straight ahead; a grab takes
-//   grab_time_s and fails with grab_failure_rate. A kick takes kick_time_s standing still; the
-//   ball leaves at its end.
+//   grab_time_s and fails with grab_failure_rate; grabbing a ball another robot holds (a steal)
+//   then also needs steal_success_rate. A kick takes kick_time_s standing still; the ball leaves
+//   kick_launch_s after its start.
 // simulation (models/match/simulation.json): the field, kick model and robot by name; the
 //   control step; perception noise (Gaussian sigmas on the perceived ball and other robots,
 //   0 = the paper's noiseless simulator); message latency and loss; the referee's "close"
@@ -37,6 +38,8 @@ struct RobotParams {
   double grab_time_s = 0.0;
   double grab_failure_rate = 0.0;
   double kick_time_s = 0.0;
+  double kick_launch_s = 0.0;
+  double steal_success_rate = 0.0;
 
   void Validate() const;
 };

@@ -19,6 +19,7 @@ struct RobotState {
   Pose2 pose;
   Activity activity = Activity::kFree;
   double busy_until_s = 0.0;
+  double launch_at_s = 0.0;  // kicking: when the ball leaves
   int kick_index = kNoKick;
   bool touching = false;
   bool backing_up = false;

@@ -1,5 +1,6 @@
 #include "match/opponent_team.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/error.h"
@@ -24,16 +25,50 @@ OpponentTeam::OpponentTeam(const MatchConfig& config, const KickModel& kicks,
       contact_m_(robot.body_radius_m + ball_radius_m),
       grab_reach_m_(robot.grab_reach_m),
       grab_cone_rad_(robot.grab_cone_rad),
-      dt_s_(control_step_s) {}
+      dt_s_(control_step_s),
+      memory_(config.opponents.size()) {}
+
+RobotCommand OpponentTeam::Clear(Memory& m, const Perception& p) const {
+  const Vec2 ahead = UnitVector(p.pose.theta_rad);
+  const Pose2* blocker = nullptr;
+  double nearest_m = config_->clear_free_distance_m;
+  auto consider = [&](const Pose2& other) {
+    const Vec2 to = other.p_F - p.p_F_ball;
+    const double distance = to.norm();
+    if (distance >= nearest_m || distance < 1e-9) return;
+    if (std::acos(std::clamp(to.dot(ahead) / distance, -1.0, 1.0)) > config_->clear_free_cone_rad) {
+      return;
+    }
+    nearest_m = distance;
+    blocker = &other;
+  };
+  for (std::size_t i = 0; i < p.teammates.size(); ++i) {
+    if (static_cast<int>(i) != p.self) consider(p.teammates[i]);
+  }
+  for (const Pose2& o : p.opponents) consider(o);
+  if (blocker == nullptr || p.time_s - m.holding_since_s >= config_->clear_hold_limit_s) {
+    RobotCommand kick;
+    kick.kind = CommandKind::kKick;
+    kick.kick_index = clear_kick_;
+    return kick;
+  }
+  // Turn away from the blocker: the side it is not on (ties turn counter-clockwise when the
+  // robot faces +x, clockwise when it faces -x, so the mirrored game turns alike).
+  double side = WrapAngle(HeadingTowards(p.p_F_ball, blocker->p_F) - p.pose.theta_rad);
+  if (std::abs(side) < 1e-9) side = std::cos(p.pose.theta_rad) >= 0.0 ? -1.0 : 1.0;
+  RobotCommand turn;
+  turn.kind = CommandKind::kWalk;
+  turn.turn_radps = (side > 0.0 ? -1.0 : 1.0) * kPi / dt_s_;
+  return turn;
+}
 
 RobotCommand OpponentTeam::Decide(const Perception& p) {
   RobotCommand command;
+  Memory& m = memory_[static_cast<std::size_t>(p.self)];
+  if (p.holding_ball && !m.was_holding) m.holding_since_s = p.time_s;
+  m.was_holding = p.holding_ball;
   if (p.busy) return command;
-  if (p.holding_ball) {
-    command.kind = CommandKind::kKick;
-    command.kick_index = clear_kick_;
-    return command;
-  }
+  if (p.holding_ball) return Clear(m, p);
   const FieldBox& region = config_->opponents[static_cast<std::size_t>(p.self)].region;
   const Vec2& ball = p.p_F_ball;
   const double face_rad = HeadingTowards(p.pose.p_F, ball);

@@ -5,13 +5,17 @@
 //
 // Here: with the perceived ball inside its region, or so near it that the robot can grab it
 // from inside (within body radius + ball radius + grab reach of the boundary), the robot walks to the point in front of the
-// ball where it can grab it (clamped to its region), grabs it and at once kicks it with the
+// ball where it can grab it (clamped to its region), grabs it and kicks it with the
 // configuration's clear kick from the heading it came with (the paper does not say where a
-// clearance goes; ours goes away from the robot's side of the ball). Otherwise it walks to the
+// clearance goes; ours goes away from the robot's side of the ball), first turning with the
+// ball, away from the nearest body, while a robot stands in the kick's way (within
+// clear_free_distance_m and clear_free_cone of its line), for at most clear_hold_limit_s. Otherwise it walks to the
 // point of its region nearest to the ball (on the boundary) and turns to face the ball. Every
 // walking target lies in the region and walking never overshoots its target (match/robot_motion.h),
 // so the robot's centre never leaves the region (a box, convex).
 #pragma once
+
+#include <vector>
 
 #include "match/match_config.h"
 #include "models/team_policy.h"
@@ -27,12 +31,19 @@ class OpponentTeam final : public TeamPolicy {
   RobotCommand Decide(const Perception& perception) override;
 
  private:
+  struct Memory {
+    bool was_holding = false;
+    double holding_since_s = 0.0;
+  };
+  RobotCommand Clear(Memory& m, const Perception& p) const;
+
   const MatchConfig* config_;
   int clear_kick_;
   double contact_m_;
   double grab_reach_m_;
   double grab_cone_rad_;
   double dt_s_;
+  std::vector<Memory> memory_;
 };
 
 // The index of the kick `name` in `kicks`, or an InputError "FILE: FIELD: unknown kick ..."

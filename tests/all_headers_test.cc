@@ -46,6 +46,7 @@
 #include "experiments/passing.h"
 #include "experiments/passing_example.h"
 #include "experiments/passing_figures.h"
+#include "experiments/passing_replay.h"
 #include "experiments/passing_report.h"
 #include "experiments/passing_stats.h"
 #include "experiments/stability.h"

@@ -141,13 +141,19 @@ TEST_F(ExperimentCommandTest, PassingWritesJsonCsvEventsAndFigures) {
   EXPECT_THAT(r.out, HasSubstr("reactive team against dg, 6 trials per scenario"));
   for (const char* file : {"passing.json", "passing_trials.csv", "passing_events.csv",
                            "passing_outcomes.svg", "passing_possession.svg", "passing_time.svg",
-                           "passing_example_dg_3.svg", "passing_example_dg_4.svg"}) {
+                           "passing_example_dg_3.svg", "passing_example_dg_4.svg",
+                           "passing_replay_dg_3.html", "passing_replay_dg_4.html"}) {
     EXPECT_TRUE(fs::exists(work() / "out" / file)) << file;
   }
   const auto json = nlohmann::json::parse(ReadFile(work() / "out" / "passing.json"));
   EXPECT_EQ(json["scenarios"].size(), 2u);
   EXPECT_EQ(json["scenarios"][0]["trials"], 6);
   EXPECT_EQ(CountOf(ReadFile(work() / "out" / "passing_trials.csv"), "\n"), 1 + 12);
+  const std::string replay = ReadFile(work() / "out" / "passing_replay_dg_3.html");
+  EXPECT_THAT(replay, HasSubstr("const frames = [[0.00,"));
+  for (const char* fetch : {"src=", "<link", "url(", "import "}) {  // self-contained
+    EXPECT_THAT(replay, ::testing::Not(HasSubstr(fetch)));
+  }
 }
 
 TEST_F(ExperimentCommandTest, PassingBadScenarioOrParameterFileIsOneLineExitTwoAndNoFolder) {

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 #include "match/opponent_team.h"
 #include "match/reactive_team.h"
 #include "tests/support/temp_files.h"
@@ -130,6 +133,51 @@ TEST_F(MatchTest, SameKeySameTrialOtherKeyOtherTrial) {
   EXPECT_NE(a.events.size() == c.events.size() && a.counters.time_s == c.counters.time_s &&
                 a.events.back().p_F_ball == c.events.back().p_F_ball,
             true);
+}
+
+
+// Robot 0 sends a message every step; every robot records what it was told and what it saw.
+class Recorder final : public TeamPolicy {
+ public:
+  RobotCommand Decide(const Perception& p) override {
+    RobotCommand c;
+    if (p.self == 0) c.message = TeamMessage{0, 0.0, 7, Vec2(0.0, 0.0), p.time_s};
+    for (const TeamMessage& m : p.inbox) delays.push_back(p.time_s - m.value);
+    if (p.self == 1) balls.push_back(p.p_F_ball);
+    return c;
+  }
+  std::vector<double> delays;
+  std::vector<Vec2> balls;
+};
+
+TEST_F(MatchTest, MessagesArriveAfterTheLatencyOrAreLost) {
+  Recorder attackers;
+  Stand opponents;
+  sim_.message_latency_s = 0.2;
+  RunTrial(setup_, OneOpponentAhead(1.0), attackers, opponents, 3);
+  ASSERT_GT(attackers.delays.size(), 200u);
+  for (double d : attackers.delays) EXPECT_NEAR(d, 0.2, 1e-9);
+  sim_.message_loss_rate = 0.25;
+  Recorder lossy;
+  const MatchTrialResult r = RunTrial(setup_, OneOpponentAhead(1.0), lossy, opponents, 3);
+  int lost = 0;
+  for (const MatchEvent& e : r.events) lost += e.kind == EventKind::kMessageLost;
+  const double sent = static_cast<double>(lost + static_cast<int>(lossy.delays.size()));
+  EXPECT_NEAR(lost / sent, 0.25, 0.05);  // 250 messages: 4 sd of a binomial share
+}
+
+TEST_F(MatchTest, PerceptionNoiseHasTheGivenSigmaAndNoneByDefault) {
+  Recorder exact;
+  Stand opponents;
+  RunTrial(setup_, OneOpponentAhead(1.0), exact, opponents, 3);
+  for (const Vec2& b : exact.balls) EXPECT_EQ(b, Vec2(0.0, 0.0));
+  sim_.ball_noise_sigma_m = 0.05;
+  Recorder noisy;
+  RunTrial(setup_, OneOpponentAhead(1.0), noisy, opponents, 3);
+  double sum_sq = 0.0;
+  for (const Vec2& b : noisy.balls) sum_sq += b.squaredNorm();
+  const double sigma = std::sqrt(sum_sq / (2.0 * static_cast<double>(noisy.balls.size())));
+  EXPECT_NEAR(sigma, 0.05, 0.005);  // 250 steps x 2 axes
 }
 
 }  // namespace
