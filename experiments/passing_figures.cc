@@ -79,7 +79,7 @@ std::string PassingOutcomesSvg(const PassingRun& run) {
 
 std::string PassingPossessionSvg(const PassingRun& run) {
   ScatterChart chart;
-  chart.title = RunTitle(run, "Opponents' ball possession (touches per trial, mean and interval)");
+  chart.title = RunTitle(run, "Opponents' possession (touches per trial)");
   chart.x_label = "scenario";
   chart.y_label = "touches per trial";
   chart.identity_line = false;
