@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/cli_values.h"
+#include "app/passing_physics.h"
 #include "app/report_text.h"
 #include "common/error.h"
 #include "experiments/passing_example.h"
@@ -173,6 +174,9 @@ void AddPassing(CLI::App& experiment, PassingOptions& o) {
   cmd->add_option("--scenarios", o.scenarios, "Scenarios, e.g. 1-4 or 3,4 (default: all)");
   cmd->add_option("--trials", o.trials, "Trials per scenario (default: the configuration's)");
   cmd->add_flag("--mirror", o.mirror, "Attack the goal at -x instead (the mirrored game)");
+  cmd->add_flag("--physics", o.physics, "Execute every kick in the Bullet scene");
+  cmd->add_option("--physics-file", o.physics_file,
+                  "Physics file (default: MODELS/physics/<field>.json)");
   cmd->add_option("--params", o.params, "Experiment file, or a name in MODELS/experiments/")
       ->capture_default_str();
   cmd->add_option("--seed", o.seed, "Random seed")->capture_default_str();
@@ -191,7 +195,19 @@ int RunPassingExperiment(const PassingOptions& o, const std::filesystem::path& m
   if (!o.scenarios.empty()) request.scenarios = ParseSampleCounts("--scenarios", o.scenarios);
   if (!o.trials.empty()) request.trials = ParseCount("--trials", o.trials, 1, 10000000);
   request.mirrored = o.mirror;
+  if (!o.physics && !o.physics_file.empty()) throw InputError("--physics-file needs --physics");
   const PassingSetup setup = LoadPassingSetup(request, models);
+  std::unique_ptr<KickExecutor> executor;
+  std::string physics_file;
+  if (o.physics) {
+    auto physics = std::make_unique<PhysicsKickExecutor>(setup.field, setup.kicks, models,
+                                                         o.physics_file);
+    physics_file = DisplayPath(physics->physics_file(), models);
+    executor = std::move(physics);
+  } else {
+    executor = std::make_unique<CoarseKickExecutor>(setup.field,
+                                                    setup.kicks.rolling_deceleration_mps2);
+  }
   CheckReportDir(o.out_dir, "--out");
 
   PassingRun run;
@@ -204,11 +220,11 @@ int RunPassingExperiment(const PassingOptions& o, const std::filesystem::path& m
                            {"config", DisplayPath(setup.config.file, models)},
                            {"team", setup.team},
                            {"team_file", DisplayPath(setup.reactive.file, models)},
-                           {"executor", "coarse"},
+                           {"executor", o.physics ? "physics" : "coarse"},
                            {"mirrored", setup.mirrored ? "yes" : "no"}};
+  if (o.physics) run.provenance.SetInput("physics", physics_file);
   run.setup = &setup;
-  const CoarseKickExecutor executor(setup.field, setup.kicks.rolling_deceleration_mps2);
-  run.result = RunPassing(setup, executor, seed, threads, TerminalProgress("passing:", "trials"));
+  run.result = RunPassing(setup, *executor, seed, threads, TerminalProgress("passing:", "trials"));
   run.summaries = SummarisePassing(run.result, setup.params.confidence);
   run.provenance.run_time_s = SecondsSince(start);
 

@@ -38,6 +38,8 @@ struct PassingOptions {
   std::string scenarios;  // empty: all
   std::string trials;     // empty: the configuration's default
   bool mirror = false;
+  bool physics = false;
+  std::string physics_file;
   std::string seed = "1";
   std::string threads = "0";
   std::string out_dir;

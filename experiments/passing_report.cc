@@ -57,6 +57,8 @@ Json SummaryJson(const ScenarioSummary& s, const PassingSetup& setup) {
           {"possession_without_timeouts", StatsJson(s.possession_ended, opponents)},
           {"opponent_kicks", StatsJson(s.opponent_kicks, opponents)},
           {"backups", backups},
+          {"kicks_missed", s.kicks_missed},
+          {"kicks_not_settled", s.kicks_not_settled},
           {"time_s", StatJson(s.time_s)},
           {"time_without_timeouts_s", StatJson(s.time_ended_s)}};
 }
@@ -85,7 +87,7 @@ std::string PassingTrialsCsv(const PassingRun& run) {
   std::string csv = "scenario,trial,outcome,to_goal,time_s";
   for (const std::string& o : opponents) csv += ",touches_" + o + ",kicks_" + o;
   for (const std::string& a : kAttackerNames) csv += ",backups_" + a + ",kicks_" + a;
-  csv += ",grabs_failed\n";
+  csv += ",grabs_failed,kicks_missed,kicks_not_settled\n";
   for (const ScenarioTrials& st : run.result.scenarios) {
     for (std::size_t i = 0; i < st.trials.size(); ++i) {
       const TrialCounters& c = st.trials[i].counters;
@@ -98,7 +100,7 @@ std::string PassingTrialsCsv(const PassingRun& run) {
       for (std::size_t a = 0; a < c.attacker_backups.size(); ++a) {
         csv += Format(",%d,%d", c.attacker_backups[a], c.attacker_kicks[a]);
       }
-      csv += Format(",%d\n", c.grabs_failed);
+      csv += Format(",%d,%d,%d\n", c.grabs_failed, c.kicks_missed, c.kicks_not_settled);
     }
   }
   return csv;

@@ -44,6 +44,8 @@ ScenarioSummary Summarise(const ScenarioTrials& st, double confidence) {
     ++s.counts[static_cast<std::size_t>(t.outcome)];
     s.to_goal += IsToGoal(t.outcome);
     times.push_back(t.counters.time_s);
+    s.kicks_missed += t.counters.kicks_missed;
+    s.kicks_not_settled += t.counters.kicks_not_settled;
     if (t.outcome != TrialOutcome::kTimeout) times_ended.push_back(t.counters.time_s);
   }
   for (int k = 0; k < kTrialOutcomeCount; ++k) {

@@ -286,6 +286,8 @@ void Match::Launch(int robot) {
   action.stream = draw.NextBits();
   const Outcome outcome =
       s_.executor->Execute(others, DrawnState{r.pose, world_.ball.p_F}, action);
+  result_.counters.kicks_missed += outcome.status == OutcomeStatus::kMissed;
+  result_.counters.kicks_not_settled += outcome.status == OutcomeStatus::kNotSettled;
   world_.ball.holder = -1;
   world_.ball.roll = RollFromOutcome(world_.ball.p_F, outcome, s_.kicks->rolling_deceleration_mps2);
   world_.ball.leaving_kicker = robot;

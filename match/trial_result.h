@@ -56,6 +56,10 @@ struct TrialCounters {
   std::vector<int> attacker_backups;  // per attacker: backing-ups begun
   std::vector<int> attacker_kicks;
   int grabs_failed = 0;
+  // Kicks whose executor reported a status other than ok (physics: the foot missed the ball, or
+  // it had not settled at the time limit); they still count as what happened.
+  int kicks_missed = 0;
+  int kicks_not_settled = 0;
   double time_s = 0.0;
 };
 

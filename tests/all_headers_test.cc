@@ -15,6 +15,7 @@
 #include "app/decision_text.h"
 #include "app/experiment_command.h"
 #include "app/fidelity_command.h"
+#include "app/passing_physics.h"
 #include "app/report_text.h"
 #include "app/simulate_command.h"
 #include "app/simulation_output.h"

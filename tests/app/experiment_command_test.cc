@@ -175,6 +175,18 @@ TEST_F(ExperimentCommandTest, PassingBadScenarioOrParameterFileIsOneLineExitTwoA
   ExpectBadInput({"passing", "--config", "dg", "--team", "cbr", "--out", "out"},
                  "--team: unknown team 'cbr'");
   ExpectBadInput({"passing", "--config", "3d", "--out", "out"}, "3d.json");
+  ExpectBadInput({"passing", "--config", "dg", "--physics-file", "x.json", "--out", "out"},
+                 "--physics-file needs --physics");
+}
+
+TEST_F(ExperimentCommandTest, PassingWithPhysicsExecutesTheKicksInBullet) {
+  const RunResult r = Experiment({"passing", "--config", "dg", "--scenarios", "4", "--trials",
+                                  "2", "--physics", "--out", "out"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(ReadFile(work() / "out" / "passing.json"));
+  EXPECT_EQ(json["params"]["executor"], "physics");
+  EXPECT_EQ(json["params"]["physics"], "physics/four_legged.json");
+  EXPECT_TRUE(json["scenarios"][0].contains("kicks_missed"));
 }
 
 // A bad --out fails before the work: a file in the way of the folder.
