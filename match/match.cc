@@ -6,6 +6,7 @@
 #include "common/random.h"
 #include "match/match_world.h"
 #include "match/referee.h"
+#include "match/robot_collisions.h"
 #include "match/robot_motion.h"
 
 namespace foresight {
@@ -26,6 +27,17 @@ class Match {
     AddRobots(Side::kAttackers, scenario.attackers);
     AddRobots(Side::kOpponents, scenario.opponents);
     world_.ball.p_F = scenario.p_F_ball;
+    rules_.x_max_m = setup.field->CarpetHalfLength() - setup.robot->body_radius_m;
+    rules_.y_max_m = setup.field->CarpetHalfWidth() - setup.robot->body_radius_m;
+    rules_.body_radius_m = setup.robot->body_radius_m;
+    rules_.contact_m = contact_m_;
+    for (const RobotState& r : world_.robots) {
+      rules_.regions.push_back(
+          r.side == Side::kOpponents
+              ? std::optional<FieldBox>(
+                    setup.config->opponents[static_cast<std::size_t>(r.index)].region)
+              : std::nullopt);
+    }
     result_.counters.attacker_backups.assign(scenario.attackers.size(), 0);
     result_.counters.attacker_kicks.assign(scenario.attackers.size(), 0);
     result_.counters.opponent_touches.assign(scenario.opponents.size(), 0);
@@ -43,7 +55,7 @@ class Match {
       std::vector<RobotCommand> commands = Decide();
       world_.time_s = static_cast<double>(step) * dt;
       Act(commands);
-      MoveBall();
+      StepBall(world_, contact_m_, s_.sim->control_step_s, s_.sim->touch_tolerance_m);
       const std::optional<TrialOutcome> touched_end = UpdateTouches();
       std::optional<TrialOutcome> end = referee_.Judge(ball_before, world_.ball.p_F);
       if (!end) end = touched_end;
@@ -167,9 +179,6 @@ class Match {
   void FinishActivity(int robot);
   void Launch(int robot);
   Pose2 Propose(int robot, const RobotCommand& command);
-  bool Allowed(std::size_t robot, const Pose2& pose) const;
-  void Resolve(const std::vector<Pose2>& proposed);
-  void MoveBall();
   std::optional<TrialOutcome> UpdateTouches();
 
   const MatchSetup& s_;
@@ -178,6 +187,7 @@ class Match {
   Referee referee_;
   TeamPolicy* policies_[2];
   double contact_m_;  // robot centre to ball centre when they touch
+  MoveRules rules_;
   MatchWorld world_;
   MatchTrialResult result_;
   double next_trace_s_ = 0.0;
@@ -200,7 +210,7 @@ void Match::Act(const std::vector<RobotCommand>& commands) {
     proposed.push_back(r.activity == Activity::kFree ? Propose(static_cast<int>(i), commands[i])
                                                      : r.pose);
   }
-  Resolve(proposed);
+  ResolveMoves(world_, rules_, proposed);
 }
 
 Pose2 Match::Propose(int robot, const RobotCommand& command) {
@@ -296,96 +306,6 @@ void Match::Launch(int robot) {
                                            : result_.counters.opponent_kicks;
   ++kicks[static_cast<std::size_t>(r.index)];
   Event(EventKind::kKick, robot, kick.name);
-}
-
-bool Match::Allowed(std::size_t robot, const Pose2& pose) const {
-  const double x_max = s_.field->CarpetHalfLength() - s_.robot->body_radius_m;
-  const double y_max = s_.field->CarpetHalfWidth() - s_.robot->body_radius_m;
-  if (std::abs(pose.p_F.x()) > x_max || std::abs(pose.p_F.y()) > y_max) return false;
-  const RobotState& r = world_.robots[robot];
-  if (r.side == Side::kOpponents &&
-      !s_.config->opponents[static_cast<std::size_t>(r.index)].region.Contains(pose.p_F)) {
-    return false;
-  }
-  const bool holding = world_.ball.holder == static_cast<int>(robot);
-  const Vec2 held_ball = pose.ToField(Vec2(contact_m_, 0.0));
-  for (std::size_t j = 0; j < world_.robots.size(); ++j) {
-    if (j == robot) continue;
-    const Vec2& other = world_.robots[j].pose.p_F;
-    if ((other - pose.p_F).norm() < 2.0 * s_.robot->body_radius_m) return false;
-    // A held ball is part of the holder: it may not be pushed into another body either (nor
-    // deeper, when it already touches one: moving it away is allowed).
-    const double ball_gap_m = (other - held_ball).norm();
-    if (holding && ball_gap_m < contact_m_ && ball_gap_m < (other - world_.ball.p_F).norm()) {
-      return false;
-    }
-  }
-  return true;
-}
-
-void Match::Resolve(const std::vector<Pose2>& proposed) {
-  // Robots move one after the other against where the others stand now. A move into another
-  // body slides along it (the part towards the other robot is removed); a move that still
-  // overlaps a body (or pushes a held ball into one), leaves the carpet or leaves an opponent's
-  // home region is cancelled: the robot only turns, or stays as it was if turning is what
-  // collides. No two bodies ever overlap, so the order matters only when two robots meet.
-  for (std::size_t i = 0; i < proposed.size(); ++i) {
-    RobotState& r = world_.robots[i];
-    const Pose2 from = r.pose;
-    if (Allowed(i, proposed[i])) {
-      r.pose = proposed[i];
-      continue;
-    }
-    Pose2 slid = proposed[i];
-    for (std::size_t j = 0; j < world_.robots.size(); ++j) {
-      const Vec2 gap = world_.robots[j].pose.p_F - slid.p_F;
-      if (j == i || gap.norm() >= 2.0 * s_.robot->body_radius_m) continue;
-      const Vec2 n = (world_.robots[j].pose.p_F - from.p_F).normalized();
-      Vec2 move = slid.p_F - from.p_F;
-      if (move.dot(n) > 0.0) move -= move.dot(n) * n;
-      slid.p_F = from.p_F + move;
-    }
-    const Pose2 turned{from.p_F, proposed[i].theta_rad};
-    if (Allowed(i, slid)) {
-      r.pose = slid;
-    } else if (Allowed(i, turned)) {
-      r.pose = turned;
-    }
-  }
-}
-
-void Match::MoveBall() {
-  MatchBall& ball = world_.ball;
-  if (ball.holder >= 0) {
-    const Pose2& holder = world_.robots[static_cast<std::size_t>(ball.holder)].pose;
-    ball.p_F = holder.ToField(Vec2(contact_m_, 0.0));
-    return;
-  }
-  std::vector<BodyDisc> bodies;
-  for (std::size_t i = 0; i < world_.robots.size(); ++i) {
-    bodies.push_back({world_.robots[i].pose.p_F, contact_m_,
-                      static_cast<int>(i) == ball.leaving_kicker});
-  }
-  if (ball.roll) {
-    AdvanceRoll(*ball.roll, s_.sim->control_step_s, bodies);
-    ball.p_F = ball.roll->Position();
-    if (ball.roll->Done()) ball.roll.reset();
-  }
-  // A body that overlaps the ball (walked into it, or the ball rolled to rest in it) pushes it
-  // out to its edge and stops it.
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    if (bodies[i].ignore) continue;
-    const Vec2 away = ball.p_F - bodies[i].centre;
-    const double distance = away.norm();
-    if (distance >= contact_m_) continue;
-    const Vec2 dir = distance > 1e-9 ? Vec2(away / distance) : UnitVector(world_.robots[i].pose.theta_rad);
-    ball.p_F = bodies[i].centre + contact_m_ * dir;
-    ball.roll.reset();
-  }
-  if (ball.leaving_kicker >= 0) {
-    const Vec2& kicker = world_.robots[static_cast<std::size_t>(ball.leaving_kicker)].pose.p_F;
-    if ((ball.p_F - kicker).norm() > contact_m_ + s_.sim->touch_tolerance_m) ball.leaving_kicker = -1;
-  }
 }
 
 std::optional<TrialOutcome> Match::UpdateTouches() {

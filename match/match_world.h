@@ -47,4 +47,10 @@ struct MatchWorld {
   int kicks_made = 0;  // numbers the kicks' random streams
 };
 
+// The ball's step (match/match.h, step 4): held, it sits at the holder's front; rolling, it
+// advances and stops dead at the first body it meets (match/ball_motion.h); a body that overlaps
+// it pushes it out to the body's edge and stops it. The kicker is ignored until the ball is
+// clear of it by touch_tolerance_m.
+void StepBall(MatchWorld& world, double contact_m, double dt_s, double touch_tolerance_m);
+
 }  // namespace foresight

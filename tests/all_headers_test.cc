@@ -65,6 +65,7 @@
 #include "match/opponent_team.h"
 #include "match/reactive_team.h"
 #include "match/referee.h"
+#include "match/robot_collisions.h"
 #include "match/robot_motion.h"
 #include "match/trial_result.h"
 #include "models/evaluation_params.h"
