@@ -114,11 +114,10 @@ PassingResult RunPassing(const PassingSetup& setup, const KickExecutor& executor
         ScenarioTrials& st = result.scenarios[static_cast<std::size_t>(job / per)];
         const int trial = job % per;
         const Scenario& scenario = setup.config.scenarios[static_cast<std::size_t>(st.scenario - 1)];
-        ReactiveTeam attackers(setup.reactive, setup.field, setup.kicks, setup.robot,
-                               setup.sim.control_step_s,
+        ReactiveTeam attackers(setup.reactive, setup.field, setup.kicks, setup.robot, setup.sim,
                                static_cast<int>(scenario.attackers.size()));
         OpponentTeam opponents(setup.config, setup.kicks, setup.robot, setup.field.ball.radius_m,
-                               setup.sim.control_step_s);
+                               setup.sim);
         const bool is_example = trial == std::min(setup.params.example_trial, per - 1);
         st.trials[static_cast<std::size_t>(trial)] =
             RunTrial(is_example ? example : match, scenario, attackers, opponents,

@@ -73,7 +73,6 @@ void MatchConfig::Validate(const FieldSpec& field, const SimulationParams& sim,
   RequireInRange("time_limit_s", time_limit_s, 1.0, 3600.0);
   RequireInRange("clear_free_distance_m", clear_free_distance_m, 0.0, 5.0);
   RequireInRange("clear_free_cone_deg", clear_free_cone_rad * kRadToDeg, 0.0, 90.0);
-  RequireInRange("clear_hold_limit_s", clear_hold_limit_s, 0.0, 60.0);
   RequireInRange("default_trials", default_trials, 1, 1000000);
   if (opponents.empty()) throw InputError("opponents: must list at least one opponent");
   for (std::size_t i = 0; i < opponents.size(); ++i) {
@@ -127,15 +126,14 @@ MatchConfig LoadMatchConfig(const std::string& reference, const std::filesystem:
   const JsonDocument doc = JsonDocument::Load(c.file);
   const JsonObject root = doc.Root();
   root.RejectUnknownKeys({"name", "sources", "opponents", "clear_kick", "clear_free_distance_m",
-                          "clear_free_cone_deg", "clear_hold_limit_s", "penalty_area_ends_trial",
+                          "clear_free_cone_deg", "penalty_area_ends_trial",
                           "time_limit_s", "default_trials", "scenarios"});
   RequireSources(root, {"opponents", "clear_free_distance_m", "clear_free_cone_deg",
-                        "clear_hold_limit_s", "time_limit_s", "default_trials", "scenarios"});
+                        "time_limit_s", "default_trials", "scenarios"});
   c.name = root.String("name");
   c.clear_kick = root.String("clear_kick");
   c.clear_free_distance_m = root.Number("clear_free_distance_m");
   c.clear_free_cone_rad = root.Number("clear_free_cone_deg") * kDegToRad;
-  c.clear_hold_limit_s = root.Number("clear_hold_limit_s");
   const std::string ends = root.String("penalty_area_ends_trial");
   if (ends != "yes" && ends != "no") root.Fail("penalty_area_ends_trial", "must be yes or no");
   c.penalty_area_ends_trial = ends == "yes";

@@ -55,10 +55,9 @@ struct MatchConfig {
   std::vector<OpponentSpec> opponents;
   std::string clear_kick;  // the kick the opponents clear the ball with
   // A holder turns with the ball while a body stands within clear_free_distance_m and
-  // clear_free_cone_rad of its kick's line, for at most clear_hold_limit_s, then kicks.
+  // clear_free_cone_rad of its kick's line (at most until the ball-holding rule makes it kick).
   double clear_free_distance_m = 0.0;
   double clear_free_cone_rad = 0.0;
-  double clear_hold_limit_s = 0.0;
   bool penalty_area_ends_trial = false;
   double time_limit_s = 0.0;
   int default_trials = 0;

@@ -35,6 +35,7 @@ void SimulationParams::Validate() const {
   RequireInRange("penalty_area_depth_m", penalty_area_depth_m, 0.05, 3.0);
   RequireInRange("penalty_area_half_width_m", penalty_area_half_width_m, 0.05, 3.0);
   RequireInRange("touch_tolerance_m", touch_tolerance_m, 0.0, 0.1);
+  RequireInRange("ball_holding_limit_s", ball_holding_limit_s, 0.1, 60.0);
 }
 
 void RequireSources(const JsonObject& root, std::initializer_list<std::string_view> figures) {
@@ -88,11 +89,12 @@ SimulationParams LoadSimulationParams(const std::string& reference,
   root.RejectUnknownKeys({"field", "kicks", "robot", "sources", "control_step_s",
                           "ball_noise_sigma_m", "robot_noise_sigma_m", "message_latency_s",
                           "message_loss_rate", "close_margin_m", "penalty_area_depth_m",
-                          "penalty_area_half_width_m", "touch_tolerance_m"});
+                          "penalty_area_half_width_m", "touch_tolerance_m",
+                          "ball_holding_limit_s"});
   RequireSources(root, {"control_step_s", "ball_noise_sigma_m", "robot_noise_sigma_m",
                         "message_latency_s", "message_loss_rate", "close_margin_m",
                         "penalty_area_depth_m", "penalty_area_half_width_m",
-                        "touch_tolerance_m"});
+                        "touch_tolerance_m", "ball_holding_limit_s"});
   p.field = root.String("field");
   p.kicks = root.String("kicks");
   p.robot = root.String("robot");
@@ -105,6 +107,7 @@ SimulationParams LoadSimulationParams(const std::string& reference,
   p.penalty_area_depth_m = root.Number("penalty_area_depth_m");
   p.penalty_area_half_width_m = root.Number("penalty_area_half_width_m");
   p.touch_tolerance_m = root.Number("touch_tolerance_m");
+  p.ball_holding_limit_s = root.Number("ball_holding_limit_s");
   WithFile(p.file.string(), [&] { p.Validate(); });
   return p;
 }

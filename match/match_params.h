@@ -14,7 +14,7 @@
 //   control step; perception noise (Gaussian sigmas on the perceived ball and other robots,
 //   0 = the paper's noiseless simulator); message latency and loss; the referee's "close"
 //   margin (sec. 5.1.4); the penalty area (the field file has none); how near a ball must be to
-//   a body to count as touching it.
+//   a body to count as touching it; the ball-holding rule both teams' policies obey.
 #pragma once
 
 #include <filesystem>
@@ -58,6 +58,7 @@ struct SimulationParams {
   double penalty_area_depth_m = 0.0;
   double penalty_area_half_width_m = 0.0;
   double touch_tolerance_m = 0.0;
+  double ball_holding_limit_s = 0.0;  // a rule both teams obey: release the ball within it
 
   void Validate() const;
 };

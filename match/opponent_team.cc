@@ -19,13 +19,15 @@ int RequireKick(const KickModel& kicks, const std::string& name, const std::stri
 }
 
 OpponentTeam::OpponentTeam(const MatchConfig& config, const KickModel& kicks,
-                           const RobotParams& robot, double ball_radius_m, double control_step_s)
+                           const RobotParams& robot, double ball_radius_m,
+                           const SimulationParams& sim)
     : config_(&config),
       clear_kick_(RequireKick(kicks, config.clear_kick, config.file.string(), "clear_kick")),
       contact_m_(robot.body_radius_m + ball_radius_m),
       grab_reach_m_(robot.grab_reach_m),
       grab_cone_rad_(robot.grab_cone_rad),
-      dt_s_(control_step_s),
+      dt_s_(sim.control_step_s),
+      release_after_s_(sim.ball_holding_limit_s - robot.kick_launch_s),
       memory_(config.opponents.size()) {}
 
 RobotCommand OpponentTeam::Clear(Memory& m, const Perception& p) const {
@@ -46,7 +48,7 @@ RobotCommand OpponentTeam::Clear(Memory& m, const Perception& p) const {
     if (static_cast<int>(i) != p.self) consider(p.teammates[i]);
   }
   for (const Pose2& o : p.opponents) consider(o);
-  if (blocker == nullptr || p.time_s - m.holding_since_s >= config_->clear_hold_limit_s) {
+  if (blocker == nullptr || p.time_s - m.holding_since_s >= release_after_s_) {
     RobotCommand kick;
     kick.kind = CommandKind::kKick;
     kick.kick_index = clear_kick_;

@@ -9,7 +9,8 @@
 // configuration's clear kick from the heading it came with (the paper does not say where a
 // clearance goes; ours goes away from the robot's side of the ball), first turning with the
 // ball, away from the nearest body, while a robot stands in the kick's way (within
-// clear_free_distance_m and clear_free_cone of its line), for at most clear_hold_limit_s. Otherwise it walks to the
+// clear_free_distance_m and clear_free_cone of its line), until the ball-holding rule
+// (SimulationParams::ball_holding_limit_s, minus the kick's kick_launch_s) makes it kick. Otherwise it walks to the
 // point of its region nearest to the ball (on the boundary) and turns to face the ball. Every
 // walking target lies in the region and walking never overshoots its target (match/robot_motion.h),
 // so the robot's centre never leaves the region (a box, convex).
@@ -27,7 +28,7 @@ class OpponentTeam final : public TeamPolicy {
   // `config` gives the regions (already mirrored when the attackers attack -x); the clear kick
   // is looked up by name in `kicks` (InputError naming the config file when it is not there).
   OpponentTeam(const MatchConfig& config, const KickModel& kicks, const RobotParams& robot,
-               double ball_radius_m, double control_step_s);
+               double ball_radius_m, const SimulationParams& sim);
   RobotCommand Decide(const Perception& perception) override;
 
  private:
@@ -43,6 +44,7 @@ class OpponentTeam final : public TeamPolicy {
   double grab_reach_m_;
   double grab_cone_rad_;
   double dt_s_;
+  double release_after_s_;  // kick when the ball has been held this long
   std::vector<Memory> memory_;
 };
 

@@ -22,7 +22,6 @@ constexpr int kHolding = 2;
 void ReactiveParams::Validate() const {
   RequireInRange("dodge_radius_m", dodge_radius_m, 0.0, 5.0);
   RequireInRange("dodge_angle_deg", dodge_angle_rad * kRadToDeg, 0.0, 90.0);
-  RequireInRange("hold_limit_s", hold_limit_s, 0.1, 60.0);
   RequireInRange("aim_tolerance_deg", aim_tolerance_rad * kRadToDeg, 0.1, 180.0);
   RequireInRange("back_off_distance_m", back_off_distance_m, 0.0, 5.0);
   RequireInRange("back_off_release_m", back_off_release_m, 0.0, 5.0);
@@ -39,17 +38,15 @@ ReactiveParams LoadReactiveParams(const std::string& reference,
   p.file = ResolveModelFile(reference, DataFolder::kMatch, ".", models_dir);
   const JsonDocument doc = JsonDocument::Load(p.file);
   const JsonObject root = doc.Root();
-  root.RejectUnknownKeys({"name", "sources", "dodge_radius_m", "dodge_angle_deg", "hold_limit_s",
-                          "shoot_kick", "aim_tolerance_deg", "back_off_distance_m",
+  root.RejectUnknownKeys({"name", "sources", "dodge_radius_m", "dodge_angle_deg", "shoot_kick", "aim_tolerance_deg", "back_off_distance_m",
                           "back_off_release_m", "support_behind_m", "support_side_m", "claim_margin_m",
                           "message_period_s", "report_stale_s"});
-  RequireSources(root, {"dodge_radius_m", "dodge_angle_deg", "hold_limit_s", "shoot_kick",
+  RequireSources(root, {"dodge_radius_m", "dodge_angle_deg", "shoot_kick",
                         "aim_tolerance_deg", "back_off_distance_m", "back_off_release_m",
                         "support_behind_m", "support_side_m", "claim_margin_m", "message_period_s",
                         "report_stale_s"});
   p.dodge_radius_m = root.Number("dodge_radius_m");
   p.dodge_angle_rad = root.Number("dodge_angle_deg") * kDegToRad;
-  p.hold_limit_s = root.Number("hold_limit_s");
   p.shoot_kick = root.String("shoot_kick");
   p.aim_tolerance_rad = root.Number("aim_tolerance_deg") * kDegToRad;
   p.back_off_distance_m = root.Number("back_off_distance_m");
@@ -65,13 +62,13 @@ ReactiveParams LoadReactiveParams(const std::string& reference,
 
 ReactiveTeam::ReactiveTeam(const ReactiveParams& params, const FieldSpec& field,
                            const KickModel& kicks, const RobotParams& robot,
-                           double control_step_s, int robots)
+                           const SimulationParams& sim, int robots)
     : params_(params),
       field_(&field),
       shoot_kick_(RequireKick(kicks, params.shoot_kick, params.file.string(), "shoot_kick")),
-      kick_time_s_(robot.kick_time_s),
+      release_after_s_(sim.ball_holding_limit_s - robot.kick_launch_s),
       dribble_speed_mps_(robot.dribble_speed_mps),
-      dt_s_(control_step_s),
+      dt_s_(sim.control_step_s),
       memory_(static_cast<std::size_t>(robots)) {
   const KickSpec& shoot = kicks.kicks[static_cast<std::size_t>(shoot_kick_)];
   shoot_range_m_ = StopDistance(shoot.speed_mps, kicks.rolling_deceleration_mps2);
@@ -126,7 +123,7 @@ RobotCommand ReactiveTeam::Hold(Memory& m, const Perception& p) const {
   const double goal_heading = HeadingTowards(p.p_F_ball, goal);
   const double aim_error = WrapAngle(goal_heading - p.pose.theta_rad);
   const double to_line_m = field_->HalfLength() - p.attack_sign * p.p_F_ball.x();
-  const bool time_up = p.time_s - m.holding_since_s >= params_.hold_limit_s - kick_time_s_;
+  const bool time_up = p.time_s - m.holding_since_s >= release_after_s_;
   if ((to_line_m <= shoot_range_m_ && std::abs(aim_error) <= params_.aim_tolerance_rad) ||
       time_up) {
     RobotCommand kick;

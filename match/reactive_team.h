@@ -18,7 +18,8 @@
 //    opponent (as seen along its own heading, so it never turns the ball through the opponent).
 //    It kicks the shoot kick when the goal line is within the kick's mean roll
 //    distance (v^2 / 2a of the kick model) and it faces the goal within aim_tolerance_deg, and
-//    the same kick forward when it has held the ball for hold_limit_s minus the kick's time.
+//    the same kick forward when the ball would otherwise leave after the simulation's
+//    ball-holding limit (held for the limit minus the kick's kick_launch_s).
 //  - supporter: backs up (walks away from the ball, the "backing up" of Table 2) once it is
 //    nearer than back_off_distance_m to the ball, until it is back_off_release_m further; otherwise it walks to the support point
 //    support_behind_m behind the ball and support_side_m to its own side, facing the ball.
@@ -38,7 +39,6 @@ struct ReactiveParams {
   std::filesystem::path file;
   double dodge_radius_m = 0.0;
   double dodge_angle_rad = 0.0;
-  double hold_limit_s = 0.0;
   std::string shoot_kick;
   double aim_tolerance_rad = 0.0;
   double back_off_distance_m = 0.0;
@@ -59,7 +59,7 @@ ReactiveParams LoadReactiveParams(const std::string& reference,
 class ReactiveTeam final : public TeamPolicy {
  public:
   ReactiveTeam(const ReactiveParams& params, const FieldSpec& field, const KickModel& kicks,
-               const RobotParams& robot, double control_step_s, int robots);
+               const RobotParams& robot, const SimulationParams& sim, int robots);
   RobotCommand Decide(const Perception& perception) override;
 
  private:
@@ -82,7 +82,7 @@ class ReactiveTeam final : public TeamPolicy {
   const FieldSpec* field_;
   int shoot_kick_;
   double shoot_range_m_;
-  double kick_time_s_;
+  double release_after_s_;  // kick when the ball has been held this long
   double dribble_speed_mps_;
   double dt_s_;
   std::vector<Memory> memory_;

@@ -31,8 +31,8 @@ TEST(OpponentTeamTest, OpponentsNeverLeaveTheirRegions) {
                        mirrored ? -1.0 : 1.0, sim.control_step_s};
       for (std::size_t s = 0; s < config.scenarios.size(); ++s) {
         for (int trial = 0; trial < 10; ++trial) {
-          ReactiveTeam attackers(reactive, field, kicks, robot, sim.control_step_s, 2);
-          OpponentTeam opponents(config, kicks, robot, field.ball.radius_m, sim.control_step_s);
+          ReactiveTeam attackers(reactive, field, kicks, robot, sim, 2);
+          OpponentTeam opponents(config, kicks, robot, field.ball.radius_m, sim);
           const MatchTrialResult r = RunTrial(setup, config.scenarios[s], attackers, opponents,
                                               StreamKey(5, s * 100 + trial));
           for (int t : r.counters.opponent_touches) touches += t;
@@ -81,7 +81,7 @@ class OpponentDecisionTest : public ::testing::Test {
 };
 
 TEST_F(OpponentDecisionTest, WaitsOnTheBoundaryNearestTheBallFacingIt) {
-  OpponentTeam team(config_, kicks_, robot_, field_.ball.radius_m, 0.04);
+  OpponentTeam team(config_, kicks_, robot_, field_.ball.radius_m, sim_);
   const Pose2 at{Vec2(0.5, 0.0), kPi};
   const RobotCommand c = team.Decide(See(at, Vec2(-1.5, 0.8)));
   ASSERT_EQ(c.kind, CommandKind::kWalk);
@@ -93,7 +93,7 @@ TEST_F(OpponentDecisionTest, WaitsOnTheBoundaryNearestTheBallFacingIt) {
 }
 
 TEST_F(OpponentDecisionTest, GrabsABallInReachAndClearsOrTurnsAwayFromABlocker) {
-  OpponentTeam team(config_, kicks_, robot_, field_.ball.radius_m, 0.04);
+  OpponentTeam team(config_, kicks_, robot_, field_.ball.radius_m, sim_);
   const Pose2 at{Vec2(1.0, 0.0), kPi};
   const Vec2 ball = at.ToField(Vec2(robot_.body_radius_m + field_.ball.radius_m + 0.01, 0.0));
   EXPECT_EQ(team.Decide(See(at, ball)).kind, CommandKind::kGetBall);
@@ -107,7 +107,7 @@ TEST_F(OpponentDecisionTest, GrabsABallInReachAndClearsOrTurnsAwayFromABlocker) 
   EXPECT_EQ(turn.kind, CommandKind::kWalk);
   EXPECT_NE(turn.turn_radps, 0.0);
   // ... but not beyond the holding limit.
-  holding.time_s = config_.clear_hold_limit_s + 0.04;
+  holding.time_s = sim_.ball_holding_limit_s - robot_.kick_launch_s + 0.04;
   EXPECT_EQ(team.Decide(holding).kind, CommandKind::kKick);
 }
 

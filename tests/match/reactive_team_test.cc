@@ -23,8 +23,9 @@ class ReactiveTeamTest : public ::testing::Test {
     kicks_ = LoadKickModel(models / "kicks" / "aibo_ers7.json");
     robot_ = LoadRobotParams("aibo_ers7", models);
     params_ = LoadReactiveParams("reactive", models);
+    sim_ = LoadSimulationParams("simulation", models);
   }
-  ReactiveTeam Team() const { return ReactiveTeam(params_, field_, kicks_, robot_, 0.04, 2); }
+  ReactiveTeam Team() const { return ReactiveTeam(params_, field_, kicks_, robot_, sim_, 2); }
   Perception See(int self, const Pose2& pose, const Vec2& ball, double time_s = 0.0) const {
     Perception p;
     p.time_s = time_s;
@@ -42,6 +43,7 @@ class ReactiveTeamTest : public ::testing::Test {
   KickModel kicks_;
   RobotParams robot_;
   ReactiveParams params_;
+  SimulationParams sim_;
 };
 
 TEST_F(ReactiveTeamTest, NearerRobotChasesOtherSupportsAndBacksUpWithHysteresis) {
@@ -83,7 +85,7 @@ TEST_F(ReactiveTeamTest, HolderShootsWithinItsKicksReachFacingTheGoal) {
   EXPECT_EQ(walk.kind, CommandKind::kWalk);
   EXPECT_GT(walk.v_R_mps.x(), 0.0);
   // And kicks once it has held the ball for the hold limit minus the kick's time.
-  q.time_s = 1.0 + params_.hold_limit_s - robot_.kick_time_s;
+  q.time_s = 1.0 + sim_.ball_holding_limit_s - robot_.kick_launch_s;
   EXPECT_EQ(far.Decide(q).kind, CommandKind::kKick);
 }
 
