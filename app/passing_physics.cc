@@ -22,8 +22,8 @@ PhysicsKickExecutor::PhysicsKickExecutor(const FieldSpec& field, const KickModel
   for (int k = 0; k < static_cast<int>(kicks.kicks.size()); ++k) {
     if (!probe.HasMotion(k)) {
       throw InputError("--physics: kicks: robot '" + robot_.spec.name +
-                       "' has no motion for kick '" + kicks.kicks[static_cast<std::size_t>(k)].name +
-                       "'");
+                       "' has no motion for kick '" +
+                       kicks.kicks[static_cast<std::size_t>(k)].name + "'");
     }
   }
 }

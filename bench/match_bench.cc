@@ -41,8 +41,7 @@ struct Loaded {
 void BM_Trial(benchmark::State& state, const char* config_name) {
   static const Loaded dg("dg"), two_d("2d");
   const Loaded& l = std::string(config_name) == "dg" ? dg : two_d;
-  const MatchSetup setup{&l.field,  &l.kicks,    &l.robot, &l.sim, &l.config,
-                         &l.executor, 1.0, 0.0};
+  const MatchSetup setup{&l.field, &l.kicks, &l.robot, &l.sim, &l.config, &l.executor, 1.0, 0.0};
   const Scenario& scenario = l.config.scenarios[static_cast<std::size_t>(state.range(0) - 1)];
   double steps = 0.0, trials = 0.0;
   std::uint64_t key = 0;

@@ -28,8 +28,8 @@ PassingParams LoadPassingParams(const std::string& reference,
   p.file = ResolveModelFile(reference, DataFolder::kExperiments, ".", models_dir);
   const JsonDocument doc = JsonDocument::Load(p.file);
   const JsonObject root = doc.Root();
-  root.RejectUnknownKeys({"simulation", "confidence", "example_trial", "trace_period_s",
-                          "step_mark_period_s"});
+  root.RejectUnknownKeys(
+      {"simulation", "confidence", "example_trial", "trace_period_s", "step_mark_period_s"});
   p.simulation = root.String("simulation");
   p.confidence = root.Number("confidence");
   p.example_trial = root.Integer("example_trial");
@@ -39,7 +39,9 @@ PassingParams LoadPassingParams(const std::string& reference,
   return p;
 }
 
-std::string PassingTeamNames() { return kTeams; }
+std::string PassingTeamNames() {
+  return kTeams;
+}
 
 PassingSetup LoadPassingSetup(const PassingRequest& request,
                               const std::filesystem::path& models_dir) {
@@ -113,7 +115,8 @@ PassingResult RunPassing(const PassingSetup& setup, const KickExecutor& executor
       [&](int job) {
         ScenarioTrials& st = result.scenarios[static_cast<std::size_t>(job / per)];
         const int trial = job % per;
-        const Scenario& scenario = setup.config.scenarios[static_cast<std::size_t>(st.scenario - 1)];
+        const Scenario& scenario =
+            setup.config.scenarios[static_cast<std::size_t>(st.scenario - 1)];
         ReactiveTeam attackers(setup.reactive, setup.field, setup.kicks, setup.robot, setup.sim,
                                static_cast<int>(scenario.attackers.size()));
         OpponentTeam opponents(setup.config, setup.kicks, setup.robot, setup.field.ball.radius_m,

@@ -30,8 +30,8 @@ struct PassingParams {
   std::filesystem::path file;
   std::string simulation;  // name of the simulation file in MODELS/match
   double confidence = 0.0;
-  int example_trial = 0;        // the trial of each scenario recorded and drawn (Fig. 13)
-  double trace_period_s = 0.0;  // how often the example trial is recorded
+  int example_trial = 0;            // the trial of each scenario recorded and drawn (Fig. 13)
+  double trace_period_s = 0.0;      // how often the example trial is recorded
   double step_mark_period_s = 0.0;  // numbered marks on the example's paths this often
 
   void Validate() const;
@@ -61,10 +61,10 @@ std::string PassingTeamNames();
 
 struct PassingRequest {
   std::string params = "passing";
-  std::string config;           // "dg", "2d" or a file
+  std::string config;  // "dg", "2d" or a file
   std::string team = "reactive";
-  std::vector<int> scenarios;   // empty: all of the config's
-  int trials = 0;               // 0: the config's default
+  std::vector<int> scenarios;  // empty: all of the config's
+  int trials = 0;              // 0: the config's default
   bool mirrored = false;
 };
 PassingSetup LoadPassingSetup(const PassingRequest& request,

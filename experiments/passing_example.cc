@@ -40,9 +40,9 @@ void DrawPath(FieldCanvas& c, const std::vector<TraceFrame>& trace, int robot,
     const Vec2 p = robot < 0 ? f.p_F_ball : f.robots[static_cast<std::size_t>(robot)].p_F;
     c.svg().Circle(c.X(p.x()), c.Y(p.y()), 6.0,
                    Format("fill:white;stroke:%s;stroke-width:1", std::string(colour).c_str()));
-    c.svg().Text(c.X(p.x()), c.Y(p.y()) + 3.5, std::to_string(next_mark),
-                 Format("font:9px sans-serif;text-anchor:middle;fill:%s",
-                        std::string(colour).c_str()));
+    c.svg().Text(
+        c.X(p.x()), c.Y(p.y()) + 3.5, std::to_string(next_mark),
+        Format("font:9px sans-serif;text-anchor:middle;fill:%s", std::string(colour).c_str()));
     ++next_mark;
   }
 }
@@ -96,13 +96,12 @@ std::string PassingExampleSvg(const PassingRun& run, std::size_t index) {
   for (std::size_t r = 0; r < robots; ++r) {
     const char* colour = r < attackers ? kAttackerColour : kOpponentColour;
     DrawPath(c, t->trace, static_cast<int>(r),
-             Format("fill:none;stroke:%s;stroke-width:2;stroke-opacity:0.8", colour), mark,
-             colour);
+             Format("fill:none;stroke:%s;stroke-width:2;stroke-opacity:0.8", colour), mark, colour);
     c.DrawRobot(t->trace.front().robots[r], setup.robot.body_radius_m, "none");
     c.DrawRobot(t->trace.back().robots[r], setup.robot.body_radius_m, colour);
     const Vec2 p = t->trace.front().robots[r].p_F;
-    const std::string name = r < attackers ? (r == 0 ? "A" : "B")
-                                           : setup.config.opponents[r - attackers].name;
+    const std::string name =
+        r < attackers ? (r == 0 ? "A" : "B") : setup.config.opponents[r - attackers].name;
     c.svg().Text(c.X(p.x()), c.Y(p.y()) - c.Px(setup.robot.body_radius_m) - 4, name,
                  "font:bold 13px sans-serif;text-anchor:middle");
   }

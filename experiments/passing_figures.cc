@@ -11,8 +11,8 @@ namespace {
 
 std::string PercentLabel(const std::string& what, const std::string& scenario, int count, int n,
                          const Interval& ci) {
-  return Format("%s, %s: %d of %d (%.1f %%, interval %.1f-%.1f %%)", scenario.c_str(),
-                what.c_str(), count, n, 100.0 * count / n, 100.0 * ci.low, 100.0 * ci.high);
+  return Format("%s, %s: %d of %d (%.1f %%, interval %.1f-%.1f %%)", scenario.c_str(), what.c_str(),
+                count, n, 100.0 * count / n, 100.0 * ci.low, 100.0 * ci.high);
 }
 
 std::vector<TrialOutcome> ShownOutcomes(const PassingRun& run) {
@@ -88,8 +88,12 @@ std::string PassingPossessionSvg(const PassingRun& run) {
   for (const ScenarioSummary& s : run.summaries) {
     for (std::size_t o = 0; o < s.possession.size(); ++o) {
       const MeanStat& m = s.possession[o];
-      ScatterPoint p{s.scenario - 0.1 + 0.2 * static_cast<double>(o), m.mean, m.ci.low,
-                     m.ci.high, "", static_cast<int>(o)};
+      ScatterPoint p{s.scenario - 0.1 + 0.2 * static_cast<double>(o),
+                     m.mean,
+                     m.ci.low,
+                     m.ci.high,
+                     "",
+                     static_cast<int>(o)};
       p.label = Format("%s, %s: %.2f touches (sd %.2f, n %d)", s.name.c_str(),
                        opponents[o].name.c_str(), m.mean, m.sd, m.n);
       chart.points.push_back(p);

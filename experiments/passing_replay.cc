@@ -139,7 +139,8 @@ std::string PassingReplayHtml(const PassingRun& run, std::size_t index) {
   const MatchTrialResult* t = ExampleTrial(st);
   std::string html =
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>Replay " +
-      st.name + "</title>\n<style>body{font-family:sans-serif;margin:16px}"
+      st.name +
+      "</title>\n<style>body{font-family:sans-serif;margin:16px}"
       "#wrap{display:flex;gap:16px;align-items:flex-start}"
       "#log{white-space:pre;font:12px monospace;height:560px;width:260px;overflow:auto;"
       "border:1px solid #ccc;padding:4px;margin:0}#t{width:700px}</style></head><body>\n";
@@ -148,14 +149,17 @@ std::string PassingReplayHtml(const PassingRun& run, std::size_t index) {
                  st.scenario, st.name.c_str(), setup.team.c_str(), setup.config.name.c_str(),
                  static_cast<int>(t - st.trials.data()),
                  std::string(TrialOutcomeName(t->outcome)).c_str(), t->counters.time_s);
-  html += "<p><button id=\"play\">play / pause</button> <input id=\"t\" type=\"range\" min=\"0\" "
-          "value=\"0\"> <span id=\"time\"></span></p>\n<div id=\"wrap\">" +
-          FieldSvg(setup, *t) + "<pre id=\"log\"></pre></div>\n";
-  html += Format("<p>seed %llu; attackers blue (A, B), opponents vermilion, ball orange; faint "
-                 "lines: the whole paths; dashed boxes: home regions.</p>\n",
-                 static_cast<unsigned long long>(run.provenance.seed));
-  html += "<script>\nconst frames = " + FramesJson(setup, *t) + ";\nconst events = " +
-          EventsJson(setup, *t) + ";\n" + kScript + "</script>\n</body></html>\n";
+  html +=
+      "<p><button id=\"play\">play / pause</button> <input id=\"t\" type=\"range\" min=\"0\" "
+      "value=\"0\"> <span id=\"time\"></span></p>\n<div id=\"wrap\">" +
+      FieldSvg(setup, *t) + "<pre id=\"log\"></pre></div>\n";
+  html += Format(
+      "<p>seed %llu; attackers blue (A, B), opponents vermilion, ball orange; faint "
+      "lines: the whole paths; dashed boxes: home regions.</p>\n",
+      static_cast<unsigned long long>(run.provenance.seed));
+  html += "<script>\nconst frames = " + FramesJson(setup, *t) +
+          ";\nconst events = " + EventsJson(setup, *t) + ";\n" + kScript +
+          "</script>\n</body></html>\n";
   return html;
 }
 

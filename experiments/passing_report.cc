@@ -10,7 +10,9 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json IntervalJson(const Interval& i) { return Json::array({i.low, i.high}); }
+Json IntervalJson(const Interval& i) {
+  return Json::array({i.low, i.high});
+}
 
 Json StatJson(const MeanStat& s) {
   if (s.n == 0) return nullptr;
@@ -50,9 +52,10 @@ Json SummaryJson(const ScenarioSummary& s, const PassingSetup& setup) {
           {"name", s.name},
           {"trials", s.trials},
           {"outcomes", outcomes},
-          {"to_goal", {{"count", s.to_goal},
-                       {"share", static_cast<double>(s.to_goal) / s.trials},
-                       {"share_ci", IntervalJson(s.to_goal_ci)}}},
+          {"to_goal",
+           {{"count", s.to_goal},
+            {"share", static_cast<double>(s.to_goal) / s.trials},
+            {"share_ci", IntervalJson(s.to_goal_ci)}}},
           {"possession", StatsJson(s.possession, opponents)},
           {"possession_without_timeouts", StatsJson(s.possession_ended, opponents)},
           {"opponent_kicks", StatsJson(s.opponent_kicks, opponents)},
@@ -78,7 +81,7 @@ Json PassingJson(const PassingRun& run) {
   Json summaries = Json::array();
   for (const ScenarioSummary& s : run.summaries) summaries.push_back(SummaryJson(s, setup));
   const RunProvenance& p = run.provenance;
-  return {{"experiment", "passing"}, {"version", p.version}, {"seed", p.seed},
+  return {{"experiment", "passing"}, {"version", p.version},   {"seed", p.seed},
           {"params", inputs},        {"scenarios", summaries}, {"run_time_s", p.run_time_s}};
 }
 
@@ -112,10 +115,10 @@ std::string PassingEventsCsv(const PassingRun& run) {
   for (const ScenarioTrials& st : run.result.scenarios) {
     for (std::size_t i = 0; i < st.trials.size(); ++i) {
       for (const MatchEvent& e : st.trials[i].events) {
-        const std::string robot =
-            e.kind == EventKind::kEnd ? ""
-            : e.side == Side::kAttackers ? kAttackerNames[static_cast<std::size_t>(e.robot)]
-                                         : opponents[static_cast<std::size_t>(e.robot)];
+        const std::string robot = e.kind == EventKind::kEnd ? ""
+                                  : e.side == Side::kAttackers
+                                      ? kAttackerNames[static_cast<std::size_t>(e.robot)]
+                                      : opponents[static_cast<std::size_t>(e.robot)];
         csv += Format("%d,%zu,%.2f,%s,%s,%.3f,%.3f,%s\n", st.scenario, i, e.time_s,
                       std::string(EventKindName(e.kind)).c_str(), robot.c_str(), e.p_F_ball.x(),
                       e.p_F_ball.y(), e.detail.c_str());
@@ -130,7 +133,9 @@ std::string PassingText(const PassingRun& run) {
   std::string text = Format("passing: %s team against %s, %d trials per scenario%s\n",
                             setup.team.c_str(), setup.config.name.c_str(), setup.trials,
                             setup.mirrored ? " (mirrored: attacking -x)" : "");
-  text += "scenario  goal close block  out  p.area timeout | to goal | possession (per opp.) | time s\n";
+  text +=
+      "scenario  goal close block  out  p.area timeout | to goal | possession (per opp.) | time "
+      "s\n";
   for (const ScenarioSummary& s : run.summaries) {
     auto pct = [&](TrialOutcome o) {
       return 100.0 * s.counts[static_cast<std::size_t>(o)] / s.trials;

@@ -30,9 +30,15 @@ std::vector<MeanStat> PerRobot(const std::vector<MatchTrialResult>& trials, bool
   return stats;
 }
 
-const std::vector<int>& Touches(const TrialCounters& c) { return c.opponent_touches; }
-const std::vector<int>& OpponentKicks(const TrialCounters& c) { return c.opponent_kicks; }
-const std::vector<int>& Backups(const TrialCounters& c) { return c.attacker_backups; }
+const std::vector<int>& Touches(const TrialCounters& c) {
+  return c.opponent_touches;
+}
+const std::vector<int>& OpponentKicks(const TrialCounters& c) {
+  return c.opponent_kicks;
+}
+const std::vector<int>& Backups(const TrialCounters& c) {
+  return c.attacker_backups;
+}
 
 ScenarioSummary Summarise(const ScenarioTrials& st, double confidence) {
   ScenarioSummary s;

@@ -36,7 +36,7 @@ struct ScenarioSummary {
   std::vector<MeanStat> opponent_kicks;    // per opponent, all trials
   std::vector<MeanStat> backups;           // per attacker, all trials
   std::vector<double> backup_share;        // per attacker: its share of the team's backing-ups
-  int kicks_missed = 0;  // over all trials (physics executors only)
+  int kicks_missed = 0;                    // over all trials (physics executors only)
   int kicks_not_settled = 0;
   MeanStat time_s;
   MeanStat time_ended_s;

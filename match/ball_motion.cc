@@ -8,7 +8,7 @@
 namespace foresight {
 
 std::optional<BallRoll> RollFromOutcome(const Vec2& p_F_start, const Outcome& outcome,
-                                           double deceleration_mps2) {
+                                        double deceleration_mps2) {
   const Vec2 path = outcome.p_F_rest - p_F_start;
   const double d = path.norm();
   if (!(d > 1e-9) || !(outcome.time_s > 0.0)) return std::nullopt;

@@ -33,7 +33,7 @@ struct BallRoll {
 
 // The roll that replays `outcome` from `p_F_start`; nullopt when the ball does not move.
 std::optional<BallRoll> RollFromOutcome(const Vec2& p_F_start, const Outcome& outcome,
-                                           double deceleration_mps2);
+                                        double deceleration_mps2);
 
 struct BodyDisc {
   Vec2 centre{0.0, 0.0};

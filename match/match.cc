@@ -92,8 +92,8 @@ class Match {
   MatchTrialResult Finish(TrialOutcome outcome) {
     result_.outcome = outcome;
     result_.counters.time_s = world_.time_s;
-    result_.events.push_back({world_.time_s, EventKind::kEnd, Side::kAttackers, 0,
-                              world_.ball.p_F, std::string(TrialOutcomeName(outcome))});
+    result_.events.push_back({world_.time_s, EventKind::kEnd, Side::kAttackers, 0, world_.ball.p_F,
+                              std::string(TrialOutcomeName(outcome))});
     return std::move(result_);
   }
 
@@ -129,6 +129,7 @@ class Match {
     p.holding_ball = world_.ball.holder == robot;
     p.busy = me.activity != Activity::kFree;
     p.p_F_ball = Noisy(world_.ball.p_F, s_.sim->ball_noise_sigma_m);
+    world_.robots[static_cast<std::size_t>(robot)].seen_ball = p.p_F_ball;
     for (std::size_t i = 0; i < world_.robots.size(); ++i) {
       const RobotState& r = world_.robots[i];
       Pose2 seen = r.pose;
@@ -144,8 +145,8 @@ class Match {
     std::vector<RobotCommand> commands;
     for (std::size_t i = 0; i < world_.robots.size(); ++i) {
       RobotState& r = world_.robots[i];
-      RobotCommand c = policies_[r.side == Side::kAttackers ? 0 : 1]->Decide(
-          Perceive(static_cast<int>(i)));
+      RobotCommand c =
+          policies_[r.side == Side::kAttackers ? 0 : 1]->Decide(Perceive(static_cast<int>(i)));
       if (c.message) Send(static_cast<int>(i), *c.message);
       if (r.side == Side::kAttackers && c.backing_up && !r.backing_up) {
         ++result_.counters.attacker_backups[static_cast<std::size_t>(r.index)];
@@ -194,7 +195,6 @@ class Match {
   int last_toucher_ = -1;  // the robot that began the last counted touch
 };
 
-
 void Match::Act(const std::vector<RobotCommand>& commands) {
   std::vector<Pose2> proposed;
   for (std::size_t i = 0; i < world_.robots.size(); ++i) {
@@ -241,13 +241,14 @@ Pose2 Match::Propose(int robot, const RobotCommand& command) {
         r.busy_until_s = world_.time_s + rp.grab_time_s;
         return r.pose;
       }
-      const Vec2 to_ball = world_.ball.p_F - r.pose.p_F;
+      // The robot walks to where it sees the ball; whether it can grab is physics (the truth).
+      const Vec2 to_ball = r.seen_ball - r.pose.p_F;
       const double distance = to_ball.norm();
       const double stop_m = contact_m_ + 0.5 * rp.grab_reach_m;
       const Vec2 target =
-          distance > stop_m ? Vec2(world_.ball.p_F - stop_m * to_ball / distance) : r.pose.p_F;
+          distance > stop_m ? Vec2(r.seen_ball - stop_m * to_ball / distance) : r.pose.p_F;
       const RobotCommand walk =
-          WalkTowards(r.pose, target, HeadingTowards(r.pose.p_F, world_.ball.p_F), dt);
+          WalkTowards(r.pose, target, HeadingTowards(r.pose.p_F, r.seen_ball), dt);
       return ApplyWalk(r.pose, walk.v_R_mps, walk.turn_radps, limits, dt);
     }
   }
@@ -286,16 +287,16 @@ void Match::Launch(int robot) {
       others.push_back({world_.robots[i].pose.p_F, s_.robot->body_radius_m});
     }
   }
-  const std::uint64_t stream = StreamKey(trial_key_, static_cast<std::uint64_t>(world_.kicks_made++),
-                                         kMatchKickDomain);
+  const std::uint64_t stream =
+      StreamKey(trial_key_, static_cast<std::uint64_t>(world_.kicks_made++), kMatchKickDomain);
   RandomStream draw(stream);
   ConcreteAction action;
   action.kick_index = r.kick_index;
-  action.launch_speed_mps = std::max(0.0, kick.speed_mps + kick.sigma_speed_mps * draw.NextNormal());
+  action.launch_speed_mps =
+      std::max(0.0, kick.speed_mps + kick.sigma_speed_mps * draw.NextNormal());
   action.launch_direction_rad = kick.direction_rad + kick.sigma_direction_rad * draw.NextNormal();
   action.stream = draw.NextBits();
-  const Outcome outcome =
-      s_.executor->Execute(others, DrawnState{r.pose, world_.ball.p_F}, action);
+  const Outcome outcome = s_.executor->Execute(others, DrawnState{r.pose, world_.ball.p_F}, action);
   result_.counters.kicks_missed += outcome.status == OutcomeStatus::kMissed;
   result_.counters.kicks_not_settled += outcome.status == OutcomeStatus::kNotSettled;
   world_.ball.holder = -1;
@@ -338,7 +339,7 @@ std::optional<TrialOutcome> Match::UpdateTouches() {
 }  // namespace
 
 MatchTrialResult RunTrial(const MatchSetup& setup, const Scenario& scenario, TeamPolicy& attackers,
-                     TeamPolicy& opponents, std::uint64_t trial_key) {
+                          TeamPolicy& opponents, std::uint64_t trial_key) {
   return Match(setup, scenario, attackers, opponents, trial_key).Run();
 }
 

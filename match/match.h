@@ -7,11 +7,12 @@
 //  2. every robot perceives (the ball and the other robots with the optional Gaussian noise) and
 //     its team's policy decides; a busy robot's command is ignored;
 //  3. commands act: walking (slower while holding the ball), getting the ball (walk straight to
-//     it, grab it once it lies within reach in front: grab_time_s standing, then success with
-//     1 - grab_failure_rate; a grab of a ball another robot holds steals it), kicking (a robot
-//     that holds the ball stands kick_time_s, then the ball leaves through the KickExecutor with
-//     a launch drawn from the kick model); a move that would make two bodies overlap or leave
-//     the carpet is cancelled (the robot only turns);
+//     where the robot sees it, grab it once it truly lies within reach in front: grab_time_s
+//     standing, then success with 1 - grab_failure_rate; grabbing a ball another robot holds
+//     steals it with steal_success_rate), kicking (a robot that holds the ball stands
+//     kick_time_s; kick_launch_s into it the ball leaves through the KickExecutor with a launch
+//     drawn from the kick model); moves follow match/robot_collisions.h (bodies never overlap,
+//     opponents never leave their regions, nobody leaves the carpet);
 //  4. the ball: held, it sits at the holder's front; rolling, it advances and stops dead at the
 //     first body it meets (match/ball_motion.h); resting, a body that walks into it pushes it
 //     out to the body's edge;
@@ -43,11 +44,11 @@ struct MatchSetup {
   const SimulationParams* sim = nullptr;
   const MatchConfig* config = nullptr;  // opponents' roles and the end rules
   const KickExecutor* executor = nullptr;
-  double attack_sign = 1.0;             // +1: the attackers attack the goal at +x
-  double trace_period_s = 0.0;          // > 0: record a TraceFrame this often
+  double attack_sign = 1.0;     // +1: the attackers attack the goal at +x
+  double trace_period_s = 0.0;  // > 0: record a TraceFrame this often
 };
 
 MatchTrialResult RunTrial(const MatchSetup& setup, const Scenario& scenario, TeamPolicy& attackers,
-                     TeamPolicy& opponents, std::uint64_t trial_key);
+                          TeamPolicy& opponents, std::uint64_t trial_key);
 
 }  // namespace foresight

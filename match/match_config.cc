@@ -20,7 +20,8 @@ FieldBox ReadRegion(const JsonObject& o) {
 
 Pose2 ReadPose(const JsonObject& o) {
   o.RejectUnknownKeys({"x_m", "y_m", "theta_deg"});
-  return Pose2{Vec2(o.Number("x_m"), o.Number("y_m")), WrapAngle(o.Number("theta_deg") * kDegToRad)};
+  return Pose2{Vec2(o.Number("x_m"), o.Number("y_m")),
+               WrapAngle(o.Number("theta_deg") * kDegToRad)};
 }
 
 Vec2 ReadPoint(const JsonObject& o) {
@@ -62,7 +63,7 @@ Vec2 FieldBox::Clamp(const Vec2& p_F) const {
 
 FieldBox PenaltyArea(const FieldSpec& field, const SimulationParams& sim, double sign) {
   const FieldBox area{field.HalfLength() - sim.penalty_area_depth_m, field.HalfLength(),
-                        -sim.penalty_area_half_width_m, sim.penalty_area_half_width_m};
+                      -sim.penalty_area_half_width_m, sim.penalty_area_half_width_m};
   return sign > 0.0 ? area : area.MirroredX();
 }
 
@@ -83,10 +84,10 @@ void MatchConfig::Validate(const FieldSpec& field, const SimulationParams& sim,
         g.y_min_m < -field.HalfWidth() || g.y_max_m > field.HalfWidth()) {
       throw InputError(at + ": must lie on the field, got " + RegionText(g));
     }
-    if (o.role == OpponentRole::kGoalie && !(area.Contains(Vec2(g.x_min_m, g.y_min_m)) &&
-                                             area.Contains(Vec2(g.x_max_m, g.y_max_m)))) {
-      throw InputError(at + ": a goalie stays in the penalty area " + RegionText(area) +
-                       ", got " + RegionText(g));
+    if (o.role == OpponentRole::kGoalie &&
+        !(area.Contains(Vec2(g.x_min_m, g.y_min_m)) && area.Contains(Vec2(g.x_max_m, g.y_max_m)))) {
+      throw InputError(at + ": a goalie stays in the penalty area " + RegionText(area) + ", got " +
+                       RegionText(g));
     }
     const bool body_may_enter = g.x_max_m + r > area.x_min_m && g.y_max_m + r > area.y_min_m &&
                                 g.y_min_m - r < area.y_max_m;
@@ -126,10 +127,10 @@ MatchConfig LoadMatchConfig(const std::string& reference, const std::filesystem:
   const JsonDocument doc = JsonDocument::Load(c.file);
   const JsonObject root = doc.Root();
   root.RejectUnknownKeys({"name", "sources", "opponents", "clear_kick", "clear_free_distance_m",
-                          "clear_free_cone_deg", "penalty_area_ends_trial",
-                          "time_limit_s", "default_trials", "scenarios"});
-  RequireSources(root, {"opponents", "clear_free_distance_m", "clear_free_cone_deg",
-                        "time_limit_s", "default_trials", "scenarios"});
+                          "clear_free_cone_deg", "penalty_area_ends_trial", "time_limit_s",
+                          "default_trials", "scenarios"});
+  RequireSources(root, {"opponents", "clear_free_distance_m", "clear_free_cone_deg", "time_limit_s",
+                        "default_trials", "scenarios"});
   c.name = root.String("name");
   c.clear_kick = root.String("clear_kick");
   c.clear_free_distance_m = root.Number("clear_free_distance_m");
@@ -152,8 +153,8 @@ MatchConfig LoadMatchConfig(const std::string& reference, const std::filesystem:
   const auto names = root.StringArray("scenarios");
   if (names.empty()) root.Fail("scenarios", "must list at least one scenario");
   for (const std::string& name : names) {
-    const std::filesystem::path file = ResolveModelFile(name, DataFolder::kMatchScenarios,
-                                                        c.file.parent_path(), models_dir);
+    const std::filesystem::path file =
+        ResolveModelFile(name, DataFolder::kMatchScenarios, c.file.parent_path(), models_dir);
     c.scenarios.push_back(LoadScenario(file, static_cast<int>(c.opponents.size())));
   }
   WithFile(c.file.string(), [&] { c.Validate(field, sim, robot); });

@@ -14,8 +14,7 @@ void RobotParams::Validate() const {
   RequireInRange("walk_speed_mps", walk_speed_mps, 0.01, 5.0);
   RequireInRange("turn_speed_deg_per_s", turn_speed_radps * kRadToDeg, 1.0, 1000.0);
   RequireInRange("dribble_speed_mps", dribble_speed_mps, 0.01, walk_speed_mps);
-  RequireInRange("dribble_turn_speed_deg_per_s", dribble_turn_speed_radps * kRadToDeg, 1.0,
-                 1000.0);
+  RequireInRange("dribble_turn_speed_deg_per_s", dribble_turn_speed_radps * kRadToDeg, 1.0, 1000.0);
   RequireInRange("grab_reach_m", grab_reach_m, 0.0, 0.5);
   RequireInRange("grab_cone_deg", grab_cone_rad * kRadToDeg, 1.0, 180.0);
   RequireInRange("grab_time_s", grab_time_s, 0.0, 10.0);
@@ -47,21 +46,19 @@ void RequireSources(const JsonObject& root, std::initializer_list<std::string_vi
   }
 }
 
-RobotParams LoadRobotParams(const std::string& reference,
-                            const std::filesystem::path& models_dir) {
+RobotParams LoadRobotParams(const std::string& reference, const std::filesystem::path& models_dir) {
   const std::filesystem::path file =
       ResolveModelFile(reference, DataFolder::kMatch, ".", models_dir);
   const JsonDocument doc = JsonDocument::Load(file);
   const JsonObject root = doc.Root();
-  root.RejectUnknownKeys({"name", "sources", "body_radius_m", "walk_speed_mps",
-                          "turn_speed_deg_per_s", "dribble_speed_mps",
-                          "dribble_turn_speed_deg_per_s", "grab_reach_m", "grab_cone_deg",
-                          "grab_time_s", "grab_failure_rate", "kick_time_s", "kick_launch_s",
-                          "steal_success_rate"});
-  RequireSources(root, {"body_radius_m", "walk_speed_mps", "turn_speed_deg_per_s",
-                        "dribble_speed_mps", "dribble_turn_speed_deg_per_s", "grab_reach_m",
-                        "grab_cone_deg", "grab_time_s", "grab_failure_rate", "kick_time_s",
-                        "kick_launch_s", "steal_success_rate"});
+  root.RejectUnknownKeys(
+      {"name", "sources", "body_radius_m", "walk_speed_mps", "turn_speed_deg_per_s",
+       "dribble_speed_mps", "dribble_turn_speed_deg_per_s", "grab_reach_m", "grab_cone_deg",
+       "grab_time_s", "grab_failure_rate", "kick_time_s", "kick_launch_s", "steal_success_rate"});
+  RequireSources(root,
+                 {"body_radius_m", "walk_speed_mps", "turn_speed_deg_per_s", "dribble_speed_mps",
+                  "dribble_turn_speed_deg_per_s", "grab_reach_m", "grab_cone_deg", "grab_time_s",
+                  "grab_failure_rate", "kick_time_s", "kick_launch_s", "steal_success_rate"});
   RobotParams p;
   p.name = root.String("name");
   p.body_radius_m = root.Number("body_radius_m");
@@ -91,10 +88,10 @@ SimulationParams LoadSimulationParams(const std::string& reference,
                           "message_loss_rate", "close_margin_m", "penalty_area_depth_m",
                           "penalty_area_half_width_m", "touch_tolerance_m",
                           "ball_holding_limit_s"});
-  RequireSources(root, {"control_step_s", "ball_noise_sigma_m", "robot_noise_sigma_m",
-                        "message_latency_s", "message_loss_rate", "close_margin_m",
-                        "penalty_area_depth_m", "penalty_area_half_width_m",
-                        "touch_tolerance_m", "ball_holding_limit_s"});
+  RequireSources(
+      root, {"control_step_s", "ball_noise_sigma_m", "robot_noise_sigma_m", "message_latency_s",
+             "message_loss_rate", "close_margin_m", "penalty_area_depth_m",
+             "penalty_area_half_width_m", "touch_tolerance_m", "ball_holding_limit_s"});
   p.field = root.String("field");
   p.kicks = root.String("kicks");
   p.robot = root.String("robot");

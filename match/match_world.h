@@ -20,6 +20,7 @@ struct RobotState {
   Activity activity = Activity::kFree;
   double busy_until_s = 0.0;
   double launch_at_s = 0.0;  // kicking: when the ball leaves
+  Vec2 seen_ball{0.0, 0.0};  // where it perceived the ball this step (get-the-ball walks there)
   int kick_index = kNoKick;
   bool touching = false;
   bool backing_up = false;
@@ -29,8 +30,8 @@ struct RobotState {
 struct MatchBall {
   Vec2 p_F{0.0, 0.0};
   std::optional<BallRoll> roll;
-  int holder = -1;           // robot holding it, or -1
-  int leaving_kicker = -1;   // the kicker, until the ball is clear of its body
+  int holder = -1;          // robot holding it, or -1
+  int leaving_kicker = -1;  // the kicker, until the ball is clear of its body
 };
 
 struct MessageInFlight {

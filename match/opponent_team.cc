@@ -82,8 +82,7 @@ RobotCommand OpponentTeam::Decide(const Perception& p) {
   }
   const Vec2 to_ball = ball - p.pose.p_F;
   const double distance = to_ball.norm();
-  if (distance <= reach_m &&
-      std::abs(BearingTo(p.pose, ball)) <= grab_cone_rad_) {
+  if (distance <= reach_m && std::abs(BearingTo(p.pose, ball)) <= grab_cone_rad_) {
     command.kind = CommandKind::kGetBall;
     return command;
   }

@@ -4,16 +4,16 @@
 // his home region, facing the ball."
 //
 // Here: with the perceived ball inside its region, or so near it that the robot can grab it
-// from inside (within body radius + ball radius + grab reach of the boundary), the robot walks to the point in front of the
-// ball where it can grab it (clamped to its region), grabs it and kicks it with the
-// configuration's clear kick from the heading it came with (the paper does not say where a
-// clearance goes; ours goes away from the robot's side of the ball), first turning with the
+// from inside (within body radius + ball radius + grab reach of the boundary), the robot walks to
+// the point in front of the ball where it can grab it (clamped to its region), grabs it and kicks
+// it with the configuration's clear kick from the heading it came with (the paper does not say
+// where a clearance goes; ours goes away from the robot's side of the ball), first turning with the
 // ball, away from the nearest body, while a robot stands in the kick's way (within
 // clear_free_distance_m and clear_free_cone of its line), until the ball-holding rule
-// (SimulationParams::ball_holding_limit_s, minus the kick's kick_launch_s) makes it kick. Otherwise it walks to the
-// point of its region nearest to the ball (on the boundary) and turns to face the ball. Every
-// walking target lies in the region and walking never overshoots its target (match/robot_motion.h),
-// so the robot's centre never leaves the region (a box, convex).
+// (SimulationParams::ball_holding_limit_s, minus the kick's kick_launch_s) makes it kick. Otherwise
+// it walks to the point of its region nearest to the ball (on the boundary) and turns to face the
+// ball. Every walking target lies in the region and walking never overshoots its target
+// (match/robot_motion.h), so the robot's centre never leaves the region (a box, convex).
 #pragma once
 
 #include <vector>

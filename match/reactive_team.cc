@@ -38,13 +38,13 @@ ReactiveParams LoadReactiveParams(const std::string& reference,
   p.file = ResolveModelFile(reference, DataFolder::kMatch, ".", models_dir);
   const JsonDocument doc = JsonDocument::Load(p.file);
   const JsonObject root = doc.Root();
-  root.RejectUnknownKeys({"name", "sources", "dodge_radius_m", "dodge_angle_deg", "shoot_kick", "aim_tolerance_deg", "back_off_distance_m",
-                          "back_off_release_m", "support_behind_m", "support_side_m", "claim_margin_m",
+  root.RejectUnknownKeys({"name", "sources", "dodge_radius_m", "dodge_angle_deg", "shoot_kick",
+                          "aim_tolerance_deg", "back_off_distance_m", "back_off_release_m",
+                          "support_behind_m", "support_side_m", "claim_margin_m",
                           "message_period_s", "report_stale_s"});
-  RequireSources(root, {"dodge_radius_m", "dodge_angle_deg", "shoot_kick",
-                        "aim_tolerance_deg", "back_off_distance_m", "back_off_release_m",
-                        "support_behind_m", "support_side_m", "claim_margin_m", "message_period_s",
-                        "report_stale_s"});
+  RequireSources(root, {"dodge_radius_m", "dodge_angle_deg", "shoot_kick", "aim_tolerance_deg",
+                        "back_off_distance_m", "back_off_release_m", "support_behind_m",
+                        "support_side_m", "claim_margin_m", "message_period_s", "report_stale_s"});
   p.dodge_radius_m = root.Number("dodge_radius_m");
   p.dodge_angle_rad = root.Number("dodge_angle_deg") * kDegToRad;
   p.shoot_kick = root.String("shoot_kick");
@@ -170,10 +170,10 @@ RobotCommand ReactiveTeam::Support(Memory& m, const Perception& p, double distan
   Vec2 target(ball.x() - p.attack_sign * params_.support_behind_m,
               ball.y() + side * params_.support_side_m);
   const double margin_m = 0.5 * params_.back_off_distance_m;
-  target.x() = std::clamp(target.x(), -field_->HalfLength() + margin_m,
-                          field_->HalfLength() - margin_m);
-  target.y() = std::clamp(target.y(), -field_->HalfWidth() + margin_m,
-                          field_->HalfWidth() - margin_m);
+  target.x() =
+      std::clamp(target.x(), -field_->HalfLength() + margin_m, field_->HalfLength() - margin_m);
+  target.y() =
+      std::clamp(target.y(), -field_->HalfWidth() + margin_m, field_->HalfWidth() - margin_m);
   return WalkTowards(p.pose, target, face, dt_s_);
 }
 

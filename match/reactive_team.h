@@ -21,8 +21,9 @@
 //    the same kick forward when the ball would otherwise leave after the simulation's
 //    ball-holding limit (held for the limit minus the kick's kick_launch_s).
 //  - supporter: backs up (walks away from the ball, the "backing up" of Table 2) once it is
-//    nearer than back_off_distance_m to the ball, until it is back_off_release_m further; otherwise it walks to the support point
-//    support_behind_m behind the ball and support_side_m to its own side, facing the ball.
+//    nearer than back_off_distance_m to the ball, until it is back_off_release_m further; otherwise
+//    it walks to the support point support_behind_m behind the ball and support_side_m to its own
+//    side, facing the ball.
 #pragma once
 
 #include <filesystem>

@@ -39,7 +39,7 @@ TrialOutcome Referee::ClassifyCrossing(const Vec2& from, const Vec2& to) const {
   const double y_cross = from.y() + t * step.y();
   if (std::abs(y_cross) > lines_.out_y_m) return TrialOutcome::kOut;  // over the side line first
   return std::abs(y_cross) <= lines_.goal_half_width_m + close_margin_m_ ? TrialOutcome::kClose
-                                                                           : TrialOutcome::kOut;
+                                                                         : TrialOutcome::kOut;
 }
 
 }  // namespace foresight

@@ -16,10 +16,10 @@
 namespace foresight {
 
 struct MoveRules {
-  double x_max_m = 0.0;        // |x| of a robot's centre at most (the carpet minus the body)
+  double x_max_m = 0.0;  // |x| of a robot's centre at most (the carpet minus the body)
   double y_max_m = 0.0;
   double body_radius_m = 0.0;
-  double contact_m = 0.0;      // robot centre to ball centre when they touch
+  double contact_m = 0.0;                        // robot centre to ball centre when they touch
   std::vector<std::optional<FieldBox>> regions;  // per robot: its home region, if it has one
 };
 

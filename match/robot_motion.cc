@@ -4,8 +4,8 @@
 
 namespace foresight {
 
-Pose2 ApplyWalk(const Pose2& pose, const Vec2& v_R_mps, double turn_radps,
-                const WalkLimits& limits, double dt_s) {
+Pose2 ApplyWalk(const Pose2& pose, const Vec2& v_R_mps, double turn_radps, const WalkLimits& limits,
+                double dt_s) {
   Vec2 v = v_R_mps;
   const double speed = v.norm();
   if (speed > limits.speed_mps) v *= limits.speed_mps / speed;

@@ -16,8 +16,8 @@ struct WalkLimits {
 };
 
 // The pose after walking with v_R_mps and turn_radps (both clamped to `limits`) for dt_s.
-Pose2 ApplyWalk(const Pose2& pose, const Vec2& v_R_mps, double turn_radps,
-                const WalkLimits& limits, double dt_s);
+Pose2 ApplyWalk(const Pose2& pose, const Vec2& v_R_mps, double turn_radps, const WalkLimits& limits,
+                double dt_s);
 
 // A kWalk command that would reach p_F_target and heading face_F_rad within one step of dt_s
 // (the simulator clamps it to the robot's limits: the robot then moves part of the way).

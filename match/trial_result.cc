@@ -32,14 +32,20 @@ inline constexpr EnumNames<Side, 2> kSideNames{
 
 }  // namespace
 
-std::string_view TrialOutcomeName(TrialOutcome outcome) { return kOutcomeNames.Name(outcome); }
+std::string_view TrialOutcomeName(TrialOutcome outcome) {
+  return kOutcomeNames.Name(outcome);
+}
 
 bool IsToGoal(TrialOutcome outcome) {
   return outcome == TrialOutcome::kGoal || outcome == TrialOutcome::kClose ||
          outcome == TrialOutcome::kPenaltyArea;
 }
 
-std::string_view EventKindName(EventKind kind) { return kEventNames.Name(kind); }
-std::string_view SideName(Side side) { return kSideNames.Name(side); }
+std::string_view EventKindName(EventKind kind) {
+  return kEventNames.Name(kind);
+}
+std::string_view SideName(Side side) {
+  return kSideNames.Name(side);
+}
 
 }  // namespace foresight

@@ -13,6 +13,8 @@ inline constexpr EnumNames<CommandKind, 4> kCommandKindNames{{{
 }}};
 }  // namespace
 
-std::string_view CommandKindName(CommandKind kind) { return kCommandKindNames.Name(kind); }
+std::string_view CommandKindName(CommandKind kind) {
+  return kCommandKindNames.Name(kind);
+}
 
 }  // namespace foresight

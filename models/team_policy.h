@@ -37,11 +37,11 @@ struct TeamMessage {
 // ball and the other robots are as perceived (with the simulator's optional noise).
 struct Perception {
   double time_s = 0.0;
-  int self = 0;             // index of this robot within its team
-  Pose2 pose;               // own pose in F
+  int self = 0;  // index of this robot within its team
+  Pose2 pose;    // own pose in F
   bool holding_ball = false;
-  bool busy = false;        // grabbing or kicking: the command is ignored until it is done
-  Vec2 p_F_ball{0.0, 0.0};  // perceived
+  bool busy = false;             // grabbing or kicking: the command is ignored until it is done
+  Vec2 p_F_ball{0.0, 0.0};       // perceived
   std::vector<Pose2> teammates;  // the whole team by index; entry `self` is the own pose
   std::vector<Pose2> opponents;  // perceived
   double attack_sign = 1.0;      // +1: the team attacks the goal at +x; -1: the one at -x
@@ -53,8 +53,8 @@ std::string_view CommandKindName(CommandKind kind);
 
 struct RobotCommand {
   CommandKind kind = CommandKind::kStand;
-  Vec2 v_R_mps{0.0, 0.0};  // kWalk: velocity in the robot frame (clamped to the robot's speed)
-  double turn_radps = 0.0;  // kWalk: turning rate (clamped); counter-clockwise positive
+  Vec2 v_R_mps{0.0, 0.0};    // kWalk: velocity in the robot frame (clamped to the robot's speed)
+  double turn_radps = 0.0;   // kWalk: turning rate (clamped); counter-clockwise positive
   int kick_index = kNoKick;  // kKick: the kick of the match's kick model
   std::optional<TeamMessage> message;  // sent to every teammate
   // The robot reports that it is moving away from the ball to leave it to a teammate (the

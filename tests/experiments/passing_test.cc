@@ -13,7 +13,7 @@ namespace foresight {
 namespace {
 
 PassingSetup LoadSetup(const std::string& config, int trials, bool mirrored,
-                   std::vector<int> scenarios) {
+                       std::vector<int> scenarios) {
   PassingRequest request;
   request.config = config;
   request.trials = trials;
@@ -57,13 +57,12 @@ TEST(PassingTest, MirroredGameGivesTheSameSharesWithinTheirIntervals) {
         const Interval& ia = a[s].shares_ci[i];
         const Interval& ib = b[s].shares_ci[i];
         EXPECT_TRUE(ia.low <= ib.high && ib.low <= ia.high)
-            << config << " scenario " << s + 1 << " " << TrialOutcomeName(TrialOutcome(k))
-            << ": " << share_a << " vs mirrored " << share_b;
+            << config << " scenario " << s + 1 << " " << TrialOutcomeName(TrialOutcome(k)) << ": "
+            << share_a << " vs mirrored " << share_b;
       }
       const Interval& ta = a[s].time_s.ci;
       const Interval& tb = b[s].time_s.ci;
-      EXPECT_TRUE(ta.low <= tb.high && tb.low <= ta.high)
-          << config << " scenario " << s + 1;
+      EXPECT_TRUE(ta.low <= tb.high && tb.low <= ta.high) << config << " scenario " << s + 1;
     }
   }
 }

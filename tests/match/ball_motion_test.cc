@@ -15,7 +15,9 @@
 namespace foresight {
 namespace {
 
-FieldSpec Field() { return LoadFieldSpec(testing::ModelsDir() / "fields" / "four_legged.json"); }
+FieldSpec Field() {
+  return LoadFieldSpec(testing::ModelsDir() / "fields" / "four_legged.json");
+}
 
 BallRoll Kick(const FieldSpec& field, double speed_mps, double decel, const Vec2& from) {
   const CoarseKickExecutor executor(field, decel);

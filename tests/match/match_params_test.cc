@@ -62,8 +62,8 @@ TEST(MatchParamsTest, EveryFigureNeedsASource) {
 
 TEST(MatchParamsTest, BadValueNamesFileFieldAndValue) {
   const auto file = testing::WriteTempFile(
-      "robot.json",
-      Replace(Shipped("aibo_ers7.json"), "\"grab_failure_rate\": 0.2", "\"grab_failure_rate\": 1.5"));
+      "robot.json", Replace(Shipped("aibo_ers7.json"), "\"grab_failure_rate\": 0.2",
+                            "\"grab_failure_rate\": 1.5"));
   const std::string error = ErrorOf([&] { LoadRobotParams(file.string(), "."); });
   EXPECT_THAT(error, HasSubstr(file.string() + ": grab_failure_rate"));
   EXPECT_THAT(error, HasSubstr("1.5"));

@@ -63,7 +63,8 @@ class MatchTest : public ::testing::Test {
     setup_.executor = executor_.get();
   }
   Scenario OneOpponentAhead(double opponent_x) const {
-    return Scenario{"test", Vec2(0.0, 0.0),
+    return Scenario{"test",
+                    Vec2(0.0, 0.0),
                     {Pose2{Vec2(-0.2, 0.0), 0.0}, Pose2{Vec2(-1.0, -1.0), 0.0}},
                     {Pose2{Vec2(opponent_x, 0.0), kPi}}};
   }
@@ -134,7 +135,6 @@ TEST_F(MatchTest, SameKeySameTrialOtherKeyOtherTrial) {
                 a.events.back().p_F_ball == c.events.back().p_F_ball,
             true);
 }
-
 
 // Robot 0 sends a message every step; every robot records what it was told and what it saw.
 class Recorder final : public TeamPolicy {

@@ -27,8 +27,14 @@ TEST(OpponentTeamTest, OpponentsNeverLeaveTheirRegions) {
     for (bool mirrored : {false, true}) {
       MatchConfig config = LoadMatchConfig(name, models, field, sim, robot);
       if (mirrored) config = config.Mirrored();
-      MatchSetup setup{&field, &kicks, &robot, &sim, &config, &executor,
-                       mirrored ? -1.0 : 1.0, sim.control_step_s};
+      MatchSetup setup{&field,
+                       &kicks,
+                       &robot,
+                       &sim,
+                       &config,
+                       &executor,
+                       mirrored ? -1.0 : 1.0,
+                       sim.control_step_s};
       for (std::size_t s = 0; s < config.scenarios.size(); ++s) {
         for (int trial = 0; trial < 10; ++trial) {
           ReactiveTeam attackers(reactive, field, kicks, robot, sim, 2);
@@ -53,7 +59,6 @@ TEST(OpponentTeamTest, OpponentsNeverLeaveTheirRegions) {
   EXPECT_GT(frames, 10000);
   EXPECT_GT(touches, 50);  // they do play the ball
 }
-
 
 class OpponentDecisionTest : public ::testing::Test {
  protected:

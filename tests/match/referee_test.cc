@@ -18,9 +18,7 @@ class RefereeTest : public ::testing::Test {
   FieldLines lines_ = FieldLines::Of(field_);
   // A path from 0.3 m in front of the attacked goal line to 0.3 m behind it, crossing at y.
   Vec2 In(double y, double sign = 1.0) const { return Vec2(sign * (lines_.out_x_m - 0.3), y); }
-  Vec2 Beyond(double y, double sign = 1.0) const {
-    return Vec2(sign * (lines_.out_x_m + 0.3), y);
-  }
+  Vec2 Beyond(double y, double sign = 1.0) const { return Vec2(sign * (lines_.out_x_m + 0.3), y); }
 };
 
 TEST_F(RefereeTest, GoalCloseAndOutOverTheGoalLine) {
