@@ -8,15 +8,15 @@
 
 namespace foresight {
 
-namespace {
-
-FieldBox ReadRegion(const JsonObject& o) {
+FieldBox ReadFieldBox(const JsonObject& o) {
   o.RejectUnknownKeys({"x_min_m", "x_max_m", "y_min_m", "y_max_m"});
   FieldBox r{o.Number("x_min_m"), o.Number("x_max_m"), o.Number("y_min_m"), o.Number("y_max_m")};
   if (!(r.x_min_m < r.x_max_m)) o.Fail("x_max_m", "must be greater than x_min_m");
   if (!(r.y_min_m < r.y_max_m)) o.Fail("y_max_m", "must be greater than y_min_m");
   return r;
 }
+
+namespace {
 
 Pose2 ReadPose(const JsonObject& o) {
   o.RejectUnknownKeys({"x_m", "y_m", "theta_deg"});
@@ -147,7 +147,7 @@ MatchConfig LoadMatchConfig(const std::string& reference, const std::filesystem:
     const std::string role = o.String("role");
     if (role != "goalie" && role != "defender") o.Fail("role", "must be goalie or defender");
     spec.role = role == "goalie" ? OpponentRole::kGoalie : OpponentRole::kDefender;
-    spec.region = ReadRegion(o.Object("region"));
+    spec.region = ReadFieldBox(o.Object("region"));
     c.opponents.push_back(spec);
   }
   const auto names = root.StringArray("scenarios");

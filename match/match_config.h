@@ -34,6 +34,11 @@ struct FieldBox {
   FieldBox MirroredX() const { return {-x_max_m, -x_min_m, y_min_m, y_max_m}; }
 };
 
+// Reads {"x_min_m", "x_max_m", "y_min_m", "y_max_m"} (min below max, else an InputError naming
+// the field).
+class JsonObject;
+FieldBox ReadFieldBox(const JsonObject& o);
+
 enum class OpponentRole : std::uint8_t { kGoalie, kDefender };
 
 struct OpponentSpec {

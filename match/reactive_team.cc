@@ -1,6 +1,7 @@
 #include "match/reactive_team.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "common/checks.h"
@@ -28,6 +29,10 @@ void ReactiveParams::Validate() const {
   RequireInRange("support_behind_m", support_behind_m, -5.0, 5.0);
   RequireInRange("support_side_m", support_side_m, 0.0, 5.0);
   RequireInRange("claim_margin_m", claim_margin_m, 0.0, 5.0);
+  if (role_regions.size() < 2) {
+    throw InputError("role_regions: must give one region per attacker (2), got " +
+                     std::to_string(role_regions.size()));
+  }
   RequireInRange("message_period_s", message_period_s, 0.01, 60.0);
   RequireInRange("report_stale_s", report_stale_s, 0.01, 60.0);
 }
@@ -40,11 +45,12 @@ ReactiveParams LoadReactiveParams(const std::string& reference,
   const JsonObject root = doc.Root();
   root.RejectUnknownKeys({"name", "sources", "dodge_radius_m", "dodge_angle_deg", "shoot_kick",
                           "aim_tolerance_deg", "back_off_distance_m", "back_off_release_m",
-                          "support_behind_m", "support_side_m", "claim_margin_m",
+                          "support_behind_m", "support_side_m", "claim_margin_m", "role_regions",
                           "message_period_s", "report_stale_s"});
-  RequireSources(root, {"dodge_radius_m", "dodge_angle_deg", "shoot_kick", "aim_tolerance_deg",
-                        "back_off_distance_m", "back_off_release_m", "support_behind_m",
-                        "support_side_m", "claim_margin_m", "message_period_s", "report_stale_s"});
+  RequireSources(root,
+                 {"dodge_radius_m", "dodge_angle_deg", "shoot_kick", "aim_tolerance_deg",
+                  "back_off_distance_m", "back_off_release_m", "support_behind_m", "support_side_m",
+                  "claim_margin_m", "role_regions", "message_period_s", "report_stale_s"});
   p.dodge_radius_m = root.Number("dodge_radius_m");
   p.dodge_angle_rad = root.Number("dodge_angle_deg") * kDegToRad;
   p.shoot_kick = root.String("shoot_kick");
@@ -54,6 +60,9 @@ ReactiveParams LoadReactiveParams(const std::string& reference,
   p.support_behind_m = root.Number("support_behind_m");
   p.support_side_m = root.Number("support_side_m");
   p.claim_margin_m = root.Number("claim_margin_m");
+  for (const JsonObject& o : root.ObjectArray("role_regions")) {
+    p.role_regions.push_back(ReadFieldBox(o));
+  }
   p.message_period_s = root.Number("message_period_s");
   p.report_stale_s = root.Number("report_stale_s");
   WithFile(p.file.string(), [&] { p.Validate(); });
@@ -70,6 +79,7 @@ ReactiveTeam::ReactiveTeam(const ReactiveParams& params, const FieldSpec& field,
       dribble_speed_mps_(robot.dribble_speed_mps),
       dt_s_(sim.control_step_s),
       memory_(static_cast<std::size_t>(robots)) {
+  assert(static_cast<std::size_t>(robots) <= params.role_regions.size());
   const KickSpec& shoot = kicks.kicks[static_cast<std::size_t>(shoot_kick_)];
   shoot_range_m_ = StopDistance(shoot.speed_mps, kicks.rolling_deceleration_mps2);
 }
@@ -169,6 +179,8 @@ RobotCommand ReactiveTeam::Support(Memory& m, const Perception& p, double distan
   const double side = p.pose.p_F.y() >= ball.y() ? 1.0 : -1.0;
   Vec2 target(ball.x() - p.attack_sign * params_.support_behind_m,
               ball.y() + side * params_.support_side_m);
+  const FieldBox& own = params_.role_regions[static_cast<std::size_t>(p.self)];
+  target = (p.attack_sign > 0.0 ? own : own.MirroredX()).Clamp(target);
   const double margin_m = 0.5 * params_.back_off_distance_m;
   target.x() =
       std::clamp(target.x(), -field_->HalfLength() + margin_m, field_->HalfLength() - margin_m);

@@ -23,13 +23,15 @@
 //  - supporter: backs up (walks away from the ball, the "backing up" of Table 2) once it is
 //    nearer than back_off_distance_m to the ball, until it is back_off_release_m further; otherwise
 //    it walks to the support point support_behind_m behind the ball and support_side_m to its own
-//    side, facing the ball.
+//    side, facing the ball, clamped to its role's region (role_regions, one per robot: the roles
+//    keep each supporter in its region; the chaser goes wherever the ball is).
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "match/match_config.h"
 #include "match/match_params.h"
 #include "models/field_spec.h"
 #include "models/team_policy.h"
@@ -47,6 +49,7 @@ struct ReactiveParams {
   double support_behind_m = 0.0;
   double support_side_m = 0.0;
   double claim_margin_m = 0.0;
+  std::vector<FieldBox> role_regions;  // per robot, for attacking +x (x mirrored for -x)
   double message_period_s = 0.0;
   double report_stale_s = 0.0;
 

@@ -69,6 +69,18 @@ TEST(MatchParamsTest, BadValueNamesFileFieldAndValue) {
   EXPECT_THAT(error, HasSubstr("1.5"));
 }
 
+TEST(MatchParamsTest, ReactiveTeamNeedsARoleRegionPerAttacker) {
+  const std::string text =
+      Replace(Shipped("reactive.json"),
+              ",\n    {\"x_min_m\": -2.7, \"x_max_m\": 2.7, \"y_min_m\": -1.8, "
+              "\"y_max_m\": 0.6}",
+              "");
+  const auto file = testing::WriteTempFile("reactive.json", text);
+  const std::string error = ErrorOf([&] { LoadReactiveParams(file.string(), "."); });
+  EXPECT_THAT(error,
+              HasSubstr(file.string() + ": role_regions: must give one region per attacker"));
+}
+
 class ConfigTest : public ::testing::Test {
  protected:
   std::filesystem::path models_ = testing::ModelsDir();

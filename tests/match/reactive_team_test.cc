@@ -9,6 +9,7 @@
 
 #include <vector>
 
+#include "match/robot_motion.h"
 #include "planner/ball_roll.h"
 #include "tests/support/temp_files.h"
 
@@ -68,6 +69,25 @@ TEST_F(ReactiveTeamTest, NearerRobotChasesOtherSupportsAndBacksUpWithHysteresis)
   const auto mate = Report(1, 1, 0.5, 0.0);
   q.inbox = mate;
   EXPECT_EQ(other.Decide(q).kind, CommandKind::kGetBall);
+}
+
+TEST_F(ReactiveTeamTest, SupporterWaitsInsideItsRoleRegion) {
+  for (double sign : {1.0, -1.0}) {
+    ReactiveTeam team = Team();
+    // B (robot 1, region y <= 0.6 m) above a ball at y = 1.0 while A holds it: the support point
+    // 0.8 m further up is outside B's region; B goes to its edge instead.
+    const Vec2 ball(sign * 0.5, 1.0);
+    Perception p = See(1, Pose2{Vec2(sign * -0.5, 1.2), 0.0}, ball, 0.04);
+    const auto told = Report(0, 2, 0.16, 0.0);
+    p.inbox = told;
+    p.attack_sign = sign;
+    const RobotCommand c = team.Decide(p);
+    ASSERT_EQ(c.kind, CommandKind::kWalk);
+    EXPECT_FALSE(c.backing_up);
+    const Pose2 next = ApplyWalk(p.pose, c.v_R_mps, c.turn_radps, {1e9, 1e9}, 0.04);
+    EXPECT_NEAR(next.p_F.y(), params_.role_regions[1].y_max_m, 1e-9) << sign;
+    EXPECT_NEAR(next.p_F.x(), sign * (0.5 - params_.support_behind_m), 1e-9) << sign;
+  }
 }
 
 TEST_F(ReactiveTeamTest, HolderShootsWithinItsKicksReachFacingTheGoal) {
