@@ -4,8 +4,13 @@
 #include <iostream>
 
 #include "app/cli_values.h"
+#include "app/passing_physics.h"
 #include "app/report_text.h"
 #include "common/error.h"
+#include "experiments/passing_example.h"
+#include "experiments/passing_figures.h"
+#include "experiments/passing_replay.h"
+#include "experiments/passing_report.h"
 #include "experiments/stability_report.h"
 #include "experiments/strategies_report.h"
 #include "models/model_paths.h"
@@ -160,14 +165,95 @@ int RunStrategiesExperiment(const StrategiesOptions& o, const std::filesystem::p
   return 0;
 }
 
+void AddPassing(CLI::App& experiment, PassingOptions& o) {
+  CLI::App* cmd = experiment.add_subcommand(
+      "passing", "2-vs-2 attacks against DG or 2D opponents (Ros et al. 2009, sec. 5.2)");
+  cmd->add_option("--config", o.config, "Opponents: dg, 2d or a configuration file")->required();
+  cmd->add_option("--team", o.team, "Attacking team: " + PassingTeamNames())
+      ->capture_default_str();
+  cmd->add_option("--scenarios", o.scenarios, "Scenarios, e.g. 1-4 or 3,4 (default: all)");
+  cmd->add_option("--trials", o.trials, "Trials per scenario (default: the configuration's)");
+  cmd->add_flag("--mirror", o.mirror, "Attack the goal at -x instead (the mirrored game)");
+  cmd->add_flag("--physics", o.physics, "Execute every kick in the Bullet scene");
+  cmd->add_option("--physics-file", o.physics_file,
+                  "Physics file (default: MODELS/physics/<field>.json)");
+  cmd->add_option("--params", o.params, "Experiment file, or a name in MODELS/experiments/")
+      ->capture_default_str();
+  cmd->add_option("--seed", o.seed, "Random seed")->capture_default_str();
+  cmd->add_option("--threads", o.threads, "Worker threads (0: all cores)")->capture_default_str();
+  cmd->add_option("--out", o.out_dir, "Folder for the results")->required();
+}
+
+int RunPassingExperiment(const PassingOptions& o, const std::filesystem::path& models) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::uint64_t seed = ParseSeed(o.seed);
+  const int threads = ParseCount("--threads", o.threads, 0, 1024);
+  PassingRequest request;
+  request.params = o.params;
+  request.config = o.config;
+  request.team = o.team;
+  if (!o.scenarios.empty()) request.scenarios = ParseSampleCounts("--scenarios", o.scenarios);
+  if (!o.trials.empty()) request.trials = ParseCount("--trials", o.trials, 1, 10000000);
+  request.mirrored = o.mirror;
+  if (!o.physics && !o.physics_file.empty()) throw InputError("--physics-file needs --physics");
+  const PassingSetup setup = LoadPassingSetup(request, models);
+  std::unique_ptr<KickExecutor> executor;
+  std::string physics_file;
+  if (o.physics) {
+    auto physics = std::make_unique<PhysicsKickExecutor>(setup.field, setup.kicks, models,
+                                                         o.physics_file);
+    physics_file = DisplayPath(physics->physics_file(), models);
+    executor = std::move(physics);
+  } else {
+    executor = std::make_unique<CoarseKickExecutor>(setup.field,
+                                                    setup.kicks.rolling_deceleration_mps2);
+  }
+  CheckReportDir(o.out_dir, "--out");
+
+  PassingRun run;
+  run.provenance.version = FORESIGHT_VERSION;
+  run.provenance.seed = seed;
+  run.provenance.inputs = {{"file", DisplayPath(setup.params.file, models)},
+                           {"simulation", DisplayPath(setup.sim.file, models)},
+                           {"field", DisplayPath(setup.field_file, models)},
+                           {"kicks", DisplayPath(setup.kicks_file, models)},
+                           {"config", DisplayPath(setup.config.file, models)},
+                           {"team", setup.team},
+                           {"team_file", DisplayPath(setup.reactive.file, models)},
+                           {"executor", o.physics ? "physics" : "coarse"},
+                           {"mirrored", setup.mirrored ? "yes" : "no"}};
+  if (o.physics) run.provenance.SetInput("physics", physics_file);
+  run.setup = &setup;
+  run.result = RunPassing(setup, *executor, seed, threads, TerminalProgress("passing:", "trials"));
+  run.summaries = SummarisePassing(run.result, setup.params.confidence);
+  run.provenance.run_time_s = SecondsSince(start);
+
+  const std::filesystem::path dir(o.out_dir);
+  ReportFiles files = {{dir / "passing.json", PassingJson(run).dump(2) + "\n"},
+                       {dir / "passing_trials.csv", PassingTrialsCsv(run)},
+                       {dir / "passing_events.csv", PassingEventsCsv(run)},
+                       {dir / "passing_outcomes.svg", PassingOutcomesSvg(run)},
+                       {dir / "passing_possession.svg", PassingPossessionSvg(run)},
+                       {dir / "passing_time.svg", PassingTimeSvg(run)}};
+  for (std::size_t i = 0; i < run.result.scenarios.size(); ++i) {
+    files.push_back({dir / ("passing_example_" + run.result.scenarios[i].name + ".svg"),
+                     PassingExampleSvg(run, i)});
+    files.push_back({dir / ("passing_replay_" + run.result.scenarios[i].name + ".html"),
+                     PassingReplayHtml(run, i)});
+  }
+  WriteReport(o.out_dir, files, PassingText(run), "passing_outcomes.svg");
+  return 0;
+}
+
 }  // namespace
 
 void AddExperimentCommand(CLI::App& app, ExperimentOptions& options) {
   CLI::App* experiment =
-      app.add_subcommand("experiment", "The paper's experiments: stability, strategies");
+      app.add_subcommand("experiment", "The papers' experiments: stability, strategies, passing");
   experiment->require_subcommand(1);
   AddStability(*experiment, options.stability);
   AddStrategies(*experiment, options.strategies);
+  AddPassing(*experiment, options.passing);
 }
 
 int RunExperimentCommand(const CLI::App& app, const ExperimentOptions& options,
@@ -175,6 +261,7 @@ int RunExperimentCommand(const CLI::App& app, const ExperimentOptions& options,
   const CLI::App* experiment = app.get_subcommand("experiment");
   const std::filesystem::path models = ModelsFolder(models_dir);
   if (experiment->got_subcommand("stability")) return RunStability(options.stability, models);
+  if (experiment->got_subcommand("passing")) return RunPassingExperiment(options.passing, models);
   return RunStrategiesExperiment(options.strategies, models);
 }
 

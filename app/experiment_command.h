@@ -1,5 +1,6 @@
-// `foresight experiment stability|strategies`: the paper's two experiments (Mellmann &
-// Schlotter, sec. V), each writing JSON, CSV and SVG figures to a folder.
+// `foresight experiment stability|strategies|passing`: the first paper's two experiments
+// (Mellmann & Schlotter, sec. V) and the second paper's passing trials (Ros et al. 2009, sec.
+// 5.2), each writing JSON, CSV and SVG figures to a folder.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -30,9 +31,24 @@ struct StrategiesOptions {
   std::string out_dir;
 };
 
+struct PassingOptions {
+  std::string params = "passing";
+  std::string config;
+  std::string team = "reactive";
+  std::string scenarios;  // empty: all
+  std::string trials;     // empty: the configuration's default
+  bool mirror = false;
+  bool physics = false;
+  std::string physics_file;
+  std::string seed = "1";
+  std::string threads = "0";
+  std::string out_dir;
+};
+
 struct ExperimentOptions {
   StabilityOptions stability;
   StrategiesOptions strategies;
+  PassingOptions passing;
 };
 
 void AddExperimentCommand(CLI::App& app, ExperimentOptions& options);

@@ -8,7 +8,8 @@
 // Readers and their seed corpora (fuzz/CMakeLists.txt): situation, field, kicks, evaluation,
 // physics, robot (robot.json), motion (kick motion), urdf, mesh (OBJ referenced by a fixed URDF),
 // fidelity_set, check_spec, stability, strategies, observed_kicks (CSV), case, problem,
-// case_base (settings file), retrieval.
+// case_base (settings file), retrieval, match_robot, match_simulation, match_config,
+// match_scenario (inside a fixed configuration), reactive, passing.
 #include <unistd.h>
 
 #include <cstddef>
@@ -18,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <string>
 
@@ -27,6 +29,10 @@
 #include "cbr/retrieval_params.h"
 #include "common/error.h"
 #include "experiments/experiment_params.h"
+#include "experiments/passing.h"
+#include "match/match_config.h"
+#include "match/match_params.h"
+#include "match/reactive_team.h"
 #include "models/evaluation_params.h"
 #include "models/field_spec.h"
 #include "models/kick_model.h"
@@ -76,6 +82,20 @@ fs::path MeshUrdf() {
   return urdf;
 }
 
+std::string ReadShipped(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// A match configuration with the shipped field, simulation and robot.
+void LoadMatchInputs(const fs::path& config) {
+  static const fs::path models = DefaultModelsDir();
+  static const SimulationParams sim = LoadSimulationParams("simulation", models);
+  static const FieldSpec field = LoadFieldSpec(DataFile(models, DataFolder::kFields, sim.field));
+  static const RobotParams robot = LoadRobotParams(sim.robot, models);
+  LoadMatchConfig(config.string(), models, field, sim, robot);
+}
+
 using Reader = std::function<void(const uint8_t*, std::size_t)>;
 
 const std::map<std::string, Reader>& Readers() {
@@ -115,6 +135,24 @@ const std::map<std::string, Reader>& Readers() {
              LoadFieldSpec(DataFile(models, DataFolder::kFields, "four_legged"));
          LoadRetrievalParams(Write("retrieval.json", d, n), field);
        }},
+      {"match_robot",
+       [](auto d, auto n) { LoadRobotParams(Write("mr.json", d, n).string(), models); }},
+      {"match_simulation",
+       [](auto d, auto n) { LoadSimulationParams(Write("ms.json", d, n).string(), models); }},
+      {"match_config", [](auto d, auto n) { LoadMatchInputs(Write("mc.json", d, n)); }},
+      {"match_scenario",
+       [](auto d, auto n) {
+         Write("fz_scenario.json", d, n);
+         const fs::path config = WorkDir() / "fz_config.json";
+         std::string text = ReadShipped(models / "match" / "dg.json");
+         text.replace(text.find("\"dg_1\""), 6, "\"fz_scenario.json\"");
+         std::ofstream(config) << text;
+         LoadMatchInputs(config);
+       }},
+      {"reactive",
+       [](auto d, auto n) { LoadReactiveParams(Write("re.json", d, n).string(), models); }},
+      {"passing",
+       [](auto d, auto n) { LoadPassingParams(Write("pa.json", d, n).string(), models); }},
   };
   return readers;
 }

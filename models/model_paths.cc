@@ -7,7 +7,7 @@
 namespace foresight {
 namespace {
 
-constexpr EnumNames<DataFolder, 11> kFolderNames{{{
+constexpr EnumNames<DataFolder, 13> kFolderNames{{{
     {DataFolder::kFields, "fields"},
     {DataFolder::kKicks, "kicks"},
     {DataFolder::kEvaluation, "evaluation"},
@@ -19,6 +19,8 @@ constexpr EnumNames<DataFolder, 11> kFolderNames{{{
     {DataFolder::kCheckSpecs, "check_specs"},
     {DataFolder::kExperiments, "experiments"},
     {DataFolder::kCases, "cases"},
+    {DataFolder::kMatch, "match"},
+    {DataFolder::kMatchScenarios, "match/scenarios"},
 }}};
 
 }  // namespace

@@ -27,6 +27,8 @@ enum class DataFolder {
   kCheckSpecs,
   kExperiments,
   kCases,
+  kMatch,           // the match simulator: robot, simulation, configurations, teams
+  kMatchScenarios,  // the match scenarios (Ros et al. 2009, Fig. 12)
 };
 std::string_view DataFolderName(DataFolder folder);  // "fields", "kicks", ...
 

@@ -29,6 +29,12 @@ declare -A seeds=(
   [problem]="$root/fuzz/seeds/problem.json $m/cbr/problems/*.json"
   [case_base]="$m/cases/case_base.json"
   [retrieval]="$m/cbr/retrieval.json"
+  [match_robot]="$m/match/aibo_ers7.json"
+  [match_simulation]="$m/match/simulation.json"
+  [match_config]="$m/match/dg.json $m/match/2d.json"
+  [match_scenario]="$m/match/scenarios/*.json"
+  [reactive]="$m/match/reactive.json"
+  [passing]="$m/experiments/passing.json"
 )
 mkdir -p "$build/findings"
 failed=0

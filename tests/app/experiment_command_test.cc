@@ -134,6 +134,61 @@ TEST_F(ExperimentCommandTest, BadInputIsOneLineExitTwoAndNoFolder) {
   ExpectBadInput({"strategies", "--kicks", "missing.json", "--out", "out"}, "missing.json");
 }
 
+TEST_F(ExperimentCommandTest, PassingWritesJsonCsvEventsAndFigures) {
+  const RunResult r = Experiment({"passing", "--config", "dg", "--scenarios", "3-4", "--trials",
+                                  "6", "--threads", "2", "--out", "out"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("reactive team against dg, 6 trials per scenario"));
+  for (const char* file : {"passing.json", "passing_trials.csv", "passing_events.csv",
+                           "passing_outcomes.svg", "passing_possession.svg", "passing_time.svg",
+                           "passing_example_dg_3.svg", "passing_example_dg_4.svg",
+                           "passing_replay_dg_3.html", "passing_replay_dg_4.html"}) {
+    EXPECT_TRUE(fs::exists(work() / "out" / file)) << file;
+  }
+  const auto json = nlohmann::json::parse(ReadFile(work() / "out" / "passing.json"));
+  EXPECT_EQ(json["scenarios"].size(), 2u);
+  EXPECT_EQ(json["scenarios"][0]["trials"], 6);
+  EXPECT_EQ(CountOf(ReadFile(work() / "out" / "passing_trials.csv"), "\n"), 1 + 12);
+  const std::string replay = ReadFile(work() / "out" / "passing_replay_dg_3.html");
+  EXPECT_THAT(replay, HasSubstr("const frames = [[0.00,"));
+  for (const char* fetch : {"src=", "<link", "url(", "import "}) {  // self-contained
+    EXPECT_THAT(replay, ::testing::Not(HasSubstr(fetch)));
+  }
+}
+
+TEST_F(ExperimentCommandTest, PassingBadScenarioOrParameterFileIsOneLineExitTwoAndNoFolder) {
+  const std::string dg = ReadFile(fs::path(FORESIGHT_TEST_MODELS_DIR) / "match" / "dg.json");
+  const fs::path bad_time = Write(
+      "bad_time.json", foresight::testing::ReplaceOnce(dg, "\"time_limit_s\": 120.0",
+                                                       "\"time_limit_s\": -1"));
+  ExpectBadInput({"passing", "--config", bad_time.string(), "--out", "out"},
+                 bad_time.string() + ": time_limit_s: must be");
+  const std::string scenario = ReadFile(fs::path(FORESIGHT_TEST_MODELS_DIR) / "match" / "scenarios" / "dg_1.json");
+  Write("bad_scenario.json",
+        foresight::testing::ReplaceOnce(scenario, "\"x_m\": -1.3", "\"x_m\": \"far\""));
+  const fs::path config = Write(
+      "config.json", foresight::testing::ReplaceOnce(dg, "\"dg_1\"", "\"bad_scenario.json\""));
+  ExpectBadInput({"passing", "--config", config.string(), "--out", "out"},
+                 "bad_scenario.json: ball.x_m: must be a number");
+  ExpectBadInput({"passing", "--config", "dg", "--scenarios", "5", "--out", "out"},
+                 "--scenarios: scenario 5 does not exist");
+  ExpectBadInput({"passing", "--config", "dg", "--team", "cbr", "--out", "out"},
+                 "--team: unknown team 'cbr'");
+  ExpectBadInput({"passing", "--config", "3d", "--out", "out"}, "3d.json");
+  ExpectBadInput({"passing", "--config", "dg", "--physics-file", "x.json", "--out", "out"},
+                 "--physics-file needs --physics");
+}
+
+TEST_F(ExperimentCommandTest, PassingWithPhysicsExecutesTheKicksInBullet) {
+  const RunResult r = Experiment({"passing", "--config", "dg", "--scenarios", "4", "--trials",
+                                  "2", "--physics", "--out", "out"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(ReadFile(work() / "out" / "passing.json"));
+  EXPECT_EQ(json["params"]["executor"], "physics");
+  EXPECT_EQ(json["params"]["physics"], "physics/four_legged.json");
+  EXPECT_TRUE(json["scenarios"][0].contains("kicks_missed"));
+}
+
 // A bad --out fails before the work: a file in the way of the folder.
 TEST_F(ExperimentCommandTest, OutBlockedByAFileFailsBeforeTheWork) {
   Write("blocker", "x");

@@ -1,0 +1,133 @@
+#include "experiments/passing.h"
+
+#include <algorithm>
+
+#include "common/checks.h"
+#include "common/error.h"
+#include "common/parallel_for.h"
+#include "common/random.h"
+#include "match/opponent_team.h"
+#include "models/model_paths.h"
+
+namespace foresight {
+
+namespace {
+const char* const kTeams = "reactive";
+}  // namespace
+
+void PassingParams::Validate() const {
+  RequireInRange("confidence", confidence, 0.5, 0.999);
+  RequireInRange("example_trial", example_trial, 0, 1000000);
+  RequireInRange("trace_period_s", trace_period_s, 0.01, 10.0);
+  RequireInRange("step_mark_period_s", step_mark_period_s, 0.1, 60.0);
+}
+
+PassingParams LoadPassingParams(const std::string& reference,
+                                const std::filesystem::path& models_dir) {
+  PassingParams p;
+  p.file = ResolveModelFile(reference, DataFolder::kExperiments, ".", models_dir);
+  const JsonDocument doc = JsonDocument::Load(p.file);
+  const JsonObject root = doc.Root();
+  root.RejectUnknownKeys(
+      {"simulation", "confidence", "example_trial", "trace_period_s", "step_mark_period_s"});
+  p.simulation = root.String("simulation");
+  p.confidence = root.Number("confidence");
+  p.example_trial = root.Integer("example_trial");
+  p.trace_period_s = root.Number("trace_period_s");
+  p.step_mark_period_s = root.Number("step_mark_period_s");
+  WithFile(p.file.string(), [&] { p.Validate(); });
+  return p;
+}
+
+std::string PassingTeamNames() {
+  return kTeams;
+}
+
+PassingSetup LoadPassingSetup(const PassingRequest& request,
+                              const std::filesystem::path& models_dir) {
+  PassingSetup s;
+  if (request.team != "reactive") {
+    throw InputError("--team: unknown team '" + request.team + "' (one of: " + kTeams + ")");
+  }
+  s.team = request.team;
+  s.params = LoadPassingParams(request.params, models_dir);
+  s.sim = LoadSimulationParams(s.params.simulation, models_dir);
+  s.field_file = ResolveModelFile(s.sim.field, DataFolder::kFields, ".", models_dir);
+  s.field = LoadFieldSpec(s.field_file);
+  s.kicks_file = ResolveModelFile(s.sim.kicks, DataFolder::kKicks, ".", models_dir);
+  s.kicks = LoadKickModel(s.kicks_file);
+  s.robot = LoadRobotParams(s.sim.robot, models_dir);
+  s.config = LoadMatchConfig(request.config, models_dir, s.field, s.sim, s.robot);
+  s.reactive = LoadReactiveParams("reactive", models_dir);
+  // Kick names are checked here, before any work.
+  RequireKick(s.kicks, s.config.clear_kick, s.config.file.string(), "clear_kick");
+  RequireKick(s.kicks, s.reactive.shoot_kick, s.reactive.file.string(), "shoot_kick");
+  const int count = static_cast<int>(s.config.scenarios.size());
+  s.scenarios = request.scenarios;
+  if (s.scenarios.empty()) {
+    for (int i = 1; i <= count; ++i) s.scenarios.push_back(i);
+  }
+  for (int n : s.scenarios) {
+    if (n < 1 || n > count) {
+      throw InputError("--scenarios: scenario " + std::to_string(n) + " does not exist (the " +
+                       s.config.name + " configuration has 1-" + std::to_string(count) + ")");
+    }
+  }
+  s.trials = request.trials > 0 ? request.trials : s.config.default_trials;
+  s.mirrored = request.mirrored;
+  if (s.mirrored) s.config = s.config.Mirrored();
+  return s;
+}
+
+std::uint64_t PassingTrialKey(std::uint64_t seed, int scenario, int trial) {
+  return StreamKey(seed,
+                   static_cast<std::uint64_t>(scenario) * kTrialsPerScenarioKey +
+                       static_cast<std::uint64_t>(trial),
+                   kPassingDomain);
+}
+
+PassingResult RunPassing(const PassingSetup& setup, const KickExecutor& executor,
+                         std::uint64_t seed, int threads,
+                         const std::function<void(int, int)>& progress) {
+  MatchSetup match;
+  match.field = &setup.field;
+  match.kicks = &setup.kicks;
+  match.robot = &setup.robot;
+  match.sim = &setup.sim;
+  match.config = &setup.config;
+  match.executor = &executor;
+  match.attack_sign = setup.mirrored ? -1.0 : 1.0;
+  MatchSetup example = match;
+  example.trace_period_s = setup.params.trace_period_s;
+
+  PassingResult result;
+  for (int n : setup.scenarios) {
+    ScenarioTrials st;
+    st.scenario = n;
+    st.name = setup.config.scenarios[static_cast<std::size_t>(n - 1)].name;
+    st.trials.resize(static_cast<std::size_t>(setup.trials));
+    result.scenarios.push_back(std::move(st));
+  }
+  const int per = setup.trials;
+  const int total = per * static_cast<int>(result.scenarios.size());
+  ParallelFor(
+      total, threads,
+      [&](int job) {
+        ScenarioTrials& st = result.scenarios[static_cast<std::size_t>(job / per)];
+        const int trial = job % per;
+        const Scenario& scenario =
+            setup.config.scenarios[static_cast<std::size_t>(st.scenario - 1)];
+        ReactiveTeam attackers(setup.reactive, setup.field, setup.kicks, setup.robot, setup.sim,
+                               static_cast<int>(scenario.attackers.size()));
+        OpponentTeam opponents(setup.config, setup.kicks, setup.robot, setup.field.ball.radius_m,
+                               setup.sim);
+        const bool is_example = trial == std::min(setup.params.example_trial, per - 1);
+        st.trials[static_cast<std::size_t>(trial)] =
+            RunTrial(is_example ? example : match, scenario, attackers, opponents,
+                     PassingTrialKey(seed, st.scenario, trial));
+      },
+      progress);
+  return result;
+}
+
+}  // namespace foresight

@@ -1,0 +1,90 @@
+// The passing experiment (Ros et al. 2009, sec. 5.2): two attackers played by a team (today the
+// reactive baseline, match/reactive_team.h; the CBR team next) against the opponents of one
+// configuration (DG or 2D) from each of the four scenarios, N trials each, in the match
+// simulator (match/match.h).
+//
+// Trial i of scenario s draws everything from StreamKey(seed, s * kTrialsPerScenarioKey + i,
+// kPassingDomain): the key does not depend on the team, so every team meets the same random
+// numbers (common random numbers: the next issue's comparison is paired), nor on the thread.
+// The experiment file (models/experiments/passing.json) names the simulation file and holds the
+// report's figures: the confidence of the intervals, the example trial and how it is drawn.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "match/match.h"
+#include "match/reactive_team.h"
+#include "models/field_spec.h"
+
+namespace foresight {
+
+inline constexpr std::uint64_t kPassingDomain = 0x7061'7373'696eULL;  // "passin"
+inline constexpr std::uint64_t kTrialsPerScenarioKey = 1ULL << 32;
+
+struct PassingParams {
+  std::filesystem::path file;
+  std::string simulation;  // name of the simulation file in MODELS/match
+  double confidence = 0.0;
+  int example_trial = 0;            // the trial of each scenario recorded and drawn (Fig. 13)
+  double trace_period_s = 0.0;      // how often the example trial is recorded
+  double step_mark_period_s = 0.0;  // numbered marks on the example's paths this often
+
+  void Validate() const;
+};
+PassingParams LoadPassingParams(const std::string& reference,
+                                const std::filesystem::path& models_dir);
+
+// Every input of one run, loaded and checked.
+struct PassingSetup {
+  PassingParams params;
+  SimulationParams sim;
+  FieldSpec field;
+  std::filesystem::path field_file;
+  KickModel kicks;
+  std::filesystem::path kicks_file;
+  RobotParams robot;
+  MatchConfig config;  // mirrored when `mirrored`
+  std::string team;    // "reactive"
+  ReactiveParams reactive;
+  std::vector<int> scenarios;  // 1-based scenario numbers to play, ascending
+  int trials = 0;              // per scenario
+  bool mirrored = false;       // the attackers attack the goal at -x
+};
+
+// The team names `--team` accepts.
+std::string PassingTeamNames();
+
+struct PassingRequest {
+  std::string params = "passing";
+  std::string config;  // "dg", "2d" or a file
+  std::string team = "reactive";
+  std::vector<int> scenarios;  // empty: all of the config's
+  int trials = 0;              // 0: the config's default
+  bool mirrored = false;
+};
+PassingSetup LoadPassingSetup(const PassingRequest& request,
+                              const std::filesystem::path& models_dir);
+
+struct ScenarioTrials {
+  int scenario = 0;  // 1-based
+  std::string name;
+  std::vector<MatchTrialResult> trials;  // trial i at index i; the example one with its trace
+};
+
+struct PassingResult {
+  std::vector<ScenarioTrials> scenarios;
+};
+
+std::uint64_t PassingTrialKey(std::uint64_t seed, int scenario, int trial);
+
+// Plays every trial with `executor` carrying out the kicks; progress(done, total) counts trials.
+PassingResult RunPassing(const PassingSetup& setup, const KickExecutor& executor,
+                         std::uint64_t seed, int threads,
+                         const std::function<void(int, int)>& progress = {});
+
+}  // namespace foresight

@@ -1,0 +1,127 @@
+#include "experiments/passing_figures.h"
+
+#include "report/chart_axes.h"
+#include "report/charts.h"
+#include "report/field_svg.h"
+#include "report/report_format.h"
+
+namespace foresight {
+
+namespace {
+
+std::string PercentLabel(const std::string& what, const std::string& scenario, int count, int n,
+                         const Interval& ci) {
+  return Format("%s, %s: %d of %d (%.1f %%, interval %.1f-%.1f %%)", scenario.c_str(), what.c_str(),
+                count, n, 100.0 * count / n, 100.0 * ci.low, 100.0 * ci.high);
+}
+
+std::vector<TrialOutcome> ShownOutcomes(const PassingRun& run) {
+  // Classes no trial of this configuration can end with are left out (no goalie: no goal,
+  // close or block in 2D; no penalty-area rule in DG).
+  std::vector<TrialOutcome> shown;
+  for (int k = 0; k < kTrialOutcomeCount; ++k) {
+    const auto outcome = static_cast<TrialOutcome>(k);
+    const bool has_goalie = [&] {
+      for (const OpponentSpec& o : run.setup->config.opponents) {
+        if (o.role == OpponentRole::kGoalie) return true;
+      }
+      return false;
+    }();
+    if (outcome == TrialOutcome::kBlock && !has_goalie) continue;
+    if (outcome == TrialOutcome::kPenaltyArea && !run.setup->config.penalty_area_ends_trial) {
+      continue;
+    }
+    if ((outcome == TrialOutcome::kGoal || outcome == TrialOutcome::kClose) &&
+        run.setup->config.penalty_area_ends_trial) {
+      continue;
+    }
+    shown.push_back(outcome);
+  }
+  return shown;
+}
+
+std::string RunTitle(const PassingRun& run, const std::string& what) {
+  return what + " (" + run.setup->team + " vs " + run.setup->config.name + ", " +
+         std::to_string(run.setup->trials) + " trials per scenario)";
+}
+
+}  // namespace
+
+std::string PassingOutcomesSvg(const PassingRun& run) {
+  ScatterChart chart;
+  chart.title = RunTitle(run, "Outcome shares");
+  chart.x_label = "scenario";
+  chart.y_label = "share of trials (%)";
+  chart.identity_line = false;
+  chart.size = {720.0, 420.0};
+  const std::vector<TrialOutcome> shown = ShownOutcomes(run);
+  const double width = 0.7 / static_cast<double>(shown.size() + 1);
+  for (const ScenarioSummary& s : run.summaries) {
+    for (std::size_t k = 0; k < shown.size() + 1; ++k) {
+      const bool to_goal = k == shown.size();
+      const int count = to_goal ? s.to_goal : s.counts[static_cast<std::size_t>(shown[k])];
+      const Interval ci = to_goal ? s.to_goal_ci : s.shares_ci[static_cast<std::size_t>(shown[k])];
+      const std::string name = to_goal ? "to goal" : std::string(TrialOutcomeName(shown[k]));
+      ScatterPoint p;
+      p.x = s.scenario - 0.35 + width * (static_cast<double>(k) + 0.5);
+      p.y = 100.0 * count / s.trials;
+      p.y_low = 100.0 * ci.low;
+      p.y_high = 100.0 * ci.high;
+      p.series = static_cast<int>(k);
+      p.label = PercentLabel(name, s.name, count, s.trials, ci);
+      chart.points.push_back(p);
+    }
+  }
+  for (TrialOutcome o : shown) chart.series_names.emplace_back(TrialOutcomeName(o));
+  chart.series_names.emplace_back("to goal");
+  return ScatterSvg(chart);
+}
+
+std::string PassingPossessionSvg(const PassingRun& run) {
+  ScatterChart chart;
+  chart.title = RunTitle(run, "Opponents' possession (touches per trial)");
+  chart.x_label = "scenario";
+  chart.y_label = "touches per trial";
+  chart.identity_line = false;
+  chart.size = {720.0, 420.0};
+  const auto& opponents = run.setup->config.opponents;
+  for (const ScenarioSummary& s : run.summaries) {
+    for (std::size_t o = 0; o < s.possession.size(); ++o) {
+      const MeanStat& m = s.possession[o];
+      ScatterPoint p{s.scenario - 0.1 + 0.2 * static_cast<double>(o),
+                     m.mean,
+                     m.ci.low,
+                     m.ci.high,
+                     "",
+                     static_cast<int>(o)};
+      p.label = Format("%s, %s: %.2f touches (sd %.2f, n %d)", s.name.c_str(),
+                       opponents[o].name.c_str(), m.mean, m.sd, m.n);
+      chart.points.push_back(p);
+    }
+  }
+  for (const OpponentSpec& o : opponents) chart.series_names.push_back(o.name);
+  return ScatterSvg(chart);
+}
+
+std::string PassingTimeSvg(const PassingRun& run) {
+  ScatterChart chart;
+  chart.title = RunTitle(run, "Trial time (mean and interval)");
+  chart.x_label = "scenario";
+  chart.y_label = "time (s)";
+  chart.identity_line = false;
+  chart.size = {720.0, 420.0};
+  for (const ScenarioSummary& s : run.summaries) {
+    const MeanStat* stats[2] = {&s.time_s, &s.time_ended_s};
+    for (int k = 0; k < 2; ++k) {
+      const MeanStat& m = *stats[k];
+      if (m.n == 0) continue;
+      ScatterPoint p{s.scenario - 0.1 + 0.2 * k, m.mean, m.ci.low, m.ci.high, "", k};
+      p.label = Format("%s: %.2f s (sd %.2f, n %d)", s.name.c_str(), m.mean, m.sd, m.n);
+      chart.points.push_back(p);
+    }
+  }
+  chart.series_names = {"all trials", "without timeouts"};
+  return ScatterSvg(chart);
+}
+
+}  // namespace foresight

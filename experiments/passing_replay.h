@@ -1,0 +1,19 @@
+// A self-contained HTML replay of one trial of the passing experiment: the field with the home
+// regions and the attacked penalty area, every robot's and the ball's whole path faintly, and the
+// robots and the ball at the time a slider selects (with play/pause and the events up to that
+// time listed beside). Everything is inline (SVG, the frames as JSON, a small script for the
+// slider): it opens from disk without a network. The script is the only one in the project's
+// reports; a time slider cannot be made without one.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "experiments/passing_report.h"
+
+namespace foresight {
+
+// The replay of the example trial of run.result.scenarios[index] (the one with a trace).
+std::string PassingReplayHtml(const PassingRun& run, std::size_t index);
+
+}  // namespace foresight

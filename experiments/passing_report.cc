@@ -1,0 +1,153 @@
+#include "experiments/passing_report.h"
+
+#include <algorithm>
+
+#include "report/report_format.h"
+
+namespace foresight {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json IntervalJson(const Interval& i) {
+  return Json::array({i.low, i.high});
+}
+
+Json StatJson(const MeanStat& s) {
+  if (s.n == 0) return nullptr;
+  return {{"n", s.n}, {"mean", s.mean}, {"sd", s.sd}, {"mean_ci", IntervalJson(s.ci)}};
+}
+
+Json StatsJson(const std::vector<MeanStat>& stats, const std::vector<std::string>& names) {
+  Json j = Json::object();
+  for (std::size_t i = 0; i < stats.size(); ++i) j[names[i]] = StatJson(stats[i]);
+  return j;
+}
+
+std::vector<std::string> OpponentNames(const PassingSetup& setup) {
+  std::vector<std::string> names;
+  for (const OpponentSpec& o : setup.config.opponents) names.push_back(o.name);
+  return names;
+}
+
+const std::vector<std::string> kAttackerNames = {"A", "B"};
+
+Json SummaryJson(const ScenarioSummary& s, const PassingSetup& setup) {
+  Json outcomes = Json::object();
+  for (int k = 0; k < kTrialOutcomeCount; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    outcomes[std::string(TrialOutcomeName(static_cast<TrialOutcome>(k)))] = {
+        {"count", s.counts[i]},
+        {"share", static_cast<double>(s.counts[i]) / s.trials},
+        {"share_ci", IntervalJson(s.shares_ci[i])}};
+  }
+  Json backups = Json::object();
+  for (std::size_t i = 0; i < s.backups.size(); ++i) {
+    backups[kAttackerNames[i]] = StatJson(s.backups[i]);
+    backups[kAttackerNames[i]]["share"] = s.backup_share[i];
+  }
+  const std::vector<std::string> opponents = OpponentNames(setup);
+  return {{"scenario", s.scenario},
+          {"name", s.name},
+          {"trials", s.trials},
+          {"outcomes", outcomes},
+          {"to_goal",
+           {{"count", s.to_goal},
+            {"share", static_cast<double>(s.to_goal) / s.trials},
+            {"share_ci", IntervalJson(s.to_goal_ci)}}},
+          {"possession", StatsJson(s.possession, opponents)},
+          {"possession_without_timeouts", StatsJson(s.possession_ended, opponents)},
+          {"opponent_kicks", StatsJson(s.opponent_kicks, opponents)},
+          {"backups", backups},
+          {"kicks_missed", s.kicks_missed},
+          {"kicks_not_settled", s.kicks_not_settled},
+          {"time_s", StatJson(s.time_s)},
+          {"time_without_timeouts_s", StatJson(s.time_ended_s)}};
+}
+
+}  // namespace
+
+Json PassingJson(const PassingRun& run) {
+  const PassingSetup& setup = *run.setup;
+  Json inputs = InputsJson(run.provenance);
+  Json scenarios = Json::array();
+  for (int n : setup.scenarios) scenarios.push_back(n);
+  inputs.update({{"scenarios", scenarios},
+                 {"trials_per_scenario", setup.trials},
+                 {"confidence", setup.params.confidence},
+                 {"control_step_s", setup.sim.control_step_s},
+                 {"time_limit_s", setup.config.time_limit_s}});
+  Json summaries = Json::array();
+  for (const ScenarioSummary& s : run.summaries) summaries.push_back(SummaryJson(s, setup));
+  const RunProvenance& p = run.provenance;
+  return {{"experiment", "passing"}, {"version", p.version},   {"seed", p.seed},
+          {"params", inputs},        {"scenarios", summaries}, {"run_time_s", p.run_time_s}};
+}
+
+std::string PassingTrialsCsv(const PassingRun& run) {
+  const std::vector<std::string> opponents = OpponentNames(*run.setup);
+  std::string csv = "scenario,trial,outcome,to_goal,time_s";
+  for (const std::string& o : opponents) csv += ",touches_" + o + ",kicks_" + o;
+  for (const std::string& a : kAttackerNames) csv += ",backups_" + a + ",kicks_" + a;
+  csv += ",grabs_failed,kicks_missed,kicks_not_settled\n";
+  for (const ScenarioTrials& st : run.result.scenarios) {
+    for (std::size_t i = 0; i < st.trials.size(); ++i) {
+      const TrialCounters& c = st.trials[i].counters;
+      csv += Format("%d,%zu,%s,%d,%.2f", st.scenario, i,
+                    std::string(TrialOutcomeName(st.trials[i].outcome)).c_str(),
+                    IsToGoal(st.trials[i].outcome) ? 1 : 0, c.time_s);
+      for (std::size_t o = 0; o < c.opponent_touches.size(); ++o) {
+        csv += Format(",%d,%d", c.opponent_touches[o], c.opponent_kicks[o]);
+      }
+      for (std::size_t a = 0; a < c.attacker_backups.size(); ++a) {
+        csv += Format(",%d,%d", c.attacker_backups[a], c.attacker_kicks[a]);
+      }
+      csv += Format(",%d,%d,%d\n", c.grabs_failed, c.kicks_missed, c.kicks_not_settled);
+    }
+  }
+  return csv;
+}
+
+std::string PassingEventsCsv(const PassingRun& run) {
+  const std::vector<std::string> opponents = OpponentNames(*run.setup);
+  std::string csv = "scenario,trial,time_s,event,robot,ball_x_m,ball_y_m,detail\n";
+  for (const ScenarioTrials& st : run.result.scenarios) {
+    for (std::size_t i = 0; i < st.trials.size(); ++i) {
+      for (const MatchEvent& e : st.trials[i].events) {
+        const std::string robot = e.kind == EventKind::kEnd ? ""
+                                  : e.side == Side::kAttackers
+                                      ? kAttackerNames[static_cast<std::size_t>(e.robot)]
+                                      : opponents[static_cast<std::size_t>(e.robot)];
+        csv += Format("%d,%zu,%.2f,%s,%s,%.3f,%.3f,%s\n", st.scenario, i, e.time_s,
+                      std::string(EventKindName(e.kind)).c_str(), robot.c_str(), e.p_F_ball.x(),
+                      e.p_F_ball.y(), e.detail.c_str());
+      }
+    }
+  }
+  return csv;
+}
+
+std::string PassingText(const PassingRun& run) {
+  const PassingSetup& setup = *run.setup;
+  std::string text = Format("passing: %s team against %s, %d trials per scenario%s\n",
+                            setup.team.c_str(), setup.config.name.c_str(), setup.trials,
+                            setup.mirrored ? " (mirrored: attacking -x)" : "");
+  text +=
+      "scenario  goal close block  out  p.area timeout | to goal | possession (per opp.) | time "
+      "s\n";
+  for (const ScenarioSummary& s : run.summaries) {
+    auto pct = [&](TrialOutcome o) {
+      return 100.0 * s.counts[static_cast<std::size_t>(o)] / s.trials;
+    };
+    text += Format("%-8s %5.1f %5.1f %5.1f %5.1f %5.1f %5.1f   | %5.1f   |", s.name.c_str(),
+                   pct(TrialOutcome::kGoal), pct(TrialOutcome::kClose), pct(TrialOutcome::kBlock),
+                   pct(TrialOutcome::kOut), pct(TrialOutcome::kPenaltyArea),
+                   pct(TrialOutcome::kTimeout), 100.0 * s.to_goal / s.trials);
+    for (const MeanStat& m : s.possession) text += Format(" %.2f (%.2f)", m.mean, m.sd);
+    text += Format(" | %.2f\n", s.time_s.mean);
+  }
+  return text;
+}
+
+}  // namespace foresight

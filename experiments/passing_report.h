@@ -1,0 +1,30 @@
+// What `foresight experiment passing` writes besides its figures (experiments/passing_figures.h):
+// JSON (the contract: inputs, figures and per scenario the rows of the paper's Tables 1, 2, 4, 5
+// with intervals), a CSV with one row per trial, a CSV event log (every kick, touch, grab,
+// message, backing-up and end, with times) and a terminal text.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "experiments/passing_stats.h"
+#include "report/provenance.h"
+
+namespace foresight {
+
+struct PassingRun {
+  // Inputs: "file" (the experiment file), "simulation", "field", "kicks", "robot", "config",
+  // "team", "executor" ("coarse"), "mirrored".
+  RunProvenance provenance;
+  const PassingSetup* setup = nullptr;
+  PassingResult result;
+  std::vector<ScenarioSummary> summaries;
+};
+
+std::string PassingText(const PassingRun& run);
+nlohmann::ordered_json PassingJson(const PassingRun& run);
+std::string PassingTrialsCsv(const PassingRun& run);
+std::string PassingEventsCsv(const PassingRun& run);
+
+}  // namespace foresight

@@ -1,0 +1,346 @@
+#include "match/match.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/random.h"
+#include "match/match_world.h"
+#include "match/referee.h"
+#include "match/robot_collisions.h"
+#include "match/robot_motion.h"
+
+namespace foresight {
+
+namespace {
+
+class Match {
+ public:
+  Match(const MatchSetup& setup, const Scenario& scenario, TeamPolicy& attackers,
+        TeamPolicy& opponents, std::uint64_t trial_key)
+      : s_(setup),
+        rng_(trial_key),
+        trial_key_(trial_key),
+        referee_(*setup.field, *setup.sim, setup.config->penalty_area_ends_trial,
+                 setup.attack_sign),
+        policies_{&attackers, &opponents},
+        contact_m_(setup.robot->body_radius_m + setup.field->ball.radius_m) {
+    AddRobots(Side::kAttackers, scenario.attackers);
+    AddRobots(Side::kOpponents, scenario.opponents);
+    world_.ball.p_F = scenario.p_F_ball;
+    rules_.x_max_m = setup.field->CarpetHalfLength() - setup.robot->body_radius_m;
+    rules_.y_max_m = setup.field->CarpetHalfWidth() - setup.robot->body_radius_m;
+    rules_.body_radius_m = setup.robot->body_radius_m;
+    rules_.contact_m = contact_m_;
+    for (const RobotState& r : world_.robots) {
+      rules_.regions.push_back(
+          r.side == Side::kOpponents
+              ? std::optional<FieldBox>(
+                    setup.config->opponents[static_cast<std::size_t>(r.index)].region)
+              : std::nullopt);
+    }
+    result_.counters.attacker_backups.assign(scenario.attackers.size(), 0);
+    result_.counters.attacker_kicks.assign(scenario.attackers.size(), 0);
+    result_.counters.opponent_touches.assign(scenario.opponents.size(), 0);
+    result_.counters.opponent_kicks.assign(scenario.opponents.size(), 0);
+  }
+
+  MatchTrialResult Run() {
+    const double dt = s_.sim->control_step_s;
+    // Step count instead of accumulated time, so every trial sees the same clock.
+    const long max_steps = std::lround(s_.config->time_limit_s / dt);
+    Record();
+    for (long step = 1; step <= max_steps; ++step) {
+      const Vec2 ball_before = world_.ball.p_F;
+      DeliverMessages();
+      std::vector<RobotCommand> commands = Decide();
+      world_.time_s = static_cast<double>(step) * dt;
+      Act(commands);
+      StepBall(world_, contact_m_, s_.sim->control_step_s, s_.sim->touch_tolerance_m);
+      const std::optional<TrialOutcome> touched_end = UpdateTouches();
+      std::optional<TrialOutcome> end = referee_.Judge(ball_before, world_.ball.p_F);
+      if (!end) end = touched_end;
+      if (world_.time_s >= next_trace_s_ || end) Record();
+      if (end) return Finish(*end);
+    }
+    return Finish(TrialOutcome::kTimeout);
+  }
+
+ private:
+  void AddRobots(Side side, const std::vector<Pose2>& poses) {
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+      RobotState robot;
+      robot.side = side;
+      robot.index = static_cast<int>(i);
+      robot.pose = poses[i];
+      world_.robots.push_back(robot);
+    }
+  }
+
+  void Event(EventKind kind, int robot, std::string detail = {}) {
+    const RobotState& r = world_.robots[static_cast<std::size_t>(robot)];
+    result_.events.push_back({world_.time_s, kind, r.side, r.index, world_.ball.p_F, detail});
+  }
+
+  void Record() {
+    if (!(s_.trace_period_s > 0.0)) return;
+    TraceFrame frame{world_.time_s, world_.ball.p_F, {}};
+    for (const RobotState& r : world_.robots) frame.robots.push_back(r.pose);
+    result_.trace.push_back(std::move(frame));
+    next_trace_s_ = world_.time_s + s_.trace_period_s - 1e-9;
+  }
+
+  MatchTrialResult Finish(TrialOutcome outcome) {
+    result_.outcome = outcome;
+    result_.counters.time_s = world_.time_s;
+    result_.events.push_back({world_.time_s, EventKind::kEnd, Side::kAttackers, 0, world_.ball.p_F,
+                              std::string(TrialOutcomeName(outcome))});
+    return std::move(result_);
+  }
+
+  Vec2 Noisy(const Vec2& p, double sigma) {
+    if (!(sigma > 0.0)) return p;
+    const double nx = rng_.NextNormal();
+    const double ny = rng_.NextNormal();
+    return p + sigma * Vec2(nx, ny);
+  }
+
+  void DeliverMessages() {
+    for (RobotState& r : world_.robots) r.inbox.clear();
+    std::vector<MessageInFlight> waiting;
+    for (const MessageInFlight& m : world_.messages) {
+      if (m.deliver_at_s > world_.time_s + 1e-9) {
+        waiting.push_back(m);
+        continue;
+      }
+      for (RobotState& r : world_.robots) {
+        if (r.side != m.side || r.index == m.message.sender) continue;
+        r.inbox.push_back(m.message);
+      }
+    }
+    world_.messages = std::move(waiting);
+  }
+
+  Perception Perceive(int robot) {
+    const RobotState& me = world_.robots[static_cast<std::size_t>(robot)];
+    Perception p;
+    p.time_s = world_.time_s;
+    p.self = me.index;
+    p.pose = me.pose;
+    p.holding_ball = world_.ball.holder == robot;
+    p.busy = me.activity != Activity::kFree;
+    p.p_F_ball = Noisy(world_.ball.p_F, s_.sim->ball_noise_sigma_m);
+    world_.robots[static_cast<std::size_t>(robot)].seen_ball = p.p_F_ball;
+    for (std::size_t i = 0; i < world_.robots.size(); ++i) {
+      const RobotState& r = world_.robots[i];
+      Pose2 seen = r.pose;
+      if (static_cast<int>(i) != robot) seen.p_F = Noisy(r.pose.p_F, s_.sim->robot_noise_sigma_m);
+      (r.side == me.side ? p.teammates : p.opponents).push_back(seen);
+    }
+    p.attack_sign = me.side == Side::kAttackers ? s_.attack_sign : -s_.attack_sign;
+    p.inbox = me.inbox;
+    return p;
+  }
+
+  std::vector<RobotCommand> Decide() {
+    std::vector<RobotCommand> commands;
+    for (std::size_t i = 0; i < world_.robots.size(); ++i) {
+      RobotState& r = world_.robots[i];
+      RobotCommand c =
+          policies_[r.side == Side::kAttackers ? 0 : 1]->Decide(Perceive(static_cast<int>(i)));
+      if (c.message) Send(static_cast<int>(i), *c.message);
+      if (r.side == Side::kAttackers && c.backing_up && !r.backing_up) {
+        ++result_.counters.attacker_backups[static_cast<std::size_t>(r.index)];
+        Event(EventKind::kBackUp, static_cast<int>(i));
+      }
+      r.backing_up = c.backing_up;
+      commands.push_back(c);
+    }
+    return commands;
+  }
+
+  void Send(int robot, TeamMessage message) {
+    const RobotState& r = world_.robots[static_cast<std::size_t>(robot)];
+    message.sender = r.index;
+    message.sent_time_s = world_.time_s;
+    if (s_.sim->message_loss_rate > 0.0 && rng_.NextUniform() < s_.sim->message_loss_rate) {
+      Event(EventKind::kMessageLost, robot, std::to_string(message.kind));
+      return;
+    }
+    world_.messages.push_back({world_.time_s + s_.sim->message_latency_s, r.side, message});
+    Event(EventKind::kMessage, robot, std::to_string(message.kind));
+  }
+
+  bool InGrabReach(const RobotState& r) const {
+    const double distance = (world_.ball.p_F - r.pose.p_F).norm();
+    return distance <= contact_m_ + s_.robot->grab_reach_m &&
+           std::abs(BearingTo(r.pose, world_.ball.p_F)) <= s_.robot->grab_cone_rad;
+  }
+
+  void Act(const std::vector<RobotCommand>& commands);
+  void FinishActivity(int robot);
+  void Launch(int robot);
+  Pose2 Propose(int robot, const RobotCommand& command);
+  std::optional<TrialOutcome> UpdateTouches();
+
+  const MatchSetup& s_;
+  RandomStream rng_;
+  std::uint64_t trial_key_;
+  Referee referee_;
+  TeamPolicy* policies_[2];
+  double contact_m_;  // robot centre to ball centre when they touch
+  MoveRules rules_;
+  MatchWorld world_;
+  MatchTrialResult result_;
+  double next_trace_s_ = 0.0;
+  int last_toucher_ = -1;  // the robot that began the last counted touch
+};
+
+void Match::Act(const std::vector<RobotCommand>& commands) {
+  std::vector<Pose2> proposed;
+  for (std::size_t i = 0; i < world_.robots.size(); ++i) {
+    RobotState& r = world_.robots[i];
+    if (r.activity == Activity::kKicking && r.kick_index != kNoKick &&
+        world_.time_s >= r.launch_at_s - 1e-9) {
+      if (world_.ball.holder == static_cast<int>(i)) Launch(static_cast<int>(i));
+      r.kick_index = kNoKick;  // the ball has left (or was taken away): the motion runs out
+    }
+    if (r.activity != Activity::kFree && world_.time_s >= r.busy_until_s - 1e-9) {
+      FinishActivity(static_cast<int>(i));
+    }
+    proposed.push_back(r.activity == Activity::kFree ? Propose(static_cast<int>(i), commands[i])
+                                                     : r.pose);
+  }
+  ResolveMoves(world_, rules_, proposed);
+}
+
+Pose2 Match::Propose(int robot, const RobotCommand& command) {
+  RobotState& r = world_.robots[static_cast<std::size_t>(robot)];
+  const RobotParams& rp = *s_.robot;
+  const double dt = s_.sim->control_step_s;
+  const bool holding = world_.ball.holder == robot;
+  const WalkLimits limits = holding ? WalkLimits{rp.dribble_speed_mps, rp.dribble_turn_speed_radps}
+                                    : WalkLimits{rp.walk_speed_mps, rp.turn_speed_radps};
+  switch (command.kind) {
+    case CommandKind::kStand:
+      return r.pose;
+    case CommandKind::kWalk:
+      return ApplyWalk(r.pose, command.v_R_mps, command.turn_radps, limits, dt);
+    case CommandKind::kKick:
+      if (holding && command.kick_index >= 0 &&
+          command.kick_index < static_cast<int>(s_.kicks->kicks.size())) {
+        r.activity = Activity::kKicking;
+        r.kick_index = command.kick_index;
+        r.launch_at_s = world_.time_s + rp.kick_launch_s;
+        r.busy_until_s = world_.time_s + rp.kick_time_s;
+      }
+      return r.pose;
+    case CommandKind::kGetBall: {
+      if (holding) return r.pose;
+      if (InGrabReach(r)) {
+        r.activity = Activity::kGrabbing;
+        r.busy_until_s = world_.time_s + rp.grab_time_s;
+        return r.pose;
+      }
+      // The robot walks to where it sees the ball; whether it can grab is physics (the truth).
+      const Vec2 to_ball = r.seen_ball - r.pose.p_F;
+      const double distance = to_ball.norm();
+      const double stop_m = contact_m_ + 0.5 * rp.grab_reach_m;
+      const Vec2 target =
+          distance > stop_m ? Vec2(r.seen_ball - stop_m * to_ball / distance) : r.pose.p_F;
+      const RobotCommand walk =
+          WalkTowards(r.pose, target, HeadingTowards(r.pose.p_F, r.seen_ball), dt);
+      return ApplyWalk(r.pose, walk.v_R_mps, walk.turn_radps, limits, dt);
+    }
+  }
+  return r.pose;
+}
+
+void Match::FinishActivity(int robot) {
+  RobotState& r = world_.robots[static_cast<std::size_t>(robot)];
+  const Activity done = r.activity;
+  r.activity = Activity::kFree;
+  if (done == Activity::kKicking) return;
+  // A grab: the ball must still lie within reach (it may have rolled on or been taken away).
+  if (world_.ball.holder == robot || !InGrabReach(r)) return;
+  if (rng_.NextUniform() < s_.robot->grab_failure_rate) {
+    ++result_.counters.grabs_failed;
+    Event(EventKind::kGrabFailed, robot);
+    return;
+  }
+  const int previous = world_.ball.holder;
+  // Taking a held ball is a fight between two robots (sec. 5.3.1): it succeeds only so often.
+  if (previous >= 0 && rng_.NextUniform() >= s_.robot->steal_success_rate) {
+    Event(EventKind::kGrabFailed, robot, "steal");
+    return;
+  }
+  world_.ball.holder = robot;
+  world_.ball.roll.reset();
+  Event(previous >= 0 ? EventKind::kSteal : EventKind::kGrab, robot);
+}
+
+void Match::Launch(int robot) {
+  RobotState& r = world_.robots[static_cast<std::size_t>(robot)];
+  const KickSpec& kick = s_.kicks->kicks[static_cast<std::size_t>(r.kick_index)];
+  std::vector<Obstacle> others;
+  for (std::size_t i = 0; i < world_.robots.size(); ++i) {
+    if (static_cast<int>(i) != robot) {
+      others.push_back({world_.robots[i].pose.p_F, s_.robot->body_radius_m});
+    }
+  }
+  const std::uint64_t stream =
+      StreamKey(trial_key_, static_cast<std::uint64_t>(world_.kicks_made++), kMatchKickDomain);
+  RandomStream draw(stream);
+  ConcreteAction action;
+  action.kick_index = r.kick_index;
+  action.launch_speed_mps =
+      std::max(0.0, kick.speed_mps + kick.sigma_speed_mps * draw.NextNormal());
+  action.launch_direction_rad = kick.direction_rad + kick.sigma_direction_rad * draw.NextNormal();
+  action.stream = draw.NextBits();
+  const Outcome outcome = s_.executor->Execute(others, DrawnState{r.pose, world_.ball.p_F}, action);
+  result_.counters.kicks_missed += outcome.status == OutcomeStatus::kMissed;
+  result_.counters.kicks_not_settled += outcome.status == OutcomeStatus::kNotSettled;
+  world_.ball.holder = -1;
+  world_.ball.roll = RollFromOutcome(world_.ball.p_F, outcome, s_.kicks->rolling_deceleration_mps2);
+  world_.ball.leaving_kicker = robot;
+  last_toucher_ = -1;  // a kick ends a possession: the next touch counts, whoever makes it
+  auto& kicks = r.side == Side::kAttackers ? result_.counters.attacker_kicks
+                                           : result_.counters.opponent_kicks;
+  ++kicks[static_cast<std::size_t>(r.index)];
+  Event(EventKind::kKick, robot, kick.name);
+}
+
+std::optional<TrialOutcome> Match::UpdateTouches() {
+  std::optional<TrialOutcome> end;
+  for (std::size_t i = 0; i < world_.robots.size(); ++i) {
+    RobotState& r = world_.robots[i];
+    const int robot = static_cast<int>(i);
+    const bool touching =
+        world_.ball.holder == robot ||
+        (robot != world_.ball.leaving_kicker &&
+         (world_.ball.p_F - r.pose.p_F).norm() <= contact_m_ + s_.sim->touch_tolerance_m);
+    // A touch is a contact that begins while another robot (or none) touched the ball last, so
+    // a robot jostling a ball it already has counts once (the paper's possession: how often an
+    // opponent "touched or kicked the ball").
+    if (touching && !r.touching && last_toucher_ != robot) {
+      last_toucher_ = robot;
+      Event(EventKind::kTouch, robot);
+      if (r.side == Side::kOpponents) {
+        ++result_.counters.opponent_touches[static_cast<std::size_t>(r.index)];
+        if (s_.config->opponents[static_cast<std::size_t>(r.index)].role == OpponentRole::kGoalie) {
+          end = TrialOutcome::kBlock;
+        }
+      }
+    }
+    r.touching = touching;
+  }
+  return end;
+}
+
+}  // namespace
+
+MatchTrialResult RunTrial(const MatchSetup& setup, const Scenario& scenario, TeamPolicy& attackers,
+                          TeamPolicy& opponents, std::uint64_t trial_key) {
+  return Match(setup, scenario, attackers, opponents, trial_key).Run();
+}
+
+}  // namespace foresight

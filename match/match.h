@@ -1,0 +1,54 @@
+// The 2-vs-2 match simulator (Ros et al. 2009, sec. 5.2: an extended PuppySim 2): two attackers
+// and the configuration's opponents, each team played by a TeamPolicy (models/team_policy.h),
+// from a scenario until the referee ends the trial (match/referee.h).
+//
+// One control step (SimulationParams::control_step_s), in this order:
+//  1. messages whose latency has passed are delivered (each was lost with message_loss_rate);
+//  2. every robot perceives (the ball and the other robots with the optional Gaussian noise) and
+//     its team's policy decides; a busy robot's command is ignored;
+//  3. commands act: walking (slower while holding the ball), getting the ball (walk straight to
+//     where the robot sees it, grab it once it truly lies within reach in front: grab_time_s
+//     standing, then success with 1 - grab_failure_rate; grabbing a ball another robot holds
+//     steals it with steal_success_rate), kicking (a robot that holds the ball stands
+//     kick_time_s; kick_launch_s into it the ball leaves through the KickExecutor with a launch
+//     drawn from the kick model); moves follow match/robot_collisions.h (bodies never overlap,
+//     opponents never leave their regions, nobody leaves the carpet);
+//  4. the ball: held, it sits at the holder's front; rolling, it advances and stops dead at the
+//     first body it meets (match/ball_motion.h); resting, a body that walks into it pushes it
+//     out to the body's edge;
+//  5. touches: a robot touches the ball when its body comes within touch_tolerance_m of it (or it
+//     grabs it); a touch counts when another robot (or nobody since the last kick) touched the
+//     ball last; the goalie's touch ends the trial as "block";
+//  6. the referee judges the ball's move; the time limit ends the trial as "timeout".
+// Randomness comes from the trial's key only (perception noise, grabs, message loss, kicks), so a
+// trial gives the same result on any thread.
+#pragma once
+
+#include <cstdint>
+
+#include "match/kick_executor.h"
+#include "match/match_config.h"
+#include "match/trial_result.h"
+#include "models/kick_model.h"
+#include "models/team_policy.h"
+
+namespace foresight {
+
+inline constexpr std::uint64_t kMatchKickDomain = 0x6d61746368'6b69ULL;  // "matchki"
+
+// Everything a trial reads; shared by all trials (immutable).
+struct MatchSetup {
+  const FieldSpec* field = nullptr;
+  const KickModel* kicks = nullptr;
+  const RobotParams* robot = nullptr;
+  const SimulationParams* sim = nullptr;
+  const MatchConfig* config = nullptr;  // opponents' roles and the end rules
+  const KickExecutor* executor = nullptr;
+  double attack_sign = 1.0;     // +1: the attackers attack the goal at +x
+  double trace_period_s = 0.0;  // > 0: record a TraceFrame this often
+};
+
+MatchTrialResult RunTrial(const MatchSetup& setup, const Scenario& scenario, TeamPolicy& attackers,
+                          TeamPolicy& opponents, std::uint64_t trial_key);
+
+}  // namespace foresight

@@ -1,0 +1,164 @@
+#include "match/match_config.h"
+
+#include <algorithm>
+
+#include "common/checks.h"
+#include "common/error.h"
+#include "models/model_paths.h"
+
+namespace foresight {
+
+FieldBox ReadFieldBox(const JsonObject& o) {
+  o.RejectUnknownKeys({"x_min_m", "x_max_m", "y_min_m", "y_max_m"});
+  FieldBox r{o.Number("x_min_m"), o.Number("x_max_m"), o.Number("y_min_m"), o.Number("y_max_m")};
+  if (!(r.x_min_m < r.x_max_m)) o.Fail("x_max_m", "must be greater than x_min_m");
+  if (!(r.y_min_m < r.y_max_m)) o.Fail("y_max_m", "must be greater than y_min_m");
+  return r;
+}
+
+namespace {
+
+Pose2 ReadPose(const JsonObject& o) {
+  o.RejectUnknownKeys({"x_m", "y_m", "theta_deg"});
+  return Pose2{Vec2(o.Number("x_m"), o.Number("y_m")),
+               WrapAngle(o.Number("theta_deg") * kDegToRad)};
+}
+
+Vec2 ReadPoint(const JsonObject& o) {
+  o.RejectUnknownKeys({"x_m", "y_m"});
+  return Vec2(o.Number("x_m"), o.Number("y_m"));
+}
+
+Scenario LoadScenario(const std::filesystem::path& file, int opponent_count) {
+  const JsonDocument doc = JsonDocument::Load(file);
+  const JsonObject root = doc.Root();
+  root.RejectUnknownKeys({"name", "ball", "attackers", "opponents"});
+  Scenario s;
+  s.name = root.String("name");
+  s.p_F_ball = ReadPoint(root.Object("ball"));
+  for (const JsonObject& o : root.ObjectArray("attackers")) s.attackers.push_back(ReadPose(o));
+  for (const JsonObject& o : root.ObjectArray("opponents")) s.opponents.push_back(ReadPose(o));
+  if (s.attackers.size() != 2) root.Fail("attackers", "must list the two attackers A and B");
+  if (static_cast<int>(s.opponents.size()) != opponent_count) {
+    root.Fail("opponents", "must list " + std::to_string(opponent_count) +
+                               " opponents, one per opponent of the configuration");
+  }
+  return s;
+}
+
+Pose2 MirrorPose(const Pose2& pose) {
+  return Pose2{Vec2(-pose.p_F.x(), pose.p_F.y()), WrapAngle(kPi - pose.theta_rad)};
+}
+
+std::string RegionText(const FieldBox& r) {
+  return "x [" + FormatNumber(r.x_min_m) + ", " + FormatNumber(r.x_max_m) + "], y [" +
+         FormatNumber(r.y_min_m) + ", " + FormatNumber(r.y_max_m) + "]";
+}
+
+}  // namespace
+
+Vec2 FieldBox::Clamp(const Vec2& p_F) const {
+  return Vec2(std::clamp(p_F.x(), x_min_m, x_max_m), std::clamp(p_F.y(), y_min_m, y_max_m));
+}
+
+FieldBox PenaltyArea(const FieldSpec& field, const SimulationParams& sim, double sign) {
+  const FieldBox area{field.HalfLength() - sim.penalty_area_depth_m, field.HalfLength(),
+                      -sim.penalty_area_half_width_m, sim.penalty_area_half_width_m};
+  return sign > 0.0 ? area : area.MirroredX();
+}
+
+void MatchConfig::Validate(const FieldSpec& field, const SimulationParams& sim,
+                           const RobotParams& robot) const {
+  const FieldBox area = PenaltyArea(field, sim, 1.0);
+  const double r = robot.body_radius_m;
+  RequireInRange("time_limit_s", time_limit_s, 1.0, 3600.0);
+  RequireInRange("clear_free_distance_m", clear_free_distance_m, 0.0, 5.0);
+  RequireInRange("clear_free_cone_deg", clear_free_cone_rad * kRadToDeg, 0.0, 90.0);
+  RequireInRange("default_trials", default_trials, 1, 1000000);
+  if (opponents.empty()) throw InputError("opponents: must list at least one opponent");
+  for (std::size_t i = 0; i < opponents.size(); ++i) {
+    const OpponentSpec& o = opponents[i];
+    const FieldBox& g = o.region;
+    const std::string at = "opponents[" + std::to_string(i) + "].region";
+    if (g.x_min_m < -field.HalfLength() || g.x_max_m > field.HalfLength() ||
+        g.y_min_m < -field.HalfWidth() || g.y_max_m > field.HalfWidth()) {
+      throw InputError(at + ": must lie on the field, got " + RegionText(g));
+    }
+    if (o.role == OpponentRole::kGoalie &&
+        !(area.Contains(Vec2(g.x_min_m, g.y_min_m)) && area.Contains(Vec2(g.x_max_m, g.y_max_m)))) {
+      throw InputError(at + ": a goalie stays in the penalty area " + RegionText(area) + ", got " +
+                       RegionText(g));
+    }
+    const bool body_may_enter = g.x_max_m + r > area.x_min_m && g.y_max_m + r > area.y_min_m &&
+                                g.y_min_m - r < area.y_max_m;
+    if (o.role == OpponentRole::kDefender && body_may_enter) {
+      throw InputError(at + ": a defender's body (radius " + FormatNumber(r) +
+                       " m) must stay out of the penalty area " + RegionText(area) + ", got " +
+                       RegionText(g));
+    }
+  }
+  for (std::size_t s = 0; s < scenarios.size(); ++s) {
+    for (std::size_t i = 0; i < opponents.size(); ++i) {
+      if (!opponents[i].region.Contains(scenarios[s].opponents[i].p_F)) {
+        throw InputError("scenarios[" + std::to_string(s) + "] (" + scenarios[s].name +
+                         "): opponent " + opponents[i].name + " starts outside its region " +
+                         RegionText(opponents[i].region));
+      }
+    }
+  }
+}
+
+MatchConfig MatchConfig::Mirrored() const {
+  MatchConfig m = *this;
+  for (OpponentSpec& o : m.opponents) o.region = o.region.MirroredX();
+  for (Scenario& s : m.scenarios) {
+    s.p_F_ball.x() = -s.p_F_ball.x();
+    for (Pose2& p : s.attackers) p = MirrorPose(p);
+    for (Pose2& p : s.opponents) p = MirrorPose(p);
+  }
+  return m;
+}
+
+MatchConfig LoadMatchConfig(const std::string& reference, const std::filesystem::path& models_dir,
+                            const FieldSpec& field, const SimulationParams& sim,
+                            const RobotParams& robot) {
+  MatchConfig c;
+  c.file = ResolveModelFile(reference, DataFolder::kMatch, ".", models_dir);
+  const JsonDocument doc = JsonDocument::Load(c.file);
+  const JsonObject root = doc.Root();
+  root.RejectUnknownKeys({"name", "sources", "opponents", "clear_kick", "clear_free_distance_m",
+                          "clear_free_cone_deg", "penalty_area_ends_trial", "time_limit_s",
+                          "default_trials", "scenarios"});
+  RequireSources(root, {"opponents", "clear_free_distance_m", "clear_free_cone_deg", "time_limit_s",
+                        "default_trials", "scenarios"});
+  c.name = root.String("name");
+  c.clear_kick = root.String("clear_kick");
+  c.clear_free_distance_m = root.Number("clear_free_distance_m");
+  c.clear_free_cone_rad = root.Number("clear_free_cone_deg") * kDegToRad;
+  const std::string ends = root.String("penalty_area_ends_trial");
+  if (ends != "yes" && ends != "no") root.Fail("penalty_area_ends_trial", "must be yes or no");
+  c.penalty_area_ends_trial = ends == "yes";
+  c.time_limit_s = root.Number("time_limit_s");
+  c.default_trials = root.Integer("default_trials");
+  for (const JsonObject& o : root.ObjectArray("opponents")) {
+    o.RejectUnknownKeys({"name", "role", "region"});
+    OpponentSpec spec;
+    spec.name = o.String("name");
+    const std::string role = o.String("role");
+    if (role != "goalie" && role != "defender") o.Fail("role", "must be goalie or defender");
+    spec.role = role == "goalie" ? OpponentRole::kGoalie : OpponentRole::kDefender;
+    spec.region = ReadFieldBox(o.Object("region"));
+    c.opponents.push_back(spec);
+  }
+  const auto names = root.StringArray("scenarios");
+  if (names.empty()) root.Fail("scenarios", "must list at least one scenario");
+  for (const std::string& name : names) {
+    const std::filesystem::path file =
+        ResolveModelFile(name, DataFolder::kMatchScenarios, c.file.parent_path(), models_dir);
+    c.scenarios.push_back(LoadScenario(file, static_cast<int>(c.opponents.size())));
+  }
+  WithFile(c.file.string(), [&] { c.Validate(field, sim, robot); });
+  return c;
+}
+
+}  // namespace foresight

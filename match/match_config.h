@@ -1,0 +1,90 @@
+// The opponents' configurations and the scenarios of the passing experiment (Ros et al. 2009,
+// sec. 5.1.2-5.1.4, Figs. 11 and 12), read from models/match/<config>.json and
+// models/match/scenarios/*.json.
+//
+// Everything is written for attackers that attack the goal at +x (the yellow one; cyan is at
+// -x) and opponents that defend it; Mirrored() gives the same game towards the other goal.
+//
+// A configuration: the opponents (a role, "goalie" or "defender", and a home region: a box the
+// robot's centre never leaves), the end rules (a goalie's touch ends the trial as "block"; in 2D
+// the ball entering the penalty area ends it as "to goal"; the time limit), the default number
+// of trials and the scenario files. A scenario: the ball, the two attackers' poses (A, B) and
+// every opponent's pose, which must lie in its home region.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "common/geometry.h"
+#include "match/match_params.h"
+#include "models/field_spec.h"
+
+namespace foresight {
+
+// Centre positions x in [x_min, x_max], y in [y_min, y_max] (F).
+struct FieldBox {
+  double x_min_m = 0.0, x_max_m = 0.0, y_min_m = 0.0, y_max_m = 0.0;
+  bool Contains(const Vec2& p_F) const {
+    return p_F.x() >= x_min_m && p_F.x() <= x_max_m && p_F.y() >= y_min_m && p_F.y() <= y_max_m;
+  }
+  Vec2 Clamp(const Vec2& p_F) const;
+  // The box mirrored in the y axis (x negated).
+  FieldBox MirroredX() const { return {-x_max_m, -x_min_m, y_min_m, y_max_m}; }
+};
+
+// Reads {"x_min_m", "x_max_m", "y_min_m", "y_max_m"} (min below max, else an InputError naming
+// the field).
+class JsonObject;
+FieldBox ReadFieldBox(const JsonObject& o);
+
+enum class OpponentRole : std::uint8_t { kGoalie, kDefender };
+
+struct OpponentSpec {
+  std::string name;  // "D", "G", "MD"
+  OpponentRole role = OpponentRole::kDefender;
+  FieldBox region;
+};
+
+struct Scenario {
+  std::string name;
+  Vec2 p_F_ball{0.0, 0.0};
+  std::vector<Pose2> attackers;  // A, B
+  std::vector<Pose2> opponents;  // in the configuration's order
+};
+
+struct MatchConfig {
+  std::filesystem::path file;
+  std::string name;  // "dg", "2d"
+  std::vector<OpponentSpec> opponents;
+  std::string clear_kick;  // the kick the opponents clear the ball with
+  // A holder turns with the ball while a body stands within clear_free_distance_m and
+  // clear_free_cone_rad of its kick's line (at most until the ball-holding rule makes it kick).
+  double clear_free_distance_m = 0.0;
+  double clear_free_cone_rad = 0.0;
+  bool penalty_area_ends_trial = false;
+  double time_limit_s = 0.0;
+  int default_trials = 0;
+  std::vector<Scenario> scenarios;  // scenario 1..n in order
+
+  // Checks the regions against the penalty area (defenders keep their whole body out of it,
+  // a goalie's centre stays in it) and every scenario's opponents against their regions.
+  void Validate(const FieldSpec& field, const SimulationParams& sim,
+                const RobotParams& robot) const;
+  // The same configuration for attackers attacking the goal at -x: every x negated and every
+  // heading mirrored, y kept (a mirror in the y axis).
+  MatchConfig Mirrored() const;
+};
+
+// `reference` is a bare name in MODELS/match/ ("dg") or a path ending in ".json"; scenario
+// references inside are resolved from the config file's folder.
+MatchConfig LoadMatchConfig(const std::string& reference, const std::filesystem::path& models_dir,
+                            const FieldSpec& field, const SimulationParams& sim,
+                            const RobotParams& robot);
+
+// The penalty area of the goal at x = sign * half length: the box x in [half - depth, half],
+// |y| <= half width (mirrored for sign -1).
+FieldBox PenaltyArea(const FieldSpec& field, const SimulationParams& sim, double sign);
+
+}  // namespace foresight

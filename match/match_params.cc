@@ -1,0 +1,112 @@
+#include "match/match_params.h"
+
+#include <string>
+
+#include "common/checks.h"
+#include "common/error.h"
+#include "common/geometry.h"
+#include "models/model_paths.h"
+
+namespace foresight {
+
+void RobotParams::Validate() const {
+  RequireInRange("body_radius_m", body_radius_m, 0.01, 1.0);
+  RequireInRange("walk_speed_mps", walk_speed_mps, 0.01, 5.0);
+  RequireInRange("turn_speed_deg_per_s", turn_speed_radps * kRadToDeg, 1.0, 1000.0);
+  RequireInRange("dribble_speed_mps", dribble_speed_mps, 0.01, walk_speed_mps);
+  RequireInRange("dribble_turn_speed_deg_per_s", dribble_turn_speed_radps * kRadToDeg, 1.0, 1000.0);
+  RequireInRange("grab_reach_m", grab_reach_m, 0.0, 0.5);
+  RequireInRange("grab_cone_deg", grab_cone_rad * kRadToDeg, 1.0, 180.0);
+  RequireInRange("grab_time_s", grab_time_s, 0.0, 10.0);
+  RequireInRange("grab_failure_rate", grab_failure_rate, 0.0, 0.99);
+  RequireInRange("kick_time_s", kick_time_s, 0.0, 10.0);
+  RequireInRange("kick_launch_s", kick_launch_s, 0.0, kick_time_s);
+  RequireInRange("steal_success_rate", steal_success_rate, 0.0, 1.0);
+}
+
+void SimulationParams::Validate() const {
+  RequireInRange("control_step_s", control_step_s, 1e-3, 0.2);
+  RequireInRange("ball_noise_sigma_m", ball_noise_sigma_m, 0.0, 1.0);
+  RequireInRange("robot_noise_sigma_m", robot_noise_sigma_m, 0.0, 1.0);
+  RequireInRange("message_latency_s", message_latency_s, 0.0, 10.0);
+  RequireInRange("message_loss_rate", message_loss_rate, 0.0, 1.0);
+  RequireInRange("close_margin_m", close_margin_m, 0.0, 2.0);
+  RequireInRange("penalty_area_depth_m", penalty_area_depth_m, 0.05, 3.0);
+  RequireInRange("penalty_area_half_width_m", penalty_area_half_width_m, 0.05, 3.0);
+  RequireInRange("touch_tolerance_m", touch_tolerance_m, 0.0, 0.1);
+  RequireInRange("ball_holding_limit_s", ball_holding_limit_s, 0.1, 60.0);
+}
+
+void RequireSources(const JsonObject& root, std::initializer_list<std::string_view> figures) {
+  const JsonObject sources = root.Object("sources");
+  sources.RejectUnknownKeys(figures);
+  for (std::string_view figure : figures) {
+    if (!sources.Has(figure)) sources.Fail(figure, "missing: every figure needs a source");
+    if (sources.String(figure).empty()) sources.Fail(figure, "must not be empty");
+  }
+}
+
+RobotParams LoadRobotParams(const std::string& reference, const std::filesystem::path& models_dir) {
+  const std::filesystem::path file =
+      ResolveModelFile(reference, DataFolder::kMatch, ".", models_dir);
+  const JsonDocument doc = JsonDocument::Load(file);
+  const JsonObject root = doc.Root();
+  root.RejectUnknownKeys(
+      {"name", "sources", "body_radius_m", "walk_speed_mps", "turn_speed_deg_per_s",
+       "dribble_speed_mps", "dribble_turn_speed_deg_per_s", "grab_reach_m", "grab_cone_deg",
+       "grab_time_s", "grab_failure_rate", "kick_time_s", "kick_launch_s", "steal_success_rate"});
+  RequireSources(root,
+                 {"body_radius_m", "walk_speed_mps", "turn_speed_deg_per_s", "dribble_speed_mps",
+                  "dribble_turn_speed_deg_per_s", "grab_reach_m", "grab_cone_deg", "grab_time_s",
+                  "grab_failure_rate", "kick_time_s", "kick_launch_s", "steal_success_rate"});
+  RobotParams p;
+  p.name = root.String("name");
+  p.body_radius_m = root.Number("body_radius_m");
+  p.walk_speed_mps = root.Number("walk_speed_mps");
+  p.turn_speed_radps = root.Number("turn_speed_deg_per_s") * kDegToRad;
+  p.dribble_speed_mps = root.Number("dribble_speed_mps");
+  p.dribble_turn_speed_radps = root.Number("dribble_turn_speed_deg_per_s") * kDegToRad;
+  p.grab_reach_m = root.Number("grab_reach_m");
+  p.grab_cone_rad = root.Number("grab_cone_deg") * kDegToRad;
+  p.grab_time_s = root.Number("grab_time_s");
+  p.grab_failure_rate = root.Number("grab_failure_rate");
+  p.kick_time_s = root.Number("kick_time_s");
+  p.kick_launch_s = root.Number("kick_launch_s");
+  p.steal_success_rate = root.Number("steal_success_rate");
+  WithFile(file.string(), [&] { p.Validate(); });
+  return p;
+}
+
+SimulationParams LoadSimulationParams(const std::string& reference,
+                                      const std::filesystem::path& models_dir) {
+  SimulationParams p;
+  p.file = ResolveModelFile(reference, DataFolder::kMatch, ".", models_dir);
+  const JsonDocument doc = JsonDocument::Load(p.file);
+  const JsonObject root = doc.Root();
+  root.RejectUnknownKeys({"field", "kicks", "robot", "sources", "control_step_s",
+                          "ball_noise_sigma_m", "robot_noise_sigma_m", "message_latency_s",
+                          "message_loss_rate", "close_margin_m", "penalty_area_depth_m",
+                          "penalty_area_half_width_m", "touch_tolerance_m",
+                          "ball_holding_limit_s"});
+  RequireSources(
+      root, {"control_step_s", "ball_noise_sigma_m", "robot_noise_sigma_m", "message_latency_s",
+             "message_loss_rate", "close_margin_m", "penalty_area_depth_m",
+             "penalty_area_half_width_m", "touch_tolerance_m", "ball_holding_limit_s"});
+  p.field = root.String("field");
+  p.kicks = root.String("kicks");
+  p.robot = root.String("robot");
+  p.control_step_s = root.Number("control_step_s");
+  p.ball_noise_sigma_m = root.Number("ball_noise_sigma_m");
+  p.robot_noise_sigma_m = root.Number("robot_noise_sigma_m");
+  p.message_latency_s = root.Number("message_latency_s");
+  p.message_loss_rate = root.Number("message_loss_rate");
+  p.close_margin_m = root.Number("close_margin_m");
+  p.penalty_area_depth_m = root.Number("penalty_area_depth_m");
+  p.penalty_area_half_width_m = root.Number("penalty_area_half_width_m");
+  p.touch_tolerance_m = root.Number("touch_tolerance_m");
+  p.ball_holding_limit_s = root.Number("ball_holding_limit_s");
+  WithFile(p.file.string(), [&] { p.Validate(); });
+  return p;
+}
+
+}  // namespace foresight

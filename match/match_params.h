@@ -1,0 +1,75 @@
+// The figures of the 2-vs-2 match simulator (Ros et al. 2009, sec. 5.2: an extended PuppySim 2),
+// read from models/match/*.json. Every figure of those files has an entry in the file's
+// "sources" object: where it comes from, or "assumption: why" (RequireSources checks this).
+//
+// robot (models/match/aibo_ers7.json): an AIBO ERS-7 as the simulator moves it, a disc of
+//   body_radius_m that walks at up to walk_speed_mps (any direction in the robot frame) while
+//   turning at up to turn_speed_radps; holding the ball it walks at dribble_speed_mps and turns
+//   at dribble_turn_speed_radps. It grabs a ball whose centre lies within grab_reach_m of its
+//   front (the body's edge) and within grab_cone_rad of straight ahead; a grab takes
+//   grab_time_s and fails with grab_failure_rate; grabbing a ball another robot holds (a steal)
+//   then also needs steal_success_rate. A kick takes kick_time_s standing still; the ball leaves
+//   kick_launch_s after its start.
+// simulation (models/match/simulation.json): the field, kick model and robot by name; the
+//   control step; perception noise (Gaussian sigmas on the perceived ball and other robots,
+//   0 = the paper's noiseless simulator); message latency and loss; the referee's "close"
+//   margin (sec. 5.1.4); the penalty area (the field file has none); how near a ball must be to
+//   a body to count as touching it; the ball-holding rule both teams' policies obey.
+#pragma once
+
+#include <filesystem>
+#include <initializer_list>
+#include <string>
+#include <string_view>
+
+#include "common/json_reader.h"
+
+namespace foresight {
+
+struct RobotParams {
+  std::string name;
+  double body_radius_m = 0.0;
+  double walk_speed_mps = 0.0;
+  double turn_speed_radps = 0.0;
+  double dribble_speed_mps = 0.0;
+  double dribble_turn_speed_radps = 0.0;
+  double grab_reach_m = 0.0;
+  double grab_cone_rad = 0.0;
+  double grab_time_s = 0.0;
+  double grab_failure_rate = 0.0;
+  double kick_time_s = 0.0;
+  double kick_launch_s = 0.0;
+  double steal_success_rate = 0.0;
+
+  void Validate() const;
+};
+
+struct SimulationParams {
+  std::filesystem::path file;
+  std::string field;  // names in models/fields, models/kicks, models/match
+  std::string kicks;
+  std::string robot;
+  double control_step_s = 0.0;
+  double ball_noise_sigma_m = 0.0;
+  double robot_noise_sigma_m = 0.0;
+  double message_latency_s = 0.0;
+  double message_loss_rate = 0.0;
+  double close_margin_m = 0.0;
+  double penalty_area_depth_m = 0.0;
+  double penalty_area_half_width_m = 0.0;
+  double touch_tolerance_m = 0.0;
+  double ball_holding_limit_s = 0.0;  // a rule both teams obey: release the ball within it
+
+  void Validate() const;
+};
+
+// Throws unless `root` has a "sources" object with a non-empty string for every key in
+// `figures` (and nothing else): "FILE: sources.walk_speed_mps: ...".
+void RequireSources(const JsonObject& root, std::initializer_list<std::string_view> figures);
+
+// `reference` is a bare name in MODELS/match/ or a path ending in ".json".
+RobotParams LoadRobotParams(const std::string& reference, const std::filesystem::path& models_dir);
+SimulationParams LoadSimulationParams(const std::string& reference,
+                                      const std::filesystem::path& models_dir);
+
+}  // namespace foresight

@@ -1,0 +1,95 @@
+// The reactive baseline team, after CMDash'06 as Ros et al. 2009 describe it (sec. 5 and 5.3.1):
+// "the robot in possession of the ball notifies the rest of the team, and then the other robots
+// move towards different directions to avoid collisions"; "the robots always try to go after
+// the ball as fast as possible and move alone towards the attacking goal"; the holder dodges an
+// opponent within about 0.4 m of the ball by "moving in diagonal (either to the right or to the
+// left) while grabbing the ball"; passes happen only by chance.
+//
+// Each robot, from its own perception and its teammate's messages only:
+//  - role: it chases the ball when it holds it, when its teammate's last report (distance to the
+//    ball, chasing or holding) is missing or older than report_stale_s, or when it is nearer to
+//    the ball than the teammate by more than claim_margin_m (within the margin it keeps its last
+//    role; at the start, when neither has heard of the other, both chase). A teammate that
+//    reports holding the ball is never challenged. It reports its role and distance when the
+//    role changes and every message_period_s.
+//  - chaser without the ball: get the ball.
+//  - holder: turns towards the attacked goal's centre and walks with the ball; with an opponent
+//    within dodge_radius_m of the ball it walks dodge_angle_deg off that line, away from the
+//    opponent (as seen along its own heading, so it never turns the ball through the opponent).
+//    It kicks the shoot kick when the goal line is within the kick's mean roll
+//    distance (v^2 / 2a of the kick model) and it faces the goal within aim_tolerance_deg, and
+//    the same kick forward when the ball would otherwise leave after the simulation's
+//    ball-holding limit (held for the limit minus the kick's kick_launch_s).
+//  - supporter: backs up (walks away from the ball, the "backing up" of Table 2) once it is
+//    nearer than back_off_distance_m to the ball, until it is back_off_release_m further; otherwise
+//    it walks to the support point support_behind_m behind the ball and support_side_m to its own
+//    side, facing the ball, clamped to its role's region (role_regions, one per robot: the roles
+//    keep each supporter in its region; the chaser goes wherever the ball is).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "match/match_config.h"
+#include "match/match_params.h"
+#include "models/field_spec.h"
+#include "models/team_policy.h"
+
+namespace foresight {
+
+struct ReactiveParams {
+  std::filesystem::path file;
+  double dodge_radius_m = 0.0;
+  double dodge_angle_rad = 0.0;
+  std::string shoot_kick;
+  double aim_tolerance_rad = 0.0;
+  double back_off_distance_m = 0.0;
+  double back_off_release_m = 0.0;
+  double support_behind_m = 0.0;
+  double support_side_m = 0.0;
+  double claim_margin_m = 0.0;
+  std::vector<FieldBox> role_regions;  // per robot, for attacking +x (x mirrored for -x)
+  double message_period_s = 0.0;
+  double report_stale_s = 0.0;
+
+  void Validate() const;
+};
+
+// `reference`: a bare name in MODELS/match/ ("reactive") or a path ending in ".json".
+ReactiveParams LoadReactiveParams(const std::string& reference,
+                                  const std::filesystem::path& models_dir);
+
+class ReactiveTeam final : public TeamPolicy {
+ public:
+  ReactiveTeam(const ReactiveParams& params, const FieldSpec& field, const KickModel& kicks,
+               const RobotParams& robot, const SimulationParams& sim, int robots);
+  RobotCommand Decide(const Perception& perception) override;
+
+ private:
+  struct Memory {
+    bool chasing = false;
+    bool heard = false;
+    int mate_kind = 0;
+    double mate_distance_m = 0.0;
+    double mate_time_s = 0.0;
+    double last_report_s = -1e9;
+    bool was_holding = false;
+    bool backing_up = false;
+    double holding_since_s = 0.0;
+  };
+  bool ChooseChasing(Memory& m, const Perception& p, double distance_m) const;
+  RobotCommand Hold(Memory& m, const Perception& p) const;
+  RobotCommand Support(Memory& m, const Perception& p, double distance_m) const;
+
+  ReactiveParams params_;
+  const FieldSpec* field_;
+  int shoot_kick_;
+  double shoot_range_m_;
+  double release_after_s_;  // kick when the ball has been held this long
+  double dribble_speed_mps_;
+  double dt_s_;
+  std::vector<Memory> memory_;
+};
+
+}  // namespace foresight

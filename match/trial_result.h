@@ -1,0 +1,80 @@
+// What one trial of the match simulator produced: the referee's outcome class (Ros et al. 2009,
+// sec. 5.1.4 and 5.2.2), the per-trial counters the paper's tables report, the event log and,
+// on request, the trace of every robot and the ball.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/geometry.h"
+
+namespace foresight {
+
+// goal: the ball enters the attacked goal. close: it goes out over the attacked goal line
+// within the referee's close margin of a post (SimulationParams::close_margin_m). block: the
+// goalie touches (stops, grabs or kicks) the ball. out: any other ball out of the field,
+// including into the attackers' own goal. penalty_area: (2D only) the ball enters the attacked
+// penalty area, which the paper counts as "to goal". timeout: the time limit passed.
+enum class TrialOutcome : std::uint8_t { kGoal, kClose, kBlock, kOut, kPenaltyArea, kTimeout };
+inline constexpr int kTrialOutcomeCount = 6;
+std::string_view TrialOutcomeName(TrialOutcome outcome);
+// goal, close and penalty_area: the paper's "to goal" balls.
+bool IsToGoal(TrialOutcome outcome);
+
+enum class EventKind : std::uint8_t {
+  kGrab,         // a grab succeeded: the robot holds the ball
+  kGrabFailed,   // a grab failed
+  kSteal,        // a grab took the ball from a robot that held it
+  kKick,         // the ball left a kick (detail: the kick's name)
+  kTouch,        // a robot's body began touching the ball
+  kMessage,      // a message was sent (detail: its kind)
+  kMessageLost,  // a message was lost
+  kBackUp,       // an attacker began backing up
+  kEnd,          // the trial ended (detail: the outcome)
+};
+std::string_view EventKindName(EventKind kind);
+
+enum class Side : std::uint8_t { kAttackers, kOpponents };
+std::string_view SideName(Side side);
+
+struct MatchEvent {
+  double time_s = 0.0;
+  EventKind kind = EventKind::kTouch;
+  Side side = Side::kAttackers;
+  int robot = 0;
+  Vec2 p_F_ball{0.0, 0.0};
+  std::string detail;
+};
+
+struct TrialCounters {
+  // Per opponent: touches begun (grabs included) while another robot, or nobody since the last
+  // kick, had touched the ball last: how often it got at the ball (the paper's possession).
+  std::vector<int> opponent_touches;
+  std::vector<int> opponent_kicks;    // per opponent
+  std::vector<int> attacker_backups;  // per attacker: backing-ups begun
+  std::vector<int> attacker_kicks;
+  int grabs_failed = 0;
+  // Kicks whose executor reported a status other than ok (physics: the foot missed the ball, or
+  // it had not settled at the time limit); they still count as what happened.
+  int kicks_missed = 0;
+  int kicks_not_settled = 0;
+  double time_s = 0.0;
+};
+
+// Every robot and the ball at one time (attackers first, then opponents).
+struct TraceFrame {
+  double time_s = 0.0;
+  Vec2 p_F_ball{0.0, 0.0};
+  std::vector<Pose2> robots;
+};
+
+struct MatchTrialResult {
+  TrialOutcome outcome = TrialOutcome::kTimeout;
+  TrialCounters counters;
+  std::vector<MatchEvent> events;
+  std::vector<TraceFrame> trace;  // empty unless asked for
+};
+
+}  // namespace foresight

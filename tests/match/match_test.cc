@@ -1,0 +1,184 @@
+// The simulator with scripted policies: a ball kicked into a standing opponent stops at its body
+// and counts one touch; a goalie's touch ends the trial as a block; a trial is the same for the
+// same key; opponents played by OpponentTeam never leave their home regions.
+#include "match/match.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "match/opponent_team.h"
+#include "match/reactive_team.h"
+#include "tests/support/temp_files.h"
+
+namespace foresight {
+namespace {
+
+// Attacker 0 gets the ball and kicks it with kick 0 as soon as it holds it; the rest stand.
+class GetAndKick final : public TeamPolicy {
+ public:
+  RobotCommand Decide(const Perception& p) override {
+    RobotCommand c;
+    if (p.self != 0 || p.busy || kicked_) return c;
+    if (p.holding_ball) {
+      c.kind = CommandKind::kKick;
+      c.kick_index = 0;
+      kicked_ = true;
+    } else {
+      c.kind = CommandKind::kGetBall;
+    }
+    return c;
+  }
+
+ private:
+  bool kicked_ = false;
+};
+
+class Stand final : public TeamPolicy {
+ public:
+  RobotCommand Decide(const Perception&) override { return {}; }
+};
+
+class MatchTest : public ::testing::Test {
+ protected:
+  MatchTest() {
+    const auto models = testing::ModelsDir();
+    field_ = LoadFieldSpec(models / "fields" / "four_legged.json");
+    sim_ = LoadSimulationParams("simulation", models);
+    robot_ = LoadRobotParams("aibo_ers7", models);
+    robot_.grab_failure_rate = 0.0;
+    kicks_.robot = "test";
+    kicks_.rolling_deceleration_mps2 = 0.3;
+    kicks_.kicks = {{"straight", 1.0, 0.0, 0.0, 0.0}};
+    config_.name = "test";
+    config_.time_limit_s = 10.0;
+    config_.opponents = {{"D", OpponentRole::kDefender, {-2.0, 1.9, -1.5, 1.5}}};
+    executor_ = std::make_unique<CoarseKickExecutor>(field_, kicks_.rolling_deceleration_mps2);
+    setup_.field = &field_;
+    setup_.kicks = &kicks_;
+    setup_.robot = &robot_;
+    setup_.sim = &sim_;
+    setup_.config = &config_;
+    setup_.executor = executor_.get();
+  }
+  Scenario OneOpponentAhead(double opponent_x) const {
+    return Scenario{"test",
+                    Vec2(0.0, 0.0),
+                    {Pose2{Vec2(-0.2, 0.0), 0.0}, Pose2{Vec2(-1.0, -1.0), 0.0}},
+                    {Pose2{Vec2(opponent_x, 0.0), kPi}}};
+  }
+
+  FieldSpec field_;
+  SimulationParams sim_;
+  RobotParams robot_;
+  KickModel kicks_;
+  MatchConfig config_;
+  std::unique_ptr<KickExecutor> executor_;
+  MatchSetup setup_;
+};
+
+TEST_F(MatchTest, BallKickedIntoARobotStopsAtItAndCountsOneTouch) {
+  GetAndKick attackers;
+  Stand opponents;
+  const MatchTrialResult r = RunTrial(setup_, OneOpponentAhead(1.0), attackers, opponents, 7);
+  EXPECT_EQ(r.outcome, TrialOutcome::kTimeout);
+  EXPECT_EQ(r.counters.attacker_kicks[0], 1);
+  EXPECT_EQ(r.counters.opponent_touches[0], 1);
+  EXPECT_EQ(r.counters.opponent_kicks[0], 0);
+  const MatchEvent& end = r.events.back();
+  EXPECT_EQ(end.kind, EventKind::kEnd);
+  // The 1 m/s kick would roll 1.67 m; it stops at the opponent's body instead.
+  EXPECT_NEAR(end.p_F_ball.x(), 1.0 - robot_.body_radius_m - field_.ball.radius_m, 1e-6);
+}
+
+TEST_F(MatchTest, OpenFieldKickInAMatchRollsVSquaredOverTwoA) {
+  GetAndKick attackers;
+  Stand opponents;
+  const MatchTrialResult r = RunTrial(setup_, OneOpponentAhead(-2.0), attackers, opponents, 7);
+  double kick_x = 0.0;
+  for (const MatchEvent& e : r.events) {
+    if (e.kind == EventKind::kKick) kick_x = e.p_F_ball.x();
+  }
+  EXPECT_EQ(r.counters.opponent_touches[0], 0);
+  EXPECT_NEAR(r.events.back().p_F_ball.x() - kick_x, 1.0 / (2.0 * 0.3), 1e-9);
+}
+
+TEST_F(MatchTest, GoalieTouchIsABlock) {
+  config_.opponents[0].role = OpponentRole::kGoalie;
+  GetAndKick attackers;
+  Stand opponents;
+  const MatchTrialResult r = RunTrial(setup_, OneOpponentAhead(1.0), attackers, opponents, 7);
+  EXPECT_EQ(r.outcome, TrialOutcome::kBlock);
+}
+
+TEST_F(MatchTest, SameKeySameTrialOtherKeyOtherTrial) {
+  const auto models = testing::ModelsDir();
+  const ReactiveParams reactive = LoadReactiveParams("reactive", models);
+  const KickModel aibo = LoadKickModel(models / "kicks" / "aibo_ers7.json");
+  const MatchConfig dg = LoadMatchConfig("dg", models, field_, sim_, robot_);
+  robot_.grab_failure_rate = 0.2;
+  setup_.kicks = &aibo;
+  setup_.config = &dg;
+  auto play = [&](std::uint64_t key) {
+    ReactiveTeam attackers(reactive, field_, aibo, robot_, sim_, 2);
+    OpponentTeam opponents(dg, aibo, robot_, field_.ball.radius_m, sim_);
+    return RunTrial(setup_, dg.scenarios[2], attackers, opponents, key);
+  };
+  const MatchTrialResult a = play(11), b = play(11), c = play(12);
+  ASSERT_EQ(a.events.size(), b.events.size());
+  for (std::size_t i = 0; i < a.events.size(); ++i) {
+    EXPECT_EQ(a.events[i].time_s, b.events[i].time_s);
+    EXPECT_EQ(a.events[i].p_F_ball, b.events[i].p_F_ball);
+  }
+  EXPECT_NE(a.events.size() == c.events.size() && a.counters.time_s == c.counters.time_s &&
+                a.events.back().p_F_ball == c.events.back().p_F_ball,
+            true);
+}
+
+// Robot 0 sends a message every step; every robot records what it was told and what it saw.
+class Recorder final : public TeamPolicy {
+ public:
+  RobotCommand Decide(const Perception& p) override {
+    RobotCommand c;
+    if (p.self == 0) c.message = TeamMessage{0, 0.0, 7, Vec2(0.0, 0.0), p.time_s};
+    for (const TeamMessage& m : p.inbox) delays.push_back(p.time_s - m.value);
+    if (p.self == 1) balls.push_back(p.p_F_ball);
+    return c;
+  }
+  std::vector<double> delays;
+  std::vector<Vec2> balls;
+};
+
+TEST_F(MatchTest, MessagesArriveAfterTheLatencyOrAreLost) {
+  Recorder attackers;
+  Stand opponents;
+  sim_.message_latency_s = 0.2;
+  RunTrial(setup_, OneOpponentAhead(1.0), attackers, opponents, 3);
+  ASSERT_GT(attackers.delays.size(), 200u);
+  for (double d : attackers.delays) EXPECT_NEAR(d, 0.2, 1e-9);
+  sim_.message_loss_rate = 0.25;
+  Recorder lossy;
+  const MatchTrialResult r = RunTrial(setup_, OneOpponentAhead(1.0), lossy, opponents, 3);
+  int lost = 0;
+  for (const MatchEvent& e : r.events) lost += e.kind == EventKind::kMessageLost;
+  const double sent = static_cast<double>(lost + static_cast<int>(lossy.delays.size()));
+  EXPECT_NEAR(lost / sent, 0.25, 0.05);  // 250 messages: 4 sd of a binomial share
+}
+
+TEST_F(MatchTest, PerceptionNoiseHasTheGivenSigmaAndNoneByDefault) {
+  Recorder exact;
+  Stand opponents;
+  RunTrial(setup_, OneOpponentAhead(1.0), exact, opponents, 3);
+  for (const Vec2& b : exact.balls) EXPECT_EQ(b, Vec2(0.0, 0.0));
+  sim_.ball_noise_sigma_m = 0.05;
+  Recorder noisy;
+  RunTrial(setup_, OneOpponentAhead(1.0), noisy, opponents, 3);
+  double sum_sq = 0.0;
+  for (const Vec2& b : noisy.balls) sum_sq += b.squaredNorm();
+  const double sigma = std::sqrt(sum_sq / (2.0 * static_cast<double>(noisy.balls.size())));
+  EXPECT_NEAR(sigma, 0.05, 0.005);  // 250 steps x 2 axes
+}
+
+}  // namespace
+}  // namespace foresight
