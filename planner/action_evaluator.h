@@ -50,15 +50,13 @@ class ActionEvaluator {
   long long evaluations_ = 0;
 };
 
-// Adds one simulated outcome to a hypothesis, valuing infield rest positions.
+// Adds one simulated outcome to a hypothesis: the potential of every rest position (NaoTH's tie
+// rule averages it over all samples), the value of infield ones.
 inline void AddOutcome(HypothesisAccumulator& hypothesis, const Outcome& outcome,
                        const PositionValue& value) {
-  if (outcome.category == Category::kInfield) {
-    const double potential = value.Potential(outcome.p_F_rest);
-    hypothesis.Add(outcome.category, value.ValueOfPotential(potential), potential);
-  } else {
-    hypothesis.Add(outcome.category, 0.0, 0.0);
-  }
+  const double potential = value.Potential(outcome.p_F_rest);
+  const bool infield = outcome.category == Category::kInfield;
+  hypothesis.Add(outcome.category, infield ? value.ValueOfPotential(potential) : 0.0, potential);
 }
 
 // One simulated outcome's utility (eq. 5 for one sample), valuing an infield rest position.
