@@ -15,18 +15,23 @@
 #include "models/situation.h"
 #include "planner/hypothesis.h"
 #include "planner/position_value.h"
+#include "planner/rotation_search.h"
 #include "planner/sampling.h"
 
 namespace foresight {
 
 // The situation gives the static parts (field, kicks, evaluation, obstacles); the state estimate
-// is the evaluator's own, so one planner can decide for any pose (CoarsePlanner::Decide).
+// is the evaluator's own, so one planner can decide for any pose (CoarsePlanner::Decide). An
+// evaluator is also a decision's workspace (the rotation search's storage), so one thread
+// keeps one evaluator and decides with it without touching the heap.
 class ActionEvaluator {
  public:
   explicit ActionEvaluator(const Situation& situation)
       : ActionEvaluator(situation, situation.state) {}
   ActionEvaluator(const Situation& situation, const StateEstimate& state)
-      : situation_(situation), state_(state) {}
+      : situation_(situation), state_(state) {
+    search_scratch_.Reserve(situation.evaluation.rotation_search);
+  }
   virtual ~ActionEvaluator() = default;
 
   // kick_index == kNoKick: the `none` action (the ball stays where it is).
@@ -43,11 +48,13 @@ class ActionEvaluator {
   const Situation& situation() const { return situation_; }
   const StateEstimate& state() const { return state_; }
   long long evaluations() const { return evaluations_; }
+  RotationSearchScratch& search_scratch() { return search_scratch_; }
 
  protected:
   const Situation& situation_;
   StateEstimate state_;
   long long evaluations_ = 0;
+  RotationSearchScratch search_scratch_;
 };
 
 // Adds one simulated outcome to a hypothesis: the potential of every rest position (NaoTH's tie
