@@ -47,4 +47,6 @@ int Run() {
 }  // namespace
 }  // namespace foresight
 
-int main() { return foresight::Run(); }
+int main() {
+  return foresight::Run();
+}
