@@ -28,33 +28,44 @@ void CoarseActionEvaluator::Redraw(const StateEstimate& state, int samples, std:
   sample_count_ = samples;
   padded_count_ = static_cast<std::size_t>((samples + kLanes - 1) / kLanes * kLanes);
   DrawSamples(state, seed, samples, drawn_);
-  // Padding lanes hold a ball at rest at the centre spot; their results are never summed.
+  // Padding lanes hold a ball at the centre spot; their results are never summed.
   ball_x_.assign(padded_count_, 0.0);
   ball_y_.assign(padded_count_, 0.0);
   start_category_.assign(padded_count_, static_cast<std::int64_t>(Category::kInfield));
+  theta_rad_.assign(padded_count_, 0.0);
+  z_speed_.assign(padded_count_, 0.0);
+  z_direction_.assign(padded_count_, 0.0);
   for (std::size_t i = 0; i < drawn_.size(); ++i) {
-    const Vec2& p = drawn_[i].state.p_F_ball;
-    ball_x_[i] = p.x();
-    ball_y_[i] = p.y();
-    start_category_[i] = static_cast<std::int64_t>(ClassifyPosition(world_, p));
+    const DrawnSample& d = drawn_[i];
+    ball_x_[i] = d.state.p_F_ball.x();
+    ball_y_[i] = d.state.p_F_ball.y();
+    start_category_[i] = static_cast<std::int64_t>(ClassifyPosition(world_, d.state.p_F_ball));
+    theta_rad_[i] = d.state.robot.theta_rad;
+    z_speed_[i] = d.z_speed;
+    z_direction_[i] = d.z_direction;
   }
   const std::size_t slots = static_cast<std::size_t>(kick_count()) * padded_count_;
-  direction_x_.assign(slots, 1.0);
-  direction_y_.assign(slots, 0.0);
-  speed_mps_.assign(slots, 0.0);
-  stop_m_.assign(slots, 0.0);
-  moving_.assign(slots, 0);
+  direction_x_.resize(slots);
+  direction_y_.resize(slots);
+  speed_mps_.resize(slots);
+  stop_m_.resize(slots);
+  moving_.resize(slots);
+  // The launches as MakeAction draws them and CoarseSimulator turns them into F, in lanes.
   for (int k = 0; k < kick_count(); ++k) {
-    for (std::size_t i = 0; i < drawn_.size(); ++i) {
-      const ConcreteAction a = MakeAction(situation_.kicks, k, 0.0, drawn_[i]);
-      const Vec2 u = UnitVector(drawn_[i].state.robot.theta_rad + a.launch_direction_rad);
-      const std::size_t slot = LaunchSlot(k, i);
-      direction_x_[slot] = u.x();
-      direction_y_[slot] = u.y();
-      speed_mps_[slot] = a.launch_speed_mps;
-      const bool moving = a.launch_speed_mps > 0.0;
-      stop_m_[slot] = moving ? StopDistance(a.launch_speed_mps, world_.deceleration_mps2) : 0.0;
-      moving_[slot] = moving ? -1 : 0;
+    const KickSpec& kick = situation_.kicks.kicks[static_cast<std::size_t>(k)];
+    for (std::size_t first = 0; first < padded_count_; first += kLanes) {
+      const Lanes speed = LaunchSpeed(kick, Load(&z_speed_[first]));
+      const Lanes direction = LaunchDirection(kick, Load(&z_direction_[first]));
+      Lanes sin_heading, cos_heading;
+      SinCosLanes(Load(&theta_rad_[first]) + direction, &sin_heading, &cos_heading);
+      const LaneMask moving = speed > 0.0;
+      const std::size_t slot = LaunchSlot(k, first);
+      Store(cos_heading, &direction_x_[slot]);
+      Store(sin_heading, &direction_y_[slot]);
+      Store(speed, &speed_mps_[slot]);
+      Store(Select(moving, speed * speed / (2.0 * world_.deceleration_mps2), Broadcast(0.0)),
+            &stop_m_[slot]);  // StopDistance
+      StoreMask(moving, &moving_[slot]);
     }
   }
 }
@@ -81,27 +92,37 @@ ActionEvaluation CoarseActionEvaluator::EvaluateReference(int kick_index,
   return hypothesis.Finish(situation_.evaluation);
 }
 
+RollLanesInput CoarseActionEvaluator::Launch(int kick_index, std::size_t first, double cos_rho,
+                                             double sin_rho) const {
+  const std::size_t slot = LaunchSlot(kick_index, first);
+  const Lanes ux = Load(&direction_x_[slot]), uy = Load(&direction_y_[slot]);
+  RollLanesInput in;
+  in.start_x = Load(&ball_x_[first]);
+  in.start_y = Load(&ball_y_[first]);
+  in.dir_x = cos_rho * ux - sin_rho * uy;
+  in.dir_y = sin_rho * ux + cos_rho * uy;
+  in.stop_m = Load(&stop_m_[slot]);
+  in.moving = LoadMask(&moving_[slot]);
+  in.start_category = LoadMask(&start_category_[first]);
+  return in;
+}
+
+RestLanes CoarseActionEvaluator::RestingLanes(std::size_t first) const {
+  return {Load(&ball_x_[first]), Load(&ball_y_[first]), LoadMask(&start_category_[first])};
+}
+
 ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
                                             bool stop_when_trimmed) {
   ++evaluations_;
   const EvaluationParams& params = situation_.evaluation;
-  if (kick_index == kNoKick) return EvaluateReference(kick_index, rotation_rad);
   double sin_rho, cos_rho;
   SinCos(rotation_rad, &sin_rho, &cos_rho);
   const int max_outs = MaxOuts(params, sample_count_);
   HypothesisAccumulator hypothesis;
   for (std::size_t first = 0; first < static_cast<std::size_t>(sample_count_); first += kLanes) {
-    const std::size_t slot = LaunchSlot(kick_index, first);
-    const Lanes ux = Load(&direction_x_[slot]), uy = Load(&direction_y_[slot]);
-    RollLanesInput in;
-    in.start_x = Load(&ball_x_[first]);
-    in.start_y = Load(&ball_y_[first]);
-    in.dir_x = cos_rho * ux - sin_rho * uy;
-    in.dir_y = sin_rho * ux + cos_rho * uy;
-    in.stop_m = Load(&stop_m_[slot]);
-    in.moving = LoadMask(&moving_[slot]);
-    in.start_category = LoadMask(&start_category_[first]);
-    const RestLanes rest = RollLanes(world_, in);
+    const RestLanes rest = kick_index == kNoKick
+                               ? RestingLanes(first)
+                               : RollLanes(world_, Launch(kick_index, first, cos_rho, sin_rho));
     const Lanes potential = value_.PotentialLanes(rest.x, rest.y);
     const Lanes value = value_.ValueOfPotentialLanes(potential);
     // Summed in sample order, as the scalar reference sums.

@@ -20,6 +20,7 @@
 
 #include "planner/action_evaluator.h"
 #include "planner/coarse_world.h"
+#include "planner/roll_lanes.h"
 
 namespace foresight {
 
@@ -49,6 +50,9 @@ class CoarseActionEvaluator final : public ActionEvaluator {
 
  private:
   ActionEvaluation Run(int kick_index, double rotation_rad, bool stop_when_trimmed);
+  // Lanes first .. first + kLanes - 1: the launch of a kick turned by rho, or the ball at rest.
+  RollLanesInput Launch(int kick_index, std::size_t first, double cos_rho, double sin_rho) const;
+  RestLanes RestingLanes(std::size_t first) const;
   Outcome SimulateOne(int kick_index, std::size_t sample, double cos_rho, double sin_rho) const;
   std::size_t LaunchSlot(int kick_index, std::size_t sample) const {
     return static_cast<std::size_t>(kick_index) * padded_count_ + sample;
@@ -62,6 +66,7 @@ class CoarseActionEvaluator final : public ActionEvaluator {
   // Per sample (padded): the ball and the category of its start.
   std::vector<double> ball_x_, ball_y_;
   std::vector<std::int64_t> start_category_;
+  std::vector<double> theta_rad_, z_speed_, z_direction_;  // the robot's drawn heading, kick noise
   // Per kick, then per sample (padded), [LaunchSlot(kick, i)]: the launch before the turn.
   std::vector<double> direction_x_, direction_y_, speed_mps_, stop_m_;
   std::vector<std::int64_t> moving_;  // -1 when the launch speed is > 0 (lane mask)

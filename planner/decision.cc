@@ -162,8 +162,7 @@ void DecideFast(Context& ctx, Decision& decision) {
     // Nothing improves on leaving the ball: the least turn that makes some kick acceptable.
     FindLeastTurns(ctx, decision, [&ctx](const ActionEvaluation& e) { return ctx.Acceptable(e); });
     chosen = LeastRotationChoice(ctx, decision.kicks);
-    if (chosen >= 0)
-      decision.note.assign(kNoImprovementNote);
+    if (chosen >= 0) decision.note.assign(kNoImprovementNote);
   }
   if (chosen >= 0) {
     decision.kick_index = decision.kicks[static_cast<std::size_t>(chosen)].kick_index;

@@ -35,13 +35,13 @@ struct ActionEvaluation {
   double p_opp_goal = 0.0;
   double p_own_goal = 0.0;
   double p_out = 0.0;
-  double value_avg = 0.0;        // v_avg over the infield samples (0 when there are none)
-  double potential_avg = 0.0;    // mean potential of the infield samples (NaoTH rule, step 3)
+  double value_avg = 0.0;          // v_avg over the infield samples (0 when there are none)
+  double potential_avg = 0.0;      // mean potential of the infield samples (NaoTH rule, step 3)
   double potential_all_avg = 0.0;  // mean potential of every sample's rest position, goal and
                                    // out samples included (NaoTH rule: ties on goal samples)
-  double utility = 0.0;          // eq. 5
-  double trimmed_utility = 0.0;  // eq. 6
-  bool too_risky = false;        // trimmed: p_out > T_out or an own goal
+  double utility = 0.0;            // eq. 5
+  double trimmed_utility = 0.0;    // eq. 6
+  bool too_risky = false;          // trimmed: p_out > T_out or an own goal
 
   int Count(Category c) const { return counts[static_cast<int>(c)]; }
 };

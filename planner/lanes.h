@@ -86,11 +86,41 @@ inline LaneMask LoadMask(const std::int64_t* p) {
   __builtin_memcpy(&v, p, sizeof v);
   return v;
 }
+inline void Store(Lanes v, double* p) {
+  __builtin_memcpy(p, &v, sizeof v);
+}
+inline void StoreMask(LaneMask v, std::int64_t* p) {
+  __builtin_memcpy(p, &v, sizeof v);
+}
 
-// ExpFast (common/fast_math.h) in four lanes, operation for operation: the same reduction
-// x = (64 k + j) ln2 / 64 + r (the nearest n rounded half away from zero, as RoundToInt), the
-// same table 2^(j/64) and series. Lanes beyond +-700 (never met by the potential on a field)
-// take the scalar function.
+// RoundToInt (common/fast_math.h) in lanes: nearest integer, ties away from zero.
+inline Lanes RoundToIntLanes(Lanes x) {
+  return Trunc(x + Select(x >= 0.0, Broadcast(0.5), Broadcast(-0.5)));
+}
+
+// An integral n (|n| < 2^51) as a two's complement integer: n + 1.5 * 2^52 holds n exactly in
+// its low mantissa bits (an integer conversion per lane is slow on SSE).
+inline LaneBits IntegerBits(Lanes n) {
+  constexpr double kShifter = 0x1.8p52;
+  return reinterpret_cast<LaneBits>(n + kShifter) - reinterpret_cast<LaneBits>(Broadcast(kShifter));
+}
+
+// SinCos (common/fast_math.h) in lanes: the same reduction, polynomials and quadrant swap.
+inline void SinCosLanes(Lanes x, Lanes* sin_x, Lanes* cos_x) {
+  using namespace fast_math_detail;
+  const Lanes k = RoundToIntLanes(x * kTwoOverPi);
+  const Lanes r = (x - k * kPio2Hi) - k * kPio2Lo;
+  const Lanes s = SinPoly(r), c = CosPoly(r);
+  const LaneBits quadrant = IntegerBits(k) & 3;  // 0: (s, c), 1: (c, -s), 2: (-s, -c), 3: (-c, s)
+  const LaneMask swap = (quadrant & 1) != 0;
+  const Lanes sin_swapped = Select(swap, c, s), cos_swapped = Select(swap, s, c);
+  *sin_x = Select((quadrant & 2) != 0, -sin_swapped, sin_swapped);
+  *cos_x = Select(((quadrant + 1) & 2) != 0, -cos_swapped, cos_swapped);
+}
+
+// ExpFast (common/fast_math.h) in lanes, operation for operation: the same reduction
+// x = (64 k + j) ln2 / 64 + r (n = 64 k + j rounded as RoundToInt), the same table 2^(j/64)
+// and series. Lanes beyond +-700 (never met by the potential on a field) take the scalar one.
 inline Lanes ExpFastLanes(Lanes x) {
   constexpr double kLn2Hi = 6.93147180369123816490e-01;
   constexpr double kLn2Lo = 1.90821492927058770002e-10;
@@ -100,13 +130,8 @@ inline Lanes ExpFastLanes(Lanes x) {
     for (int l = 0; l < kLanes; ++l) e[l] = ExpFast(x[l]);
     return e;
   }
-  const Lanes t = x * k64OverLn2;
-  const Lanes n = Trunc(t + Select(t >= 0.0, Broadcast(0.5), Broadcast(-0.5)));  // RoundToInt
-  // n as a two's complement integer: below 2^51 in magnitude, n + 1.5 * 2^52 holds n exactly
-  // in its low mantissa bits (an integer conversion per lane is slow on SSE).
-  constexpr double kShifter = 0x1.8p52;
-  const LaneBits ni =
-      reinterpret_cast<LaneBits>(n + kShifter) - reinterpret_cast<LaneBits>(Broadcast(kShifter));
+  const Lanes n = RoundToIntLanes(x * k64OverLn2);
+  const LaneBits ni = IntegerBits(n);
   const Lanes r = (x - n * (kLn2Hi / 64.0)) - n * (kLn2Lo / 64.0);
   const LaneBits j = ni & 63;
   const Lanes p =

@@ -3,7 +3,8 @@
 // With common random numbers the trimmed utility u(rho) is a deterministic, piecewise smooth
 // function of the rotation with jumps where a sample changes category. BestRotation finds its
 // maximum over the whole circle reliably:
-//   1. a grid over [-pi, pi) with step h (rotation_search.grid_step_deg, 20 deg in the shipped files),
+//   1. a grid over [-pi, pi) with step h (rotation_search.grid_step_deg, 20 deg in the shipped
+//   files),
 //      which includes rho = 0;
 //   2. compass refinement (steps h/2, h/4, ... for refine_levels levels) from the best
 //      `refine_candidates` local maxima of the grid;

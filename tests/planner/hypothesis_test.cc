@@ -60,8 +60,8 @@ TEST(HypothesisTest, PotentialMeansOverInfieldAndOverAllSamples) {
   h.Add(Category::kOppGoal, 0.0, -3.0);
   h.Add(Category::kOut, 0.0, 2.0);
   const ActionEvaluation e = h.Finish(Params());
-  EXPECT_DOUBLE_EQ(e.potential_avg, -1.5);             // infield only
-  EXPECT_DOUBLE_EQ(e.potential_all_avg, -4.0 / 4.0);   // every sample
+  EXPECT_DOUBLE_EQ(e.potential_avg, -1.5);            // infield only
+  EXPECT_DOUBLE_EQ(e.potential_all_avg, -4.0 / 4.0);  // every sample
 }
 
 TEST(HypothesisTest, OutcomeUtilityIsEq5ForOneSample) {
