@@ -61,13 +61,6 @@ inline Lanes Abs(Lanes x) {
   return reinterpret_cast<Lanes>(reinterpret_cast<LaneBits>(x) & 0x7fffffffffffffffULL);
 }
 
-// Rounded towards zero in every lane (roundsd/roundpd from SSE4.1 on).
-inline Lanes Trunc(Lanes x) {
-  Lanes r{};
-  for (int l = 0; l < kLanes; ++l) r[l] = __builtin_trunc(x[l]);
-  return r;
-}
-
 // Correctly rounded in every lane (the compiler emits sqrtpd; planner/ builds with
 // -fno-math-errno so that no lane needs a library call).
 inline Lanes Sqrt(Lanes x) {
@@ -93,9 +86,14 @@ inline void StoreMask(LaneMask v, std::int64_t* p) {
   __builtin_memcpy(p, &v, sizeof v);
 }
 
-// RoundToInt (common/fast_math.h) in lanes: nearest integer, ties away from zero.
+// RoundToInt (common/fast_math.h) in lanes: nearest integer, ties away from zero, by the same
+// truncating conversion, to 32-bit integers (one packed instruction from SSE2 on), so valid for
+// |x| < 2^31 (the callers' arguments stay below 10^5).
 inline Lanes RoundToIntLanes(Lanes x) {
-  return Trunc(x + Select(x >= 0.0, Broadcast(0.5), Broadcast(-0.5)));
+  using LaneInts = std::int32_t __attribute__((vector_size(kLanes * sizeof(std::int32_t))));
+  const LaneInts n =
+      __builtin_convertvector(x + Select(x >= 0.0, Broadcast(0.5), Broadcast(-0.5)), LaneInts);
+  return __builtin_convertvector(n, Lanes);
 }
 
 // An integral n (|n| < 2^51) as a two's complement integer: n + 1.5 * 2^52 holds n exactly in

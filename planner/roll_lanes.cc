@@ -65,11 +65,11 @@ void HitGoal(const GoalShapes& goal, double ball_radius, const RollLanesInput& i
   hit = Select(near, Min(hit, s), hit);
 }
 
-// ExitDistance (models/field_lines.cc) for a start inside the lines.
+// ExitDistance (models/field_lines.cc): the numerator of the direction's case, one division.
 Lanes ExitDistance(Lanes start, Lanes dir, double limit) {
-  const Lanes forward = (limit - start) / dir, backward = (-limit - start) / dir;
-  const Lanes moving = Select(dir > 0.0, forward, Select(dir < 0.0, backward, Broadcast(kInf)));
-  return Select(Abs(start) > limit, Broadcast(kInf), moving);
+  const Lanes distance = Select(dir > 0.0, limit - start, -limit - start) / dir;
+  const LaneMask never = (Abs(start) > limit) | (dir == 0.0);
+  return Select(never, Broadcast(kInf), distance);
 }
 
 }  // namespace
