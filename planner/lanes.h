@@ -1,10 +1,10 @@
-// Four samples at once: doubles in SIMD lanes through GCC/Clang vector extensions, so the hot
-// path (planner/roll_lanes.h, PositionValue's lanes) reads like the scalar code it mirrors.
+// Two or four samples at once: doubles in SIMD lanes through GCC/Clang vector extensions, so the
+// hot path (planner/roll_lanes.h, PositionValue's lanes) reads like the scalar code it mirrors.
 //
 // A vector is as wide as the target's registers: 4 doubles where the build targets AVX, 2 on SSE
 // only (the NAO's Atom E3845, -march=silvermont, and plain x86-64); vectors wider than the
-// registers compile to slow code (measured: 2.6 times slower per hypothesis with 4 lanes on
-// SSE2). The lane count never changes a result (below). Every operation is the IEEE
+// registers compile to slow code (measured: 4 lanes on SSE2 took 2.6 times the scalar code's
+// time per hypothesis). The lane count never changes a result (below). Every operation is the IEEE
 // operation of each lane (+, -, *, / and sqrt correctly rounded; no FMA, the build has
 // -ffp-contract=off; no approximate reciprocals), so lane l gives exactly the bits of the scalar
 // code run on sample l with the same operations in the same order, on every instruction set.
@@ -30,10 +30,14 @@ using LaneMask = std::int64_t __attribute__((vector_size(kLanes * sizeof(std::in
 using LaneBits = std::uint64_t __attribute__((vector_size(kLanes * sizeof(std::uint64_t))));
 
 inline Lanes Broadcast(double x) {
-  return Lanes{} + x;
+  Lanes v{};
+  for (int l = 0; l < kLanes; ++l) v[l] = x;  // exact, -0.0 included
+  return v;
 }
 inline LaneMask BroadcastMask(std::int64_t x) {
-  return LaneMask{} + x;
+  LaneMask v{};
+  for (int l = 0; l < kLanes; ++l) v[l] = x;
+  return v;
 }
 
 inline Lanes Select(LaneMask m, Lanes if_true, Lanes if_false) {
