@@ -8,7 +8,7 @@ STRATEGY ?= optimal_all
 
 FUZZ_RUNS ?= 20000
 
-.PHONY: setup build test main demo experiments experiments-quick bench sanitize fuzz clean
+.PHONY: setup build test main demo experiments experiments-quick bench same-bytes sanitize fuzz clean
 
 setup:
 	@bash scripts/setup.sh
@@ -62,6 +62,11 @@ experiments-quick: build
 bench: build
 	@$(BUILD)/bench/planner_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
+# Builds for the NAO's Atom (-march=silvermont) and for this machine (-march=native) must decide
+# with the same bits (issue 18; scripts/same_bytes.sh).
+same-bytes: setup
+	@bash scripts/same_bytes.sh $(BUILD)-march
+
 # AddressSanitizer + UndefinedBehaviorSanitizer build of everything, then the tests and two real
 # runs (a small fidelity report and the strategies experiment).
 sanitize: setup
@@ -81,4 +86,4 @@ fuzz: setup
 	@bash scripts/run_fuzzers.sh build-fuzz $(FUZZ_RUNS)
 
 clean:
-	@rm -rf $(BUILD) build-asan build-fuzz out
+	@rm -rf $(BUILD) $(BUILD)-march-silvermont $(BUILD)-march-native build-asan build-fuzz out

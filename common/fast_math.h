@@ -32,23 +32,27 @@ inline double RoundToInt(double x) {
   return static_cast<double>(static_cast<std::int64_t>(x + (x >= 0.0 ? 0.5 : -0.5)));
 }
 
-inline double SinPoly(double r) {
-  const double r2 = r * r;
+// Templates so that planner/lanes.h evaluates the same polynomials, operation for operation, on
+// SIMD lanes (T = double or a vector of doubles).
+template <typename T>
+inline T SinPoly(T r) {
+  const T r2 = r * r;
   // sum_{n=0..8} (-1)^n r^(2n+1) / (2n+1)!, Horner form.
-  double p = 1.0 / 355687428096000.0;  // 1/17!
-  p = p * r2 - 1.0 / 1307674368000.0;  // -1/15!
-  p = p * r2 + 1.0 / 6227020800.0;     // 1/13!
-  p = p * r2 - 1.0 / 39916800.0;       // -1/11!
-  p = p * r2 + 1.0 / 362880.0;         // 1/9!
-  p = p * r2 - 1.0 / 5040.0;           // -1/7!
-  p = p * r2 + 1.0 / 120.0;            // 1/5!
-  p = p * r2 - 1.0 / 6.0;              // -1/3!
+  T p = T{} + 1.0 / 355687428096000.0;  // 1/17! (T{} + c: c as a T, whatever T is)
+  p = p * r2 - 1.0 / 1307674368000.0;   // -1/15!
+  p = p * r2 + 1.0 / 6227020800.0;      // 1/13!
+  p = p * r2 - 1.0 / 39916800.0;        // -1/11!
+  p = p * r2 + 1.0 / 362880.0;          // 1/9!
+  p = p * r2 - 1.0 / 5040.0;            // -1/7!
+  p = p * r2 + 1.0 / 120.0;             // 1/5!
+  p = p * r2 - 1.0 / 6.0;               // -1/3!
   return r + r * r2 * p;
 }
 
-inline double CosPoly(double r) {
-  const double r2 = r * r;
-  double p = -1.0 / 6402373705728000.0;  // -1/18!
+template <typename T>
+inline T CosPoly(T r) {
+  const T r2 = r * r;
+  T p = T{} - 1.0 / 6402373705728000.0;  // -1/18!
   p = p * r2 + 1.0 / 20922789888000.0;   // 1/16!
   p = p * r2 - 1.0 / 87178291200.0;      // -1/14!
   p = p * r2 + 1.0 / 479001600.0;        // 1/12!

@@ -124,6 +124,8 @@ StabilityResult RunStability(const StabilityParams& params, std::uint64_t seed, 
              [&] { probe.Validate(); });
   }
   const CoarsePlanner planner(params.situation);
+  const int max_samples =
+      *std::max_element(params.sample_counts.begin(), params.sample_counts.end());
   ParallelFor(
       poses, threads,
       [&](int pose) {
@@ -132,13 +134,17 @@ StabilityResult RunStability(const StabilityParams& params, std::uint64_t seed, 
         const std::uint64_t pose_key =
             StreamKey(seed, static_cast<std::uint64_t>(pose), kStabilityDomain);
         std::vector<int> keys(static_cast<std::size_t>(repeats));
+        // One evaluator and Decision per pose, redrawn for every decision (no allocation per
+        // decision; the same bits as CoarsePlanner::Decide(state, ...), tested).
+        CoarseActionEvaluator evaluator = planner.MakeEvaluator(state, max_samples, 0);
+        Decision d;
         for (int c = 0; c < counts; ++c) {
           for (int r = 0; r < repeats; ++r) {
             const std::uint64_t decision =
                 static_cast<std::uint64_t>(c) * static_cast<std::uint64_t>(repeats) +
                 static_cast<std::uint64_t>(r);
-            const Decision d = planner.Decide(state, params.strategy, params.sample_counts[c],
-                                              StreamKey(pose_key, decision));
+            planner.Decide(state, params.strategy, params.sample_counts[c],
+                           StreamKey(pose_key, decision), evaluator, d);
             keys[r] = DecisionKey(d.kick_index, d.rotation_rad, params.rotation_bin_rad);
           }
           const auto [top, n] = TopAndDistinct(keys);

@@ -15,18 +15,23 @@
 #include "models/situation.h"
 #include "planner/hypothesis.h"
 #include "planner/position_value.h"
+#include "planner/rotation_search.h"
 #include "planner/sampling.h"
 
 namespace foresight {
 
 // The situation gives the static parts (field, kicks, evaluation, obstacles); the state estimate
-// is the evaluator's own, so one planner can decide for any pose (CoarsePlanner::Decide).
+// is the evaluator's own, so one planner can decide for any pose (CoarsePlanner::Decide). An
+// evaluator is also a decision's workspace (the rotation search's storage), so one thread
+// keeps one evaluator and decides with it without touching the heap.
 class ActionEvaluator {
  public:
   explicit ActionEvaluator(const Situation& situation)
       : ActionEvaluator(situation, situation.state) {}
   ActionEvaluator(const Situation& situation, const StateEstimate& state)
-      : situation_(situation), state_(state) {}
+      : situation_(situation), state_(state) {
+    search_scratch_.Reserve(situation.evaluation.rotation_search);
+  }
   virtual ~ActionEvaluator() = default;
 
   // kick_index == kNoKick: the `none` action (the ball stays where it is).
@@ -43,22 +48,22 @@ class ActionEvaluator {
   const Situation& situation() const { return situation_; }
   const StateEstimate& state() const { return state_; }
   long long evaluations() const { return evaluations_; }
+  RotationSearchScratch& search_scratch() { return search_scratch_; }
 
  protected:
   const Situation& situation_;
   StateEstimate state_;
   long long evaluations_ = 0;
+  RotationSearchScratch search_scratch_;
 };
 
-// Adds one simulated outcome to a hypothesis, valuing infield rest positions.
+// Adds one simulated outcome to a hypothesis: the potential of every rest position (NaoTH's tie
+// rule averages it over all samples), the value of infield ones.
 inline void AddOutcome(HypothesisAccumulator& hypothesis, const Outcome& outcome,
                        const PositionValue& value) {
-  if (outcome.category == Category::kInfield) {
-    const double potential = value.Potential(outcome.p_F_rest);
-    hypothesis.Add(outcome.category, value.ValueOfPotential(potential), potential);
-  } else {
-    hypothesis.Add(outcome.category, 0.0, 0.0);
-  }
+  const double potential = value.Potential(outcome.p_F_rest);
+  const bool infield = outcome.category == Category::kInfield;
+  hypothesis.Add(outcome.category, infield ? value.ValueOfPotential(potential) : 0.0, potential);
 }
 
 // One simulated outcome's utility (eq. 5 for one sample), valuing an infield rest position.

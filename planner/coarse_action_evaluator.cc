@@ -3,54 +3,139 @@
 #include <cmath>
 
 #include "planner/ball_roll.h"
+#include "planner/roll_lanes.h"
 
 namespace foresight {
+
+namespace {
+
+// More outs than this, or one own goal, trims the action whatever the other samples do.
+int MaxOuts(const EvaluationParams& params, int samples) {
+  return static_cast<int>(std::floor(params.max_out_share * samples + 1e-9));
+}
+
+}  // namespace
 
 CoarseActionEvaluator::CoarseActionEvaluator(const Situation& situation, const StateEstimate& state,
                                              const CoarseWorld& world, const PositionValue& value,
                                              int samples, std::uint64_t seed)
-    : ActionEvaluator(situation, state), world_(world), value_(value), sample_count_(samples) {
-  std::vector<DrawnSample> drawn;
-  DrawSamples(state, seed, samples, drawn);
-  p_F_ball_.reserve(drawn.size());
-  for (const DrawnSample& d : drawn) p_F_ball_.push_back(d.state.p_F_ball);
-  launches_.resize(static_cast<std::size_t>(kick_count()) * drawn.size());
+    : ActionEvaluator(situation, state), world_(world), value_(value) {
+  Redraw(state, samples, seed);
+}
+
+void CoarseActionEvaluator::Redraw(const StateEstimate& state, int samples, std::uint64_t seed) {
+  state_ = state;
+  sample_count_ = samples;
+  padded_count_ = static_cast<std::size_t>((samples + kLanes - 1) / kLanes * kLanes);
+  DrawSamples(state, seed, samples, drawn_);
+  // Padding lanes hold a ball at the centre spot; their results are never summed.
+  ball_x_.assign(padded_count_, 0.0);
+  ball_y_.assign(padded_count_, 0.0);
+  start_category_.assign(padded_count_, static_cast<std::int64_t>(Category::kInfield));
+  theta_rad_.assign(padded_count_, 0.0);
+  z_speed_.assign(padded_count_, 0.0);
+  z_direction_.assign(padded_count_, 0.0);
+  for (std::size_t i = 0; i < drawn_.size(); ++i) {
+    const DrawnSample& d = drawn_[i];
+    ball_x_[i] = d.state.p_F_ball.x();
+    ball_y_[i] = d.state.p_F_ball.y();
+    start_category_[i] = static_cast<std::int64_t>(ClassifyPosition(world_, d.state.p_F_ball));
+    theta_rad_[i] = d.state.robot.theta_rad;
+    z_speed_[i] = d.z_speed;
+    z_direction_[i] = d.z_direction;
+  }
+  const std::size_t slots = static_cast<std::size_t>(kick_count()) * padded_count_;
+  direction_x_.resize(slots);
+  direction_y_.resize(slots);
+  speed_mps_.resize(slots);
+  stop_m_.resize(slots);
+  moving_.resize(slots);
+  // The launches as MakeAction draws them and CoarseSimulator turns them into F, in lanes.
   for (int k = 0; k < kick_count(); ++k) {
-    for (std::size_t i = 0; i < drawn.size(); ++i) {
-      const ConcreteAction a = MakeAction(situation.kicks, k, 0.0, drawn[i]);
-      launches_[k * drawn.size() + i] = {
-          UnitVector(drawn[i].state.robot.theta_rad + a.launch_direction_rad), a.launch_speed_mps};
+    const KickSpec& kick = situation_.kicks.kicks[static_cast<std::size_t>(k)];
+    for (std::size_t first = 0; first < padded_count_; first += kLanes) {
+      const Lanes speed = LaunchSpeed(kick, Load(&z_speed_[first]));
+      const Lanes direction = LaunchDirection(kick, Load(&z_direction_[first]));
+      Lanes sin_heading, cos_heading;
+      SinCosLanes(Load(&theta_rad_[first]) + direction, &sin_heading, &cos_heading);
+      const LaneMask moving = speed > 0.0;
+      const std::size_t slot = LaunchSlot(k, first);
+      Store(cos_heading, &direction_x_[slot]);
+      Store(sin_heading, &direction_y_[slot]);
+      Store(speed, &speed_mps_[slot]);
+      Store(Select(moving, speed * speed / (2.0 * world_.deceleration_mps2), Broadcast(0.0)),
+            &stop_m_[slot]);  // StopDistance
+      StoreMask(moving, &moving_[slot]);
     }
   }
 }
 
 Outcome CoarseActionEvaluator::SimulateOne(int kick_index, std::size_t sample, double cos_rho,
                                            double sin_rho) const {
-  if (kick_index == kNoKick) return RollBall(world_, p_F_ball_[sample], Vec2(1.0, 0.0), 0.0);
-  const Launch& launch =
-      launches_[static_cast<std::size_t>(kick_index) * p_F_ball_.size() + sample];
-  const Vec2& u = launch.direction_F;
-  const Vec2 direction(cos_rho * u.x() - sin_rho * u.y(), sin_rho * u.x() + cos_rho * u.y());
-  return RollBall(world_, p_F_ball_[sample], direction, launch.speed_mps);
+  const Vec2 p(ball_x_[sample], ball_y_[sample]);
+  if (kick_index == kNoKick) return RollBall(world_, p, Vec2(1.0, 0.0), 0.0);
+  const std::size_t slot = LaunchSlot(kick_index, sample);
+  const double ux = direction_x_[slot], uy = direction_y_[slot];
+  const Vec2 direction(cos_rho * ux - sin_rho * uy, sin_rho * ux + cos_rho * uy);
+  return RollBall(world_, p, direction, speed_mps_[slot]);
+}
+
+ActionEvaluation CoarseActionEvaluator::EvaluateReference(int kick_index,
+                                                          double rotation_rad) const {
+  double sin_rho, cos_rho;
+  SinCos(rotation_rad, &sin_rho, &cos_rho);
+  HypothesisAccumulator hypothesis;
+  for (int i = 0; i < sample_count_; ++i) {
+    AddOutcome(hypothesis, SimulateOne(kick_index, static_cast<std::size_t>(i), cos_rho, sin_rho),
+               value_);
+  }
+  return hypothesis.Finish(situation_.evaluation);
+}
+
+RollLanesInput CoarseActionEvaluator::Launch(int kick_index, std::size_t first, double cos_rho,
+                                             double sin_rho) const {
+  const std::size_t slot = LaunchSlot(kick_index, first);
+  const Lanes ux = Load(&direction_x_[slot]), uy = Load(&direction_y_[slot]);
+  RollLanesInput in;
+  in.start_x = Load(&ball_x_[first]);
+  in.start_y = Load(&ball_y_[first]);
+  in.dir_x = cos_rho * ux - sin_rho * uy;
+  in.dir_y = sin_rho * ux + cos_rho * uy;
+  in.stop_m = Load(&stop_m_[slot]);
+  in.moving = LoadMask(&moving_[slot]);
+  in.start_category = LoadMask(&start_category_[first]);
+  return in;
+}
+
+RestLanes CoarseActionEvaluator::RestingLanes(std::size_t first) const {
+  return {Load(&ball_x_[first]), Load(&ball_y_[first]), LoadMask(&start_category_[first])};
 }
 
 ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
                                             bool stop_when_trimmed) {
   ++evaluations_;
+  const EvaluationParams& params = situation_.evaluation;
   double sin_rho, cos_rho;
   SinCos(rotation_rad, &sin_rho, &cos_rho);
-  const EvaluationParams& params = situation_.evaluation;
-  // More outs than this, or one own goal, trims the action whatever the other samples do.
-  const int max_outs = static_cast<int>(std::floor(params.max_out_share * sample_count_ + 1e-9));
+  const int max_outs = MaxOuts(params, sample_count_);
   HypothesisAccumulator hypothesis;
-  for (std::size_t i = 0; i < p_F_ball_.size(); ++i) {
-    const Outcome outcome = SimulateOne(kick_index, i, cos_rho, sin_rho);
-    AddOutcome(hypothesis, outcome, value_);
-    if (stop_when_trimmed && hypothesis.CertainlyTrimmed(max_outs)) {
-      ActionEvaluation trimmed = hypothesis.Finish(params);
-      trimmed.too_risky = true;
-      trimmed.trimmed_utility = 0.0;
-      return trimmed;
+  for (std::size_t first = 0; first < static_cast<std::size_t>(sample_count_); first += kLanes) {
+    const RestLanes rest = kick_index == kNoKick
+                               ? RestingLanes(first)
+                               : RollLanes(world_, Launch(kick_index, first, cos_rho, sin_rho));
+    const Lanes potential = value_.PotentialLanes(rest.x, rest.y);
+    const Lanes value = value_.ValueOfPotentialLanes(potential);
+    // Summed in sample order, as the scalar reference sums.
+    const std::size_t lanes = std::min<std::size_t>(kLanes, sample_count_ - first);
+    for (std::size_t l = 0; l < lanes; ++l) {
+      const auto category = static_cast<Category>(rest.category[l]);
+      hypothesis.Add(category, category == Category::kInfield ? value[l] : 0.0, potential[l]);
+      if (stop_when_trimmed && hypothesis.CertainlyTrimmed(max_outs)) {
+        ActionEvaluation trimmed = hypothesis.Finish(params);
+        trimmed.too_risky = true;
+        trimmed.trimmed_utility = 0.0;
+        return trimmed;
+      }
     }
   }
   return hypothesis.Finish(params);
@@ -60,9 +145,9 @@ std::vector<Outcome> CoarseActionEvaluator::Outcomes(int kick_index, double rota
   double sin_rho, cos_rho;
   SinCos(rotation_rad, &sin_rho, &cos_rho);
   std::vector<Outcome> outcomes;
-  outcomes.reserve(p_F_ball_.size());
-  for (std::size_t i = 0; i < p_F_ball_.size(); ++i) {
-    outcomes.push_back(SimulateOne(kick_index, i, cos_rho, sin_rho));
+  outcomes.reserve(static_cast<std::size_t>(sample_count_));
+  for (int i = 0; i < sample_count_; ++i) {
+    outcomes.push_back(SimulateOne(kick_index, static_cast<std::size_t>(i), cos_rho, sin_rho));
   }
   return outcomes;
 }

@@ -21,4 +21,11 @@ Decision CoarsePlanner::Decide(const StateEstimate& state, Strategy strategy, in
   return foresight::Decide(evaluator, strategy);
 }
 
+void CoarsePlanner::Decide(const StateEstimate& state, Strategy strategy, int samples,
+                           std::uint64_t seed, CoarseActionEvaluator& evaluator,
+                           Decision& out) const {
+  evaluator.Redraw(state, samples, seed);
+  foresight::Decide(evaluator, strategy, out);
+}
+
 }  // namespace foresight

@@ -41,6 +41,12 @@ class CoarsePlanner {
   // caller's: the pose must be on the carpet).
   Decision Decide(const StateEstimate& state, Strategy strategy, int samples,
                   std::uint64_t seed) const;
+  // The same without touching the heap, for a robot's cycle: `evaluator` (made by this planner's
+  // MakeEvaluator) is redrawn for the state and seed, and `out` (see ReserveDecision) is
+  // overwritten; both keep their storage, so once they have held `samples` samples and the
+  // kicks, a decision allocates nothing (tests/planner_alloc/). Equals the one above.
+  void Decide(const StateEstimate& state, Strategy strategy, int samples, std::uint64_t seed,
+              CoarseActionEvaluator& evaluator, Decision& out) const;
 
   const Situation& situation() const { return situation_; }
   const CoarseSimulator& simulator() const { return simulator_; }

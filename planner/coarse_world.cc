@@ -14,9 +14,12 @@ GoalShapes MakeGoal(const FieldSpec& field, double side) {
   GoalShapes goal;
   goal.posts[0] = {Vec2(x_front, g.post_centre_y_m), g.post_radius_m + r, Contact::kPost};
   goal.posts[1] = {Vec2(x_front, -g.post_centre_y_m), g.post_radius_m + r, Contact::kPost};
-  goal.net[0] = {Vec2(x_front, g.post_centre_y_m), Vec2(x_back, g.post_centre_y_m)};
-  goal.net[1] = {Vec2(x_back, g.post_centre_y_m), Vec2(x_back, -g.post_centre_y_m)};
-  goal.net[2] = {Vec2(x_back, -g.post_centre_y_m), Vec2(x_front, -g.post_centre_y_m)};
+  goal.net[0] =
+      SegmentShape::Between(Vec2(x_front, g.post_centre_y_m), Vec2(x_back, g.post_centre_y_m));
+  goal.net[1] =
+      SegmentShape::Between(Vec2(x_back, g.post_centre_y_m), Vec2(x_back, -g.post_centre_y_m));
+  goal.net[2] =
+      SegmentShape::Between(Vec2(x_back, -g.post_centre_y_m), Vec2(x_front, -g.post_centre_y_m));
   goal.bound_centre = Vec2(0.5 * (x_front + x_back), 0.0);
   const double half_depth = 0.5 * g.net_depth_m + g.post_radius_m;
   goal.bound_radius_m = std::hypot(half_depth, g.post_centre_y_m + g.post_radius_m) + r;
@@ -24,6 +27,19 @@ GoalShapes MakeGoal(const FieldSpec& field, double side) {
 }
 
 }  // namespace
+
+SegmentShape SegmentShape::Between(const Vec2& a, const Vec2& b) {
+  SegmentShape s;
+  s.a = a;
+  s.b = b;
+  const Vec2 axis = b - a;
+  s.length_m = axis.norm();
+  if (s.length_m > 0.0) {
+    s.u = axis / s.length_m;
+    s.normal = Vec2(-s.u.y(), s.u.x());
+  }
+  return s;
+}
 
 CoarseWorld CoarseWorld::Build(const Scene& scene) {
   assert(scene.field != nullptr);

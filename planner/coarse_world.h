@@ -23,6 +23,12 @@ struct CircleShape {
 struct SegmentShape {
   Vec2 a{0.0, 0.0};
   Vec2 b{0.0, 0.0};
+  // Derived once, as RayCapsuleEntry derives them (planner/roll_lanes.h needs the same bits).
+  double length_m = 0.0;
+  Vec2 u{1.0, 0.0};       // unit axis a -> b
+  Vec2 normal{0.0, 1.0};  // u turned by +90 deg
+
+  static SegmentShape Between(const Vec2& a, const Vec2& b);
 };
 
 struct GoalShapes {

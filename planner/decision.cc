@@ -1,13 +1,20 @@
 #include "planner/decision.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <string_view>
 
 #include "planner/naoth_rule.h"
 
 namespace foresight {
 
 namespace {
+
+constexpr std::string_view kNoAcceptableNote =
+    "no kick is acceptable at any rotation; took the fewest own goals, then outs, then utility";
+constexpr std::string_view kNoImprovementNote =
+    "no kick improves on leaving the ball; took the least turn to an acceptable kick";
 
 struct Context {
   ActionEvaluator& evaluator;
@@ -93,13 +100,19 @@ void FallBack(Context& ctx, Decision& decision) {
   double best_score = 0.0;
   for (KickOption& option : decision.kicks) {
     if (!option.considered) continue;
+    // One pointer captured, so std::function keeps it without a heap allocation.
+    struct {
+      ActionEvaluator* evaluator;
+      int kick;
+      double goal_value;
+    } objective{&ctx.evaluator, option.kick_index, goal_value};
     const RotationChoice found = BestRotation(
-        [&](double rho) {
-          ActionEvaluation e = ctx.evaluator.Evaluate(option.kick_index, rho);
-          e.trimmed_utility = FallbackScore(e, goal_value);  // what the search maximises
+        [o = &objective](double rho) {
+          ActionEvaluation e = o->evaluator->Evaluate(o->kick, rho);
+          e.trimmed_utility = FallbackScore(e, o->goal_value);  // what the search maximises
           return e;
         },
-        ctx.search);
+        ctx.search, ctx.evaluator.search_scratch());
     option.choice = {found.rotation_rad,
                      ctx.evaluator.Evaluate(option.kick_index, found.rotation_rad)};
     const double score = FallbackScore(option.choice.evaluation, goal_value);
@@ -109,15 +122,15 @@ void FallBack(Context& ctx, Decision& decision) {
     decision.kick_index = best->kick_index;
     decision.rotation_rad = best->choice.rotation_rad;
   }
-  decision.note =
-      "no kick is acceptable at any rotation; took the fewest own goals, then outs, then utility";
+  decision.note.assign(kNoAcceptableNote);
 }
 
 void OptimiseEveryKick(Context& ctx, Decision& decision, int only_kick) {
   for (KickOption& option : decision.kicks) {
     option.considered = only_kick < 0 || option.kick_index == only_kick;
     if (option.considered)
-      option.choice = BestRotation(ctx.ObjectiveFor(option.kick_index), ctx.search);
+      option.choice = BestRotation(ctx.ObjectiveFor(option.kick_index), ctx.search,
+                                   ctx.evaluator.search_scratch());
   }
 }
 
@@ -149,9 +162,7 @@ void DecideFast(Context& ctx, Decision& decision) {
     // Nothing improves on leaving the ball: the least turn that makes some kick acceptable.
     FindLeastTurns(ctx, decision, [&ctx](const ActionEvaluation& e) { return ctx.Acceptable(e); });
     chosen = LeastRotationChoice(ctx, decision.kicks);
-    if (chosen >= 0)
-      decision.note =
-          "no kick improves on leaving the ball; took the least turn to an acceptable kick";
+    if (chosen >= 0) decision.note.assign(kNoImprovementNote);
   }
   if (chosen >= 0) {
     decision.kick_index = decision.kicks[static_cast<std::size_t>(chosen)].kick_index;
@@ -179,13 +190,27 @@ void DecideOptimal(Context& ctx, Decision& decision, bool least_rotation, int on
 
 }  // namespace
 
+void ReserveDecision(Decision& decision, int kick_count) {
+  decision.kicks.reserve(static_cast<std::size_t>(kick_count));
+  decision.note.reserve(std::max(kNoAcceptableNote.size(), kNoImprovementNote.size()));
+}
+
 Decision Decide(ActionEvaluator& evaluator, Strategy strategy) {
+  Decision decision;
+  Decide(evaluator, strategy, decision);
+  return decision;
+}
+
+void Decide(ActionEvaluator& evaluator, Strategy strategy, Decision& decision) {
   const long long evaluations_before = evaluator.evaluations();
   const Situation& situation = evaluator.situation();
   Context ctx{evaluator, situation.evaluation.rotation_search, evaluator.Evaluate(-1, 0.0)};
-  Decision decision;
   decision.strategy = strategy;
+  decision.kick_index = kNoKick;
+  decision.rotation_rad = 0.0;
   decision.none = ctx.none;
+  decision.note.clear();  // keeps its capacity
+  decision.kicks.clear();
   for (int k = 0; k < evaluator.kick_count(); ++k) {
     KickOption option;
     option.kick_index = k;
@@ -224,7 +249,6 @@ Decision Decide(ActionEvaluator& evaluator, Strategy strategy) {
     }
   }
   decision.evaluations = evaluator.evaluations() - evaluations_before;
-  return decision;
 }
 
 }  // namespace foresight

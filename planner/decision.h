@@ -48,5 +48,10 @@ struct Decision {
 };
 
 Decision Decide(ActionEvaluator& evaluator, Strategy strategy);
+// The same into `out`, reusing its storage: with ReserveDecision done and the evaluator's
+// scratch in place, a decision allocates nothing (tests/planner_alloc/).
+void Decide(ActionEvaluator& evaluator, Strategy strategy, Decision& out);
+// Room in `decision` for `kick_count` kicks and the longest note.
+void ReserveDecision(Decision& decision, int kick_count);
 
 }  // namespace foresight

@@ -8,6 +8,7 @@ ActionEvaluation HypothesisAccumulator::Finish(const EvaluationParams& params) c
   for (int c : counts_) e.samples += c;
   if (e.samples == 0) return e;
   const double n = e.samples;
+  e.potential_all_avg = potential_all_sum_ / n;
   e.p_infield = e.Count(Category::kInfield) / n;
   e.p_opp_goal = e.Count(Category::kOppGoal) / n;
   e.p_own_goal = e.Count(Category::kOwnGoal) / n;

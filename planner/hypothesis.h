@@ -35,20 +35,25 @@ struct ActionEvaluation {
   double p_opp_goal = 0.0;
   double p_own_goal = 0.0;
   double p_out = 0.0;
-  double value_avg = 0.0;        // v_avg over the infield samples (0 when there are none)
-  double potential_avg = 0.0;    // mean potential of the infield samples (NaoTH rule)
-  double utility = 0.0;          // eq. 5
-  double trimmed_utility = 0.0;  // eq. 6
-  bool too_risky = false;        // trimmed: p_out > T_out or an own goal
+  double value_avg = 0.0;          // v_avg over the infield samples (0 when there are none)
+  double potential_avg = 0.0;      // mean potential of the infield samples (NaoTH rule, step 3)
+  double potential_all_avg = 0.0;  // mean potential of every sample's rest position, goal and
+                                   // out samples included (NaoTH rule: ties on goal samples)
+  double utility = 0.0;            // eq. 5
+  double trimmed_utility = 0.0;    // eq. 6
+  bool too_risky = false;          // trimmed: p_out > T_out or an own goal
 
   int Count(Category c) const { return counts[static_cast<int>(c)]; }
 };
 
 // Sums the samples of one hypothesis; Finish() turns the sums into an ActionEvaluation.
+// `potential` is the potential at the sample's rest position whatever its category; `value`
+// counts only for infield samples.
 class HypothesisAccumulator {
  public:
   void Add(Category category, double value, double potential) {
     ++counts_[static_cast<int>(category)];
+    potential_all_sum_ += potential;
     if (category == Category::kInfield) {
       value_sum_ += value;
       potential_sum_ += potential;
@@ -67,6 +72,7 @@ class HypothesisAccumulator {
   std::array<int, kCategoryCount> counts_{};
   double value_sum_ = 0.0;
   double potential_sum_ = 0.0;
+  double potential_all_sum_ = 0.0;
 };
 
 }  // namespace foresight

@@ -25,7 +25,8 @@ NaothChoice ApplyNaothRule(const NaothRuleParams& params, const std::vector<Kick
     }
     const ActionEvaluation& g = goal_kick->choice.evaluation;
     const int goals = e.Count(Category::kOppGoal), best_goals = g.Count(Category::kOppGoal);
-    if (goals > best_goals || (goals == best_goals && e.utility > g.utility)) goal_kick = &k;
+    if (goals > best_goals || (goals == best_goals && e.potential_all_avg < g.potential_all_avg))
+      goal_kick = &k;
   }
   if (goal_kick != nullptr) return {goal_kick->kick_index};
 

@@ -3,10 +3,12 @@
 //   1. drop kicks with any own-goal sample or an acceptable share (infield + opponent goal)
 //      <= min_acceptable_share;
 //   2. if some remaining kick has a goal share >= goal_preference_share, take the one with the
-//      most goal samples (ties: the higher utility);
+//      most goal samples; on a tie, the lowest mean potential over all samples, goal samples
+//      included (ActionEvaluation::potential_all_avg), as NaoTH does (issue 18: the comparison
+//      with NaoTH's own implementation; this rule took the higher utility before);
 //   3. otherwise take the lowest mean potential among the remaining kicks and `none` (which
-//      passes the same filter). The mean is over the infield samples only: goal samples have
-//      no potential, and below the goal preference they do not count.
+//      passes the same filter). This mean is over the infield samples only: below the goal
+//      preference goal samples do not count.
 #pragma once
 
 #include <vector>

@@ -25,6 +25,16 @@ double PositionValue::Potential(const Vec2& p_F) const {
   return f;
 }
 
+Lanes PositionValue::PotentialLanes(Lanes x, Lanes y) const {
+  Lanes f = -x / potential_.linear_x_scale_m;
+  for (const GaussianTerm& g : potential_.gaussians) {
+    const Lanes dx = (x - g.centre_x_m) / g.sigma_x_m;
+    const Lanes dy = (y - g.centre_y_m) / g.sigma_y_m;
+    f += g.weight * ExpFastLanes(-0.5 * (dx * dx + dy * dy));
+  }
+  return f;
+}
+
 double PositionValue::Extreme(const FieldSpec& field, double sign) const {
   // A 0.1 m grid finds the basin; compass search inside the field then refines it to 1e-6 m.
   const double hx = field.HalfLength(), hy = field.HalfWidth();

@@ -12,6 +12,7 @@
 #include "common/geometry.h"
 #include "models/evaluation_params.h"
 #include "models/field_spec.h"
+#include "planner/lanes.h"
 
 namespace foresight {
 
@@ -24,6 +25,12 @@ class PositionValue {
   double ValueOfPotential(double potential) const {
     // Clamped: a ball may rest just past a line (it is out only once fully over it).
     return std::clamp((potential_max_ - potential) * value_scale_, 0.0, 1.0);
+  }
+
+  // The same for four positions at once (planner/lanes.h): each lane has the scalar bits.
+  Lanes PotentialLanes(Lanes x, Lanes y) const;
+  Lanes ValueOfPotentialLanes(Lanes potential) const {
+    return Clamp((potential_max_ - potential) * value_scale_, Broadcast(0.0), Broadcast(1.0));
   }
 
   double potential_min() const { return potential_min_; }

@@ -45,10 +45,13 @@ bool SameFlatRun(const std::vector<RotationChoice>& grid, int j, int k) {
   return grid[static_cast<std::size_t>(k)].evaluation.trimmed_utility == u;
 }
 
-// Local maxima of the circular grid, best first, one per flat run (its least turn).
-std::vector<int> LocalMaxima(const std::vector<RotationChoice>& grid) {
+// Local maxima of the circular grid, best first, one per flat run (its least turn), into
+// scratch.distinct.
+void LocalMaxima(RotationSearchScratch& scratch) {
+  const std::vector<RotationChoice>& grid = scratch.grid;
   const int n = static_cast<int>(grid.size());
-  std::vector<int> maxima;
+  std::vector<int>& maxima = scratch.maxima;
+  maxima.clear();
   for (int k = 0; k < n; ++k) {
     const double u = grid[k].evaluation.trimmed_utility;
     if (u >= grid[(k + n - 1) % n].evaluation.trimmed_utility &&
@@ -58,13 +61,13 @@ std::vector<int> LocalMaxima(const std::vector<RotationChoice>& grid) {
   }
   std::sort(maxima.begin(), maxima.end(),
             [&](int a, int b) { return SortsBefore(grid[a], grid[b]); });
-  std::vector<int> distinct;
+  std::vector<int>& distinct = scratch.distinct;
+  distinct.clear();
   for (int k : maxima) {
     bool seen = false;
     for (int j : distinct) seen = seen || SameFlatRun(grid, j, k);
     if (!seen) distinct.push_back(k);
   }
-  return distinct;
 }
 
 RotationChoice Refine(const RotationObjective& evaluate, RotationChoice best, double step,
@@ -112,15 +115,24 @@ bool BetterRotation(const RotationChoice& a, const RotationChoice& b) {
   return std::abs(a.rotation_rad) < std::abs(b.rotation_rad);
 }
 
-RotationChoice BestRotation(const RotationObjective& evaluate, const RotationSearchParams& params) {
+void RotationSearchScratch::Reserve(const RotationSearchParams& params) {
+  const auto n = static_cast<std::size_t>(GridSize(params));
+  grid.reserve(n);
+  maxima.reserve(n);
+  distinct.reserve(n);
+}
+
+RotationChoice BestRotation(const RotationObjective& evaluate, const RotationSearchParams& params,
+                            RotationSearchScratch& scratch) {
   assert(params.grid_step_rad > 0.0 && params.refine_candidates >= 1);  // Validate() ensures it
   const int n = GridSize(params);
   const double step = 2.0 * kPi / n;
-  std::vector<RotationChoice> grid;
-  grid.reserve(static_cast<std::size_t>(n));
+  std::vector<RotationChoice>& grid = scratch.grid;
+  grid.clear();
   for (int k = -n / 2; k < n / 2; ++k) grid.push_back(At(evaluate, k * step));
 
-  const std::vector<int> maxima = LocalMaxima(grid);
+  LocalMaxima(scratch);
+  const std::vector<int>& maxima = scratch.distinct;
   RotationChoice best = grid[static_cast<std::size_t>(maxima.front())];
   const int candidates = std::min<int>(params.refine_candidates, static_cast<int>(maxima.size()));
   for (int c = 0; c < candidates; ++c) {

@@ -3,7 +3,8 @@
 // With common random numbers the trimmed utility u(rho) is a deterministic, piecewise smooth
 // function of the rotation with jumps where a sample changes category. BestRotation finds its
 // maximum over the whole circle reliably:
-//   1. a grid over [-pi, pi) with step h (rotation_search.grid_step_deg, 10 deg by default),
+//   1. a grid over [-pi, pi) with step h (rotation_search.grid_step_deg, 20 deg in the shipped
+//   files),
 //      which includes rho = 0;
 //   2. compass refinement (steps h/2, h/4, ... for refine_levels levels) from the best
 //      `refine_candidates` local maxima of the grid;
@@ -15,6 +16,7 @@
 
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "models/evaluation_params.h"
 #include "planner/hypothesis.h"
@@ -29,7 +31,22 @@ struct RotationChoice {
 // The evaluation of one kick at a rotation.
 using RotationObjective = std::function<ActionEvaluation(double rotation_rad)>;
 
-RotationChoice BestRotation(const RotationObjective& evaluate, const RotationSearchParams& params);
+// Storage a search reuses between calls: once it holds a search's grid, later searches with the
+// same parameters allocate nothing (a robot's decision cycle must not touch the heap).
+struct RotationSearchScratch {
+  std::vector<RotationChoice> grid;
+  std::vector<int> maxima;
+  std::vector<int> distinct;
+  void Reserve(const RotationSearchParams& params);
+};
+
+RotationChoice BestRotation(const RotationObjective& evaluate, const RotationSearchParams& params,
+                            RotationSearchScratch& scratch);
+inline RotationChoice BestRotation(const RotationObjective& evaluate,
+                                   const RotationSearchParams& params) {
+  RotationSearchScratch scratch;
+  return BestRotation(evaluate, params, scratch);
+}
 
 // Smallest |rho| with rho in direction `sign` (+1 counter-clockwise, -1 clockwise), up to pi,
 // for which `acceptable` holds; nullopt if no rotation in that direction is acceptable.

@@ -37,9 +37,8 @@ ConcreteAction MakeAction(const KickModel& kicks, int kick_index, double rotatio
   action.stream = StreamKey(sample.stream, 0, kActionStreamDomain);
   if (kick_index != kNoKick) {
     const KickSpec& kick = kicks.kicks[static_cast<std::size_t>(kick_index)];
-    action.launch_speed_mps = kick.speed_mps + kick.sigma_speed_mps * sample.z_speed;
-    action.launch_direction_rad =
-        kick.direction_rad + kick.sigma_direction_rad * sample.z_direction;
+    action.launch_speed_mps = LaunchSpeed(kick, sample.z_speed);
+    action.launch_direction_rad = LaunchDirection(kick, sample.z_direction);
   }
   return action;
 }

@@ -33,6 +33,17 @@ DrawnSample DrawSample(const StateEstimate& estimate, std::uint64_t seed, std::u
 void DrawSamples(const StateEstimate& estimate, std::uint64_t seed, int count,
                  std::vector<DrawnSample>& out);
 
+// The drawn launch of `kick` for a sample's standard normals (common random numbers: every kick
+// scales the same z by its own sigmas). T is double or SIMD lanes (planner/lanes.h).
+template <typename T>
+T LaunchSpeed(const KickSpec& kick, T z_speed) {
+  return kick.speed_mps + kick.sigma_speed_mps * z_speed;
+}
+template <typename T>
+T LaunchDirection(const KickSpec& kick, T z_direction) {
+  return kick.direction_rad + kick.sigma_direction_rad * z_direction;
+}
+
 // The concrete action of `kick` (or none, kick_index == kNoKick) turned by rotation_rad, for one
 // sample. Its stream is derived from the sample's, the same for every candidate (common random
 // numbers for simulators that draw more, like physics).

@@ -61,9 +61,9 @@ TEST(EvaluationParamsTest, ShippedSplPotentialIsTheNaothStrategy) {
 
 TEST(EvaluationParamsTest, RotationSearchStepIsConvertedToRadians) {
   const EvaluationParams p = LoadEvaluationParams(ModelsDir() / "evaluation" / "spl.json");
-  EXPECT_NEAR(p.rotation_search.grid_step_rad, 10.0 * kDegToRad, 1e-15);
+  EXPECT_NEAR(p.rotation_search.grid_step_rad, 20.0 * kDegToRad, 1e-15);
   EXPECT_EQ(p.rotation_search.refine_levels, 5);
-  EXPECT_EQ(p.rotation_search.refine_candidates, 3);
+  EXPECT_EQ(p.rotation_search.refine_candidates, 2);
 }
 
 TEST(EvaluationParamsTest, ShippedFourLeggedIsTheSplStrategyScaled) {
@@ -131,7 +131,7 @@ TEST(EvaluationParamsTest, ShareGivenAsStringNamesTheValue) {
 
 TEST(EvaluationParamsTest, TooFineRotationGridIsRejected) {
   const auto file =
-      BrokenSplEvaluation("grid", "\"grid_step_deg\": 10.0", "\"grid_step_deg\": 0.01");
+      BrokenSplEvaluation("grid", "\"grid_step_deg\": 20.0", "\"grid_step_deg\": 0.01");
   const std::string message = LoadError(file);
   EXPECT_THAT(message, StartsWith(file.string() + ": rotation_search.grid_step_deg: must be in ["));
   EXPECT_THAT(message, HasSubstr("got 0.01"));
@@ -140,8 +140,8 @@ TEST(EvaluationParamsTest, TooFineRotationGridIsRejected) {
 TEST(EvaluationParamsTest, MissingRotationSearchIsNamed) {
   const std::string text = ReplaceOnce(
       ShippedText("evaluation/spl.json"),
-      ",\n  \"rotation_search\": {\n    \"grid_step_deg\": 10.0,\n    \"refine_levels\": 5,\n"
-      "    \"refine_candidates\": 3\n  }",
+      ",\n  \"rotation_search\": {\n    \"grid_step_deg\": 20.0,\n    \"refine_levels\": 5,\n"
+      "    \"refine_candidates\": 2\n  }",
       "");
   const auto file = WriteTempFile("evaluation_params_no_search.json", text);
   EXPECT_EQ(LoadError(file), file.string() + ": rotation_search: missing");

@@ -44,6 +44,54 @@ TEST(CoarseActionEvaluatorTest, AgreesWithTheSeamEvaluator) {
   EXPECT_EQ(category_mismatches, 0);
 }
 
+// The SIMD lanes against the scalar reference (one RollBall per sample): the same operations in
+// the same order, so the same bits, over random poses all over the field (posts, nets,
+// obstacles, lines), random turns and sample counts that leave partly filled lanes.
+TEST(CoarseActionEvaluatorTest, LanesGiveTheScalarReferenceBits) {
+  RandomStream rng(StreamKey(47, 0));
+  int goals = 0, outs = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const Situation s = testing::MakeSituation(testing::RandomPose(rng, 4.6, 3.1),
+                                               {{Vec2(3.9, 0.3), 0.15}, {Vec2(-1.0, 1.0), 0.2}});
+    const CoarsePlanner planner(s);
+    const int samples = 1 + trial % 37;
+    CoarseActionEvaluator evaluator = planner.MakeEvaluator(samples, trial);
+    for (int kick = 0; kick < 3; ++kick) {
+      for (int turn = 0; turn < 8; ++turn) {
+        const double rho = 2.0 * kPi * rng.NextUniform() - kPi;
+        const ActionEvaluation lanes = evaluator.Evaluate(kick, rho);
+        const ActionEvaluation reference = evaluator.EvaluateReference(kick, rho);
+        EXPECT_EQ(lanes.counts, reference.counts);
+        EXPECT_EQ(lanes.value_avg, reference.value_avg);  // bitwise
+        EXPECT_EQ(lanes.potential_avg, reference.potential_avg);
+        EXPECT_EQ(lanes.potential_all_avg, reference.potential_all_avg);
+        EXPECT_EQ(lanes.utility, reference.utility);
+        goals += lanes.Count(Category::kOppGoal) + lanes.Count(Category::kOwnGoal);
+        outs += lanes.Count(Category::kOut);
+      }
+    }
+  }
+  EXPECT_GT(goals, 100);  // the poses do reach the goals and the lines
+  EXPECT_GT(outs, 100);
+}
+
+// An evaluator redrawn for another state and seed equals one made for them.
+TEST(CoarseActionEvaluatorTest, RedrawEqualsAFreshEvaluator) {
+  const Situation s = testing::MakeSituation(testing::Uncertain({.x_m = 1.0, .y_m = 0.5}));
+  const CoarsePlanner planner(s);
+  CoarseActionEvaluator reused = planner.MakeEvaluator(40, 3);
+  StateEstimate other = s.state;
+  other.robot = Pose2{Vec2(3.5, -1.5), 0.7};
+  reused.Redraw(other, 17, 11);
+  CoarseActionEvaluator fresh = planner.MakeEvaluator(other, 17, 11);
+  for (int kick = -1; kick < 3; ++kick) {
+    const ActionEvaluation a = reused.Evaluate(kick, 0.3), b = fresh.Evaluate(kick, 0.3);
+    EXPECT_EQ(a.counts, b.counts);
+    EXPECT_EQ(a.utility, b.utility);
+    EXPECT_EQ(a.potential_all_avg, b.potential_all_avg);
+  }
+}
+
 TEST(CoarseActionEvaluatorTest, SearchEvaluationStopsOnlyWhenCertainlyTrimmed) {
   // On the side line the left side kick sends the ball out: the search may stop early, but
   // its verdict equals the full evaluation's.

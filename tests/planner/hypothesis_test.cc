@@ -53,6 +53,17 @@ TEST(HypothesisTest, AllInGoalIsWorthTheGoalValue) {
   EXPECT_EQ(e.value_avg, 0.0);
 }
 
+TEST(HypothesisTest, PotentialMeansOverInfieldAndOverAllSamples) {
+  HypothesisAccumulator h;
+  h.Add(Category::kInfield, 0.5, -1.0);
+  h.Add(Category::kInfield, 0.7, -2.0);
+  h.Add(Category::kOppGoal, 0.0, -3.0);
+  h.Add(Category::kOut, 0.0, 2.0);
+  const ActionEvaluation e = h.Finish(Params());
+  EXPECT_DOUBLE_EQ(e.potential_avg, -1.5);            // infield only
+  EXPECT_DOUBLE_EQ(e.potential_all_avg, -4.0 / 4.0);  // every sample
+}
+
 TEST(HypothesisTest, OutcomeUtilityIsEq5ForOneSample) {
   const EvaluationParams p = Params();
   EXPECT_EQ(OutcomeUtility(Category::kInfield, 0.37, p), 0.37);

@@ -8,10 +8,12 @@
 namespace foresight {
 namespace {
 
-ActionEvaluation Counts(int infield, double potential, int goal, int own, int out) {
+// `potential` at every infield sample's rest position, `goal_potential` at every goal sample's.
+ActionEvaluation Counts(int infield, double potential, int goal, int own, int out,
+                        double value = 0.5, double goal_potential = 0.0) {
   HypothesisAccumulator h;
-  for (int i = 0; i < infield; ++i) h.Add(Category::kInfield, 0.5, potential);
-  for (int i = 0; i < goal; ++i) h.Add(Category::kOppGoal, 0, 0);
+  for (int i = 0; i < infield; ++i) h.Add(Category::kInfield, value, potential);
+  for (int i = 0; i < goal; ++i) h.Add(Category::kOppGoal, 0, goal_potential);
   for (int i = 0; i < own; ++i) h.Add(Category::kOwnGoal, 0, 0);
   for (int i = 0; i < out; ++i) h.Add(Category::kOut, 0, 0);
   return h.Finish(testing::MakeSituation({}).evaluation);
@@ -31,6 +33,22 @@ TEST(NaothRuleTest, MostGoalSamplesWinAboveThePreference) {
   const auto kicks =
       Kicks({Counts(20, -1.0, 10, 0, 0), Counts(18, -1.5, 12, 0, 0), Counts(30, -1.9, 0, 0, 0)});
   EXPECT_EQ(ApplyNaothRule(kRule, kicks, Counts(30, 0.0, 0, 0, 0)).kick_index, 1);
+}
+
+// NaoTH breaks a tie on goal samples by the lowest mean potential over all samples, goal samples
+// included (issue 18), not by the utility and not by the infield samples' potential alone.
+TEST(NaothRuleTest, ATieOnGoalSamplesGoesToTheLowestPotentialOverAllSamples) {
+  // Both kicks: 12 goal samples (40 %), 18 infield. Kick 0 has the higher utility (infield
+  // value 0.9 against 0.5) and the lower infield potential (-1.0 against -0.5), but its goal
+  // samples rest where the potential is high: over all 30 samples kick 0 averages
+  // (18 * -1.0 + 12 * 0.5) / 30 = -0.4 and kick 1 (18 * -0.5 + 12 * -2.0) / 30 = -1.1.
+  const ActionEvaluation kick0 = Counts(18, -1.0, 12, 0, 0, 0.9, 0.5);
+  const ActionEvaluation kick1 = Counts(18, -0.5, 12, 0, 0, 0.5, -2.0);
+  ASSERT_GT(kick0.utility, kick1.utility);
+  ASSERT_LT(kick0.potential_avg, kick1.potential_avg);
+  const ActionEvaluation none = Counts(30, 0.0, 0, 0, 0);
+  EXPECT_EQ(ApplyNaothRule(kRule, Kicks({kick0, kick1}), none).kick_index, 1);
+  EXPECT_EQ(ApplyNaothRule(kRule, Kicks({kick1, kick0}), none).kick_index, 0);  // not the order
 }
 
 TEST(NaothRuleTest, AnOwnGoalOrTooFewAcceptableSamplesDropAKick) {

@@ -1,0 +1,39 @@
+// The coarse ball roll of four samples at once (planner/lanes.h): RollBall's first contact with
+// posts, nets and obstacles, the stop on open carpet, and ClassifyPath's category
+// (planner/ball_roll.h, planner/ray_cast.h, models/field_lines.h), written with the same
+// operations in the same order, so every lane has the scalar code's bits on any instruction set.
+//
+// Branches of the scalar code become selects: every lane computes every case and keeps its
+// own. The goals are the exception: their posts and nets are only tested when the path of some
+// lane passes within a goal's bounding circle (most paths pass none).
+#pragma once
+
+#include "planner/coarse_world.h"
+#include "planner/lanes.h"
+
+namespace foresight {
+
+// Categories in lanes: the values of Category.
+struct RestLanes {
+  Lanes x;
+  Lanes y;
+  LaneMask category;
+};
+
+// Starting points, unit directions (turned), stop distances on open carpet (StopDistance) and,
+// per lane, whether the ball moves at all (launch speed > 0) and the category of its start
+// (ClassifyPosition).
+struct RollLanesInput {
+  Lanes start_x, start_y;
+  Lanes dir_x, dir_y;
+  Lanes stop_m;
+  LaneMask moving;
+  LaneMask start_category;
+};
+
+RestLanes RollLanes(const CoarseWorld& world, const RollLanesInput& in);
+
+// ClassifyPosition (models/field_lines.h) in lanes.
+LaneMask ClassifyPositionLanes(const FieldLines& lines, Lanes x, Lanes y);
+
+}  // namespace foresight
