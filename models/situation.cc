@@ -54,6 +54,43 @@ auto LoadReferenced(const JsonObject& root, std::string_view key, const std::fil
   return load(file);
 }
 
+// The four posts' centres.
+std::vector<Vec2> PostCentres(const GoalSpec& g) {
+  return {Vec2(g.post_centre_x_m, g.post_centre_y_m), Vec2(g.post_centre_x_m, -g.post_centre_y_m),
+          Vec2(-g.post_centre_x_m, g.post_centre_y_m),
+          Vec2(-g.post_centre_x_m, -g.post_centre_y_m)};
+}
+
+// A body of radius_m at p_F must not stand in a post (physics would push it out at once,
+// teleporting the ball a metre in no time; issue 16).
+void RequireClearOfPosts(const FieldSpec& field, const std::string& what, const Vec2& p_F,
+                         double radius_m) {
+  for (const Vec2& post : PostCentres(field.goal)) {
+    if ((p_F - post).norm() < field.goal.post_radius_m + radius_m) {
+      throw InputError(what + ": position " + PointText(p_F) + " overlaps the goal post at " +
+                       PointText(post));
+    }
+  }
+}
+
+// The ball must not start in a goal or in its net: inside the box between the posts' centres
+// and the back net, or within its radius of the side and back nets (the coarse model's net
+// lines).
+void RequireBallOutOfGoals(const FieldSpec& field, const Vec2& p_F) {
+  const GoalSpec& g = field.goal;
+  const double r = field.ball.radius_m;
+  const double ax = std::abs(p_F.x()), ay = std::abs(p_F.y());
+  const double back_x = g.post_centre_x_m + g.net_depth_m;
+  const bool beside_goal = ax > g.post_centre_x_m - r && ax < back_x + r;
+  if (ax > g.post_centre_x_m && ax < back_x && ay < g.post_centre_y_m) {
+    throw InputError("ball: position " + PointText(p_F) + " lies inside a goal");
+  }
+  if ((beside_goal && std::abs(ay - g.post_centre_y_m) < r) ||
+      (ay < g.post_centre_y_m + r && std::abs(ax - back_x) < r)) {
+    throw InputError("ball: position " + PointText(p_F) + " overlaps a goal's net");
+  }
+}
+
 }  // namespace
 
 void Situation::Validate() const {
@@ -83,6 +120,17 @@ void Situation::Validate() const {
     if (gap_m < field.ball.radius_m) {
       throw InputError(at + ": overlaps the ball at " + PointText(ball));
     }
+  }
+}
+
+void Situation::ValidatePlacement() const {
+  RequireClearOfPosts(field, "robot", state.robot.p_F, field.default_obstacle_radius_m);
+  const Vec2 ball = state.MeanBallInField();
+  RequireClearOfPosts(field, "ball", ball, field.ball.radius_m);
+  RequireBallOutOfGoals(field, ball);
+  for (std::size_t i = 0; i < obstacles.size(); ++i) {
+    RequireClearOfPosts(field, "obstacles[" + std::to_string(i) + "]", obstacles[i].p_F,
+                        obstacles[i].radius_m);
   }
 }
 
@@ -129,7 +177,10 @@ Situation LoadSituation(const std::filesystem::path& file, const std::filesystem
         {Vec2(item.Number("x_m"), item.Number("y_m")),
          item.NumberOr("radius_m", situation.field.default_obstacle_radius_m)});
   }
-  WithFile(file.string(), [&] { situation.Validate(); });
+  WithFile(file.string(), [&] {
+    situation.Validate();
+    situation.ValidatePlacement();
+  });
   return situation;
 }
 

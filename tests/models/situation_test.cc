@@ -134,6 +134,44 @@ TEST(SituationTest, ObstacleOverlappingTheBallIsRejected) {
   EXPECT_EQ(LoadError(file), file.string() + ": obstacles[0]: overlaps the ball at (2.65, 0)");
 }
 
+// Issue 16: what physics cannot start from is bad input, named with the position.
+TEST(SituationTest, BallInAPostIsRejected) {
+  // Robot at (4.315, 0.8) facing +x, just clear of the post: the ball 0.15 m ahead lies 6 cm
+  // from the post's centre, closer than the two radii (0.1 m).
+  const auto file = BrokenOpenGoal("ball_in_post", "\"x_m\": 2.5, \"y_m\": 0.0",
+                                   "\"x_m\": 4.315, \"y_m\": 0.8");
+  const std::string message = LoadError(file);
+  EXPECT_THAT(message, StartsWith(file.string() + ": ball: position (4.46"));
+  EXPECT_THAT(message, HasSubstr("overlaps the goal post at (4.525, 0.8)"));
+}
+
+TEST(SituationTest, BallInsideTheGoalIsRejected) {
+  const auto file = BrokenOpenGoal("ball_in_goal", "\"x_m\": 2.5", "\"x_m\": 4.5");
+  EXPECT_EQ(LoadError(file), file.string() + ": ball: position (4.65, 0) lies inside a goal");
+}
+
+TEST(SituationTest, BallInTheBackNetIsRejected) {
+  // The back net's line is at x = 4.525 + 0.5; the ball at 5.04 overlaps it.
+  const auto file = BrokenOpenGoal("ball_in_net", "\"x_m\": 2.5", "\"x_m\": 4.89");
+  EXPECT_EQ(LoadError(file), file.string() + ": ball: position (5.04, 0) overlaps a goal's net");
+}
+
+TEST(SituationTest, RobotStandingInAPostIsRejected) {
+  const auto file = BrokenOpenGoal("robot_in_post", "\"x_m\": 2.5, \"y_m\": 0.0",
+                                   "\"x_m\": 4.45, \"y_m\": -0.75");
+  EXPECT_THAT(LoadError(file), StartsWith(file.string() + ": robot: position (4.45, -0.75) "
+                                                          "overlaps the goal post at (4.525, -0.8)"));
+}
+
+TEST(SituationTest, ObstacleInAPostIsRejected) {
+  const auto file =
+      BrokenOpenGoal("obstacle_in_post", "\"ball\": {",
+                     "\"obstacles\": [{\"x_m\": -4.5, \"y_m\": 0.8}],\n  \"ball\": {");
+  EXPECT_EQ(LoadError(file),
+            file.string() + ": obstacles[0]: position (-4.5, 0.8) overlaps the goal post at "
+                            "(-4.525, 0.8)");
+}
+
 TEST(SituationTest, FieldThatDoesNotExistIsReportedAgainstTheFieldKey) {
   const auto file = BrokenOpenGoal("no_field", "\"field\": \"spl\"", "\"field\": \"spl_2030\"");
   const std::string message = LoadError(file);
