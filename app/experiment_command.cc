@@ -177,6 +177,7 @@ void AddPassing(CLI::App& experiment, PassingOptions& o) {
   cmd->add_flag("--physics", o.physics, "Execute every kick in the Bullet scene");
   cmd->add_option("--physics-file", o.physics_file,
                   "Physics file (default: MODELS/physics/<field>.json)");
+  cmd->add_option("--kicks", o.kicks_file, "AIBO kick model replacing the simulation file's");
   cmd->add_option("--params", o.params, "Experiment file, or a name in MODELS/experiments/")
       ->capture_default_str();
   cmd->add_option("--seed", o.seed, "Random seed")->capture_default_str();
@@ -195,6 +196,7 @@ int RunPassingExperiment(const PassingOptions& o, const std::filesystem::path& m
   if (!o.scenarios.empty()) request.scenarios = ParseSampleCounts("--scenarios", o.scenarios);
   if (!o.trials.empty()) request.trials = ParseCount("--trials", o.trials, 1, 10000000);
   request.mirrored = o.mirror;
+  request.kicks_file = o.kicks_file;
   if (!o.physics && !o.physics_file.empty()) throw InputError("--physics-file needs --physics");
   const PassingSetup setup = LoadPassingSetup(request, models);
   std::unique_ptr<KickExecutor> executor;

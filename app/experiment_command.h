@@ -40,6 +40,7 @@ struct PassingOptions {
   bool mirror = false;
   bool physics = false;
   std::string physics_file;
+  std::string kicks_file;  // replaces the simulation file's kick model
   std::string seed = "1";
   std::string threads = "0";
   std::string out_dir;

@@ -54,8 +54,15 @@ PassingSetup LoadPassingSetup(const PassingRequest& request,
   s.sim = LoadSimulationParams(s.params.simulation, models_dir);
   s.field_file = ResolveModelFile(s.sim.field, DataFolder::kFields, ".", models_dir);
   s.field = LoadFieldSpec(s.field_file);
-  s.kicks_file = ResolveModelFile(s.sim.kicks, DataFolder::kKicks, ".", models_dir);
+  s.kicks_file = request.kicks_file.empty()
+                     ? ResolveModelFile(s.sim.kicks, DataFolder::kKicks, ".", models_dir)
+                     : ResolveModelFile(request.kicks_file.string(), DataFolder::kKicks, ".",
+                                        models_dir);
   s.kicks = LoadKickModel(s.kicks_file);
+  if (!request.kicks_file.empty() && s.kicks.robot != "aibo_ers7") {
+    throw InputError("--kicks: " + s.kicks_file.string() + ": the kick model is for robot '" +
+                     s.kicks.robot + "'; the match plays AIBOs (aibo_ers7)");
+  }
   s.robot = LoadRobotParams(s.sim.robot, models_dir);
   s.config = LoadMatchConfig(request.config, models_dir, s.field, s.sim, s.robot);
   s.reactive = LoadReactiveParams("reactive", models_dir);

@@ -66,6 +66,7 @@ struct PassingRequest {
   std::vector<int> scenarios;  // empty: all of the config's
   int trials = 0;              // 0: the config's default
   bool mirrored = false;
+  std::filesystem::path kicks_file;  // replaces the simulation file's kick model when not empty
 };
 PassingSetup LoadPassingSetup(const PassingRequest& request,
                               const std::filesystem::path& models_dir);

@@ -177,6 +177,28 @@ TEST_F(ExperimentCommandTest, PassingBadScenarioOrParameterFileIsOneLineExitTwoA
   ExpectBadInput({"passing", "--config", "3d", "--out", "out"}, "3d.json");
   ExpectBadInput({"passing", "--config", "dg", "--physics-file", "x.json", "--out", "out"},
                  "--physics-file needs --physics");
+  ExpectBadInput({"passing", "--config", "dg", "--kicks", "nao", "--out", "out"},
+                 "the kick model is for robot 'nao'; the match plays AIBOs");
+}
+
+// --kicks replaces the simulation file's kick model: a stronger forward kick changes the game,
+// and the report names the model used.
+TEST_F(ExperimentCommandTest, PassingKicksOverrideIsPlayed) {
+  nlohmann::json model = nlohmann::json::parse(
+      ReadFile(fs::path(FORESIGHT_TEST_MODELS_DIR) / "kicks" / "aibo_ers7.json"));
+  for (auto& kick : model["kicks"]) {
+    if (kick["name"] == "forward") kick["speed_mps"] = 1.2;
+  }
+  const fs::path kicks = Write("strong.json", model.dump(2));
+  const RunResult base = Experiment(
+      {"passing", "--config", "dg", "--scenarios", "1", "--trials", "20", "--out", "base"});
+  const RunResult r = Experiment({"passing", "--config", "dg", "--scenarios", "1", "--trials",
+                                  "20", "--kicks", kicks.string(), "--out", "strong"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_EQ(base.exit_code, 0) << base.err;
+  EXPECT_NE(ReadFile(work() / "base" / "passing_trials.csv"),
+            ReadFile(work() / "strong" / "passing_trials.csv"));
+  EXPECT_THAT(ReadFile(work() / "strong" / "passing.json"), HasSubstr("strong.json"));
 }
 
 TEST_F(ExperimentCommandTest, PassingWithPhysicsExecutesTheKicksInBullet) {
