@@ -132,6 +132,12 @@ Eigen::Isometry3d ToIsometry(const urdf::Pose& pose, const std::filesystem::path
   for (double v : {p.x, p.y, p.z, r.x, r.y, r.z, r.w}) {
     if (!std::isfinite(v)) Fail(file, element + ": <origin> must be finite");
   }
+  for (double v : {p.x, p.y, p.z}) {
+    if (std::abs(v) > kMaxRobotLengthM) {
+      Fail(file, element + ": <origin> xyz: must be within " + FormatNumber(kMaxRobotLengthM) +
+                     " m, got " + FormatNumber(v));
+    }
+  }
   Eigen::Isometry3d iso = Eigen::Isometry3d::Identity();
   iso.translation() = Eigen::Vector3d(p.x, p.y, p.z);
   iso.linear() = Eigen::Quaterniond(r.w, r.x, r.y, r.z).normalized().toRotationMatrix();
@@ -178,6 +184,10 @@ std::vector<Eigen::Vector3d> ReadMeshVertices(const std::filesystem::path& path,
   if (vertices.empty()) Fail(file, element + ": mesh has no vertices");
   for (const Eigen::Vector3d& v : vertices) {
     if (!v.allFinite()) Fail(file, element + ": mesh has a vertex that is not finite");
+    if (v.cwiseAbs().maxCoeff() > kMaxRobotLengthM) {
+      Fail(file, element + ": mesh has a vertex farther than " + FormatNumber(kMaxRobotLengthM) +
+                     " m from its origin (a unit error?)");
+    }
   }
   return vertices;
 }
@@ -214,16 +224,23 @@ RobotShape ReadShape(const urdf::Collision& collision, const std::filesystem::pa
       shape.kind = RobotShape::Kind::kBox;
       shape.box_size_m = Eigen::Vector3d(dim.x, dim.y, dim.z);
       const std::string element = link_element + ": collision box";
-      Require(file, element, [&] { RequirePositive("size x", dim.x); });
-      Require(file, element, [&] { RequirePositive("size y", dim.y); });
-      Require(file, element, [&] { RequirePositive("size z", dim.z); });
+      Require(file, element, [&] {
+        RequirePositive("size x", dim.x);
+        RequirePositive("size y", dim.y);
+        RequirePositive("size z", dim.z);
+        RequireInRange("size x", dim.x, 0.0, kMaxRobotLengthM);
+        RequireInRange("size y", dim.y, 0.0, kMaxRobotLengthM);
+        RequireInRange("size z", dim.z, 0.0, kMaxRobotLengthM);
+      });
       break;
     }
     case urdf::Geometry::SPHERE:
       shape.kind = RobotShape::Kind::kSphere;
       shape.radius_m = static_cast<const urdf::Sphere&>(geometry).radius;
-      Require(file, link_element + ": collision sphere",
-              [&] { RequirePositive("radius", shape.radius_m); });
+      Require(file, link_element + ": collision sphere", [&] {
+        RequirePositive("radius", shape.radius_m);
+        RequireInRange("radius", shape.radius_m, 0.0, kMaxRobotLengthM);
+      });
       break;
     case urdf::Geometry::CYLINDER: {
       const auto& cylinder = static_cast<const urdf::Cylinder&>(geometry);
@@ -231,8 +248,12 @@ RobotShape ReadShape(const urdf::Collision& collision, const std::filesystem::pa
       shape.radius_m = cylinder.radius;
       shape.length_m = cylinder.length;
       const std::string element = link_element + ": collision cylinder";
-      Require(file, element, [&] { RequirePositive("radius", shape.radius_m); });
-      Require(file, element, [&] { RequirePositive("length", shape.length_m); });
+      Require(file, element, [&] {
+        RequirePositive("radius", shape.radius_m);
+        RequirePositive("length", shape.length_m);
+        RequireInRange("radius", shape.radius_m, 0.0, kMaxRobotLengthM);
+        RequireInRange("length", shape.length_m, 0.0, kMaxRobotLengthM);
+      });
       break;
     }
     case urdf::Geometry::MESH:
@@ -252,7 +273,10 @@ RobotLink ReadLink(const urdf::Link& source, const std::filesystem::path& file) 
   RobotLink link;
   link.name = source.name;
   link.mass_kg = in.mass;
-  Require(file, element, [&] { RequirePositive("mass", in.mass); });
+  Require(file, element, [&] {
+    RequirePositive("mass", in.mass);
+    RequireInRange("mass", in.mass, 0.0, kMaxLinkMassKg);
+  });
   link.pose_L_C = ToIsometry(in.origin, file, element + ": <inertial>");
   Require(file, element, [&] {
     RequirePositive("inertia ixx", in.ixx);
@@ -261,6 +285,9 @@ RobotLink ReadLink(const urdf::Link& source, const std::filesystem::path& file) 
     RequireFinite("inertia ixy", in.ixy);
     RequireFinite("inertia ixz", in.ixz);
     RequireFinite("inertia iyz", in.iyz);
+    RequireInRange("inertia ixx", in.ixx, 0.0, kMaxInertiaKgm2);
+    RequireInRange("inertia iyy", in.iyy, 0.0, kMaxInertiaKgm2);
+    RequireInRange("inertia izz", in.izz, 0.0, kMaxInertiaKgm2);
   });
   link.inertia_C_kgm2 << in.ixx, in.ixy, in.ixz,  //
       in.ixy, in.iyy, in.iyz,                     //
@@ -308,6 +335,10 @@ RobotJoint ReadJoint(const urdf::Joint& source, const std::filesystem::path& fil
     RequireFinite("upper", limits.upper);
     RequirePositive("effort", limits.effort);
     RequirePositive("velocity", limits.velocity);
+    RequireInRange("lower", limits.lower, -kMaxJointAngleRad, kMaxJointAngleRad);
+    RequireInRange("upper", limits.upper, -kMaxJointAngleRad, kMaxJointAngleRad);
+    RequireInRange("effort", limits.effort, 0.0, kMaxJointEffortNm);
+    RequireInRange("velocity", limits.velocity, 0.0, kMaxJointSpeedRadps);
   });
   if (!(limits.lower <= limits.upper)) {
     Fail(file, element + ": <limit>: lower " + FormatNumber(limits.lower) +

@@ -60,9 +60,20 @@ struct RobotModel {
   double TotalMassKg() const;
 };
 
+// Plausibility ranges of a URDF's numbers (issue 16): far beyond any robot that kicks a ball
+// (NAO 5.4 kg and 0.57 m, AIBO 1.6 kg; joint speeds up to 25 rad/s), far below what overflows
+// Bullet or hides a unit error (grams or millimetres read as kilograms or metres). Assumptions.
+inline constexpr double kMaxLinkMassKg = 100.0;
+inline constexpr double kMaxInertiaKgm2 = 100.0;
+inline constexpr double kMaxRobotLengthM = 10.0;  // origins, shape sizes, mesh vertices
+inline constexpr double kMaxJointEffortNm = 10000.0;
+inline constexpr double kMaxJointSpeedRadps = 1000.0;
+inline constexpr double kMaxJointAngleRad = 4.0 * 3.14159265358979323846;  // two turns
+
 // Reads a URDF and the meshes it names (paths relative to the URDF's folder). Throws InputError
 // naming the file and the element for malformed XML, a missing or empty mesh, a link without
-// mass or inertia, a joint type other than revolute or fixed, or a revolute joint without limits.
+// mass or inertia, a joint type other than revolute or fixed, a revolute joint without limits,
+// or a number outside its plausibility range above.
 RobotModel LoadRobotModel(const std::filesystem::path& urdf_file);
 
 }  // namespace foresight

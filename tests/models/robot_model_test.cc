@@ -11,6 +11,8 @@
 #include <tuple>
 #include <vector>
 
+#include "tests/support/temp_files.h"
+
 #include "tests/support/model_test_util.h"
 #include "tests/support/test_situations.h"
 
@@ -301,6 +303,29 @@ TEST(RobotModelTest, LinkWithoutInertialIsRejected) {
 TEST(RobotModelTest, ZeroMassIsRejected) {
   const auto file = TesterUrdf("zero_mass", R"(<mass value="1.5"/>)", R"(<mass value="0"/>)");
   EXPECT_EQ(LoadError(file), file.string() + ": link torso: mass: must be > 0, got 0");
+}
+
+// Issue 16: plausibility ranges (models/robot_model.h), with the value and the range.
+TEST(RobotModelTest, MassInGramsIsRejected) {
+  const auto file = TesterUrdf("mass_grams", R"(<mass value="1.5"/>)", R"(<mass value="1500"/>)");
+  EXPECT_EQ(LoadError(file),
+            file.string() + ": link torso: mass: must be in [0, 100], got 1500");
+}
+
+TEST(RobotModelTest, AbsurdJointSpeedIsRejected) {
+  const std::string urdf = testing::ReadText(TesterUrdf("speed_probe", "", ""));
+  const std::size_t at = urdf.find("velocity=\"");
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t end = urdf.find('"', at + 10);
+  const auto file = TesterUrdf("absurd_speed", urdf.substr(at, end - at + 1),
+                               "velocity=\"1e9\"");
+  EXPECT_THAT(LoadError(file), HasSubstr("<limit>: velocity: must be in [0, 1000], got 1e+09"));
+}
+
+TEST(RobotModelTest, OriginInMillimetresIsRejected) {
+  const auto file = TesterUrdf("origin_mm", R"(<origin xyz="0 0 0.1" rpy="0 0 0"/>)",
+                               R"(<origin xyz="0 0 100" rpy="0 0 0"/>)");
+  EXPECT_THAT(LoadError(file), HasSubstr("<origin> xyz: must be within 10 m, got 100"));
 }
 
 TEST(RobotModelTest, NegativeInertiaDiagonalIsRejected) {
