@@ -54,6 +54,11 @@ double TargetRestitution(const PhysicsScene& scene, ImpactTarget target) {
   return target == ImpactTarget::kPost ? e.post : e.net;
 }
 
+double GapAtPhase(const PhysicsScene& scene, double speed_mps, double phase) {
+  constexpr double kBaseGapM = 0.01;
+  return kBaseGapM + phase * speed_mps * NearTimeStep(scene.params.steps, speed_mps);
+}
+
 ImpactResult FireAt(const PhysicsScene& scene, ImpactTarget target, double speed_mps,
                     double gap_m) {
   const double r = scene.field->ball.radius_m;

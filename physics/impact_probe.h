@@ -32,6 +32,10 @@ struct ImpactResult {
 // The restitution the scene's materials give the ball against `target`.
 double TargetRestitution(const PhysicsScene& scene, ImpactTarget target);
 
+// The start gap that puts the contact at `phase` (in [0, 1)) of the near time step at this speed:
+// 1 cm plus that share of one step's travel.
+double GapAtPhase(const PhysicsScene& scene, double speed_mps, double phase);
+
 ImpactResult FireAt(const PhysicsScene& scene, ImpactTarget target, double speed_mps, double gap_m);
 
 }  // namespace foresight

@@ -119,13 +119,15 @@ bool WithinCarpet(const PhysicsScene& scene, const Vec2& p_F) {
          std::abs(p_F.y()) <= 0.5 * scene.field->carpet_width_m;
 }
 
+double NearTimeStep(const StepParams& steps, double speed_mps) {
+  // Contacts are solved once the ball overlaps (no speculative contacts), so a step may carry it
+  // speed * dt into a post or a net before it bounces.
+  return std::min(steps.near_time_step_s, steps.max_overlap_m / std::max(speed_mps, 1e-9));
+}
+
 double RollTimeStep(const PhysicsScene& scene, const Vec2& p_F, double speed_mps, bool on_carpet) {
   const StepParams& steps = scene.params.steps;
-  // Contacts are solved once the ball overlaps (no speculative contacts), so a step may carry it
-  // speed * dt into a post or a net before it bounces: near them the step keeps that overlap
-  // below max_overlap_m.
-  const double near_step =
-      std::min(steps.near_time_step_s, steps.max_overlap_m / std::max(speed_mps, 1e-9));
+  const double near_step = NearTimeStep(steps, speed_mps);
   if (!on_carpet) return near_step;
   // Within one large step the ball moves speed * dt; keep a ball length of margin on top.
   const double reach = speed_mps * steps.free_time_step_s + 2.0 * scene.field->ball.radius_m;

@@ -52,6 +52,10 @@ PhysicsScene MakePhysicsScene(const FieldSpec& field, const PhysicsParams& param
 // Adds carpet, goals and obstacle robots to a world.
 void AddStatics(BulletWorld& world, const PhysicsScene& scene);
 
+// The step near posts, nets and robots for a ball moving at speed_mps: near_time_step_s, or
+// shorter so that one step carries the ball at most max_overlap_m into what it hits.
+double NearTimeStep(const StepParams& steps, double speed_mps);
+
 // Time step for a ball at p_F moving at speed_mps (3D): small near goals and obstacles (and in
 // the air), and there short enough that the ball overlaps a post or net by at most
 // steps.max_overlap_m before it bounces; large on open carpet.

@@ -75,27 +75,16 @@ CheckResult Run(const FreeRollCheck& c, const CheckSpec& spec, const std::filesy
                         (trial.settled ? "" : ", did not settle"));
 }
 
-// The time step of a ball at this speed near a goal, and the gap that puts its contact at
-// phase k of `phases` within that step.
-double NearStep(const PhysicsParams& params, double speed_mps) {
-  return std::min(params.steps.near_time_step_s, params.steps.max_overlap_m / speed_mps);
-}
-
-double GapAtPhase(const PhysicsParams& params, double speed_mps, int k, int phases) {
-  constexpr double kBaseGapM = 0.01;
-  return kBaseGapM + speed_mps * NearStep(params, speed_mps) * k / phases;
-}
-
 CheckResult Run(const NoTunnellingCheck& c, const CheckSpec& spec,
                 const std::filesystem::path& models, int) {
   const UniformWorld w = LoadUniformWorld(c.field, spec, models);
   const PhysicsScene scene = MakePhysicsScene(w.field, w.params, nullptr, {}, Vec2(0, 0));
   const double v = c.speed_mps;
-  const double step_m = v * NearStep(w.params, v);
+  const double step_m = v * NearTimeStep(w.params.steps, v);
   double deepest = 0.0;
   int untouched = 0;
   for (int k = 0; k < c.phases; ++k) {
-    const ImpactResult r = FireAt(scene, c.target, v, GapAtPhase(w.params, v, k, c.phases));
+    const ImpactResult r = FireAt(scene, c.target, v, GapAtPhase(scene, v, double(k) / c.phases));
     deepest = std::max(deepest, r.penetration_m);
     untouched += r.touched ? 0 : 1;
   }
@@ -121,7 +110,7 @@ CheckResult Run(const ReboundCheck& c, const CheckSpec& spec, const std::filesys
   for (double v : c.speeds_mps) {
     double worst_ratio = e, worst_error = 0.0;
     for (int k = 0; k < c.phases; ++k) {
-      const ImpactResult r = FireAt(scene, c.target, v, GapAtPhase(w.params, v, k, c.phases));
+      const ImpactResult r = FireAt(scene, c.target, v, GapAtPhase(scene, v, double(k) / c.phases));
       const double expected = e * r.approach_mps;
       const double error = std::abs(r.rebound_mps - expected);
       const double allowed = std::max(c.min_error_mps, c.max_error_rel * expected);

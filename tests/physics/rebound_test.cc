@@ -22,12 +22,7 @@ class ReboundTest : public ::testing::TestWithParam<ImpactTarget> {
   std::unique_ptr<testing::PhysicsFixtureData> data_ = testing::LoadPhysicsFixture("spl", true);
   PhysicsScene scene_ = testing::SceneOf(*data_);
 
-  // The gap that puts the contact at `phase` (0..1) of a near step at this speed.
-  double GapAt(double speed_mps, double phase) const {
-    const StepParams& s = data_->params.steps;
-    const double dt = std::min(s.near_time_step_s, s.max_overlap_m / speed_mps);
-    return 0.01 + phase * speed_mps * dt;
-  }
+  double GapAt(double speed_mps, double phase) const { return GapAtPhase(scene_, speed_mps, phase); }
 };
 
 TEST_P(ReboundTest, ReboundIsRestitutionTimesApproachAtEveryPhase) {
