@@ -65,7 +65,7 @@ AttackCoverage MeasureAttackCoverage(const LoadedCaseBase& base, DefendingGoal g
       const Vec2 ball(ball_x, wing * Uniform(rng, region.abs_y_min_m, region.abs_y_max_m));
       const Vec2 t1 = on_field(ball + InDisc(rng, spec.behind_radius_m, true));
       const Vec2 t2 = on_field(ball + InDisc(rng, spec.support_radius_m, false));
-      const auto in = [&](const HomeRegion& h) {
+      const auto in = [&](const FieldBox& h) {
         const double x = Uniform(rng, h.x_min_m, h.x_max_m);
         return Vec2(x, Uniform(rng, h.y_min_m, h.y_max_m));
       };

@@ -26,6 +26,7 @@
 
 #include "cbr/case_base.h"
 #include "cbr/retrieval_params.h"
+#include "models/field_box.h"
 
 namespace foresight {
 
@@ -43,18 +44,13 @@ struct AttackRegion {
 // |y| < 0.5 m, the goalie's).
 std::vector<AttackRegion> AttackRegions();
 
-// A box x in [x_min, x_max], y in [y_min, y_max] for the team defending cyan.
-struct HomeRegion {
-  double x_min_m = 0.0, x_max_m = 0.0, y_min_m = 0.0, y_max_m = 0.0;
-};
-
 // The random attacks: the assumptions listed at the top of this file, as data.
 struct AttackSpec {
   std::vector<AttackRegion> regions = AttackRegions();
   double behind_radius_m = 0.5;   // teammate 1: the half disc behind the ball
   double support_radius_m = 1.5;  // teammate 2: the disc around the ball
-  HomeRegion defender{0.3, 2.0, -1.3, 1.3};
-  HomeRegion goalie{2.05, 2.6, -0.65, 0.65};
+  FieldBox defender{0.3, 2.0, -1.3, 1.3};  // for the team defending cyan
+  FieldBox goalie{2.05, 2.6, -0.65, 0.65};
 };
 
 struct RegionCoverage {

@@ -8,14 +8,6 @@
 
 namespace foresight {
 
-FieldBox ReadFieldBox(const JsonObject& o) {
-  o.RejectUnknownKeys({"x_min_m", "x_max_m", "y_min_m", "y_max_m"});
-  FieldBox r{o.Number("x_min_m"), o.Number("x_max_m"), o.Number("y_min_m"), o.Number("y_max_m")};
-  if (!(r.x_min_m < r.x_max_m)) o.Fail("x_max_m", "must be greater than x_min_m");
-  if (!(r.y_min_m < r.y_max_m)) o.Fail("y_max_m", "must be greater than y_min_m");
-  return r;
-}
-
 namespace {
 
 Pose2 ReadPose(const JsonObject& o) {
@@ -56,10 +48,6 @@ std::string RegionText(const FieldBox& r) {
 }
 
 }  // namespace
-
-Vec2 FieldBox::Clamp(const Vec2& p_F) const {
-  return Vec2(std::clamp(p_F.x(), x_min_m, x_max_m), std::clamp(p_F.y(), y_min_m, y_max_m));
-}
 
 FieldBox PenaltyArea(const FieldSpec& field, const SimulationParams& sim, double sign) {
   const FieldBox area{field.HalfLength() - sim.penalty_area_depth_m, field.HalfLength(),

@@ -19,25 +19,10 @@
 
 #include "common/geometry.h"
 #include "match/match_params.h"
+#include "models/field_box.h"
 #include "models/field_spec.h"
 
 namespace foresight {
-
-// Centre positions x in [x_min, x_max], y in [y_min, y_max] (F).
-struct FieldBox {
-  double x_min_m = 0.0, x_max_m = 0.0, y_min_m = 0.0, y_max_m = 0.0;
-  bool Contains(const Vec2& p_F) const {
-    return p_F.x() >= x_min_m && p_F.x() <= x_max_m && p_F.y() >= y_min_m && p_F.y() <= y_max_m;
-  }
-  Vec2 Clamp(const Vec2& p_F) const;
-  // The box mirrored in the y axis (x negated).
-  FieldBox MirroredX() const { return {-x_max_m, -x_min_m, y_min_m, y_max_m}; }
-};
-
-// Reads {"x_min_m", "x_max_m", "y_min_m", "y_max_m"} (min below max, else an InputError naming
-// the field).
-class JsonObject;
-FieldBox ReadFieldBox(const JsonObject& o);
 
 enum class OpponentRole : std::uint8_t { kGoalie, kDefender };
 

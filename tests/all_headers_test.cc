@@ -70,6 +70,7 @@
 #include "match/robot_motion.h"
 #include "match/trial_result.h"
 #include "models/evaluation_params.h"
+#include "models/field_box.h"
 #include "models/field_lines.h"
 #include "models/field_spec.h"
 #include "models/kick_model.h"
