@@ -7,6 +7,7 @@
 #include "app/passing_physics.h"
 #include "app/report_text.h"
 #include "common/error.h"
+#include "experiments/passing_comparison.h"
 #include "experiments/passing_example.h"
 #include "experiments/passing_figures.h"
 #include "experiments/passing_replay.h"
@@ -185,6 +186,22 @@ void AddPassing(CLI::App& experiment, PassingOptions& o) {
   cmd->add_option("--out", o.out_dir, "Folder for the results")->required();
 }
 
+// One team's report files, named PREFIX.json, PREFIX_trials.csv, ...
+void AddPassingFiles(const std::filesystem::path& dir, const std::string& prefix,
+                     const PassingRun& run, ReportFiles& files) {
+  files.push_back({dir / (prefix + ".json"), PassingJson(run).dump(2) + "\n"});
+  files.push_back({dir / (prefix + "_trials.csv"), PassingTrialsCsv(run)});
+  files.push_back({dir / (prefix + "_events.csv"), PassingEventsCsv(run)});
+  files.push_back({dir / (prefix + "_outcomes.svg"), PassingOutcomesSvg(run)});
+  files.push_back({dir / (prefix + "_possession.svg"), PassingPossessionSvg(run)});
+  files.push_back({dir / (prefix + "_time.svg"), PassingTimeSvg(run)});
+  for (std::size_t i = 0; i < run.result.scenarios.size(); ++i) {
+    const std::string& name = run.result.scenarios[i].name;
+    files.push_back({dir / (prefix + "_example_" + name + ".svg"), PassingExampleSvg(run, i)});
+    files.push_back({dir / (prefix + "_replay_" + name + ".html"), PassingReplayHtml(run, i)});
+  }
+}
+
 int RunPassingExperiment(const PassingOptions& o, const std::filesystem::path& models) {
   const auto start = std::chrono::steady_clock::now();
   const std::uint64_t seed = ParseSeed(o.seed);
@@ -212,38 +229,47 @@ int RunPassingExperiment(const PassingOptions& o, const std::filesystem::path& m
   }
   CheckReportDir(o.out_dir, "--out");
 
-  PassingRun run;
-  run.provenance.version = FORESIGHT_VERSION;
-  run.provenance.seed = seed;
-  run.provenance.inputs = {{"file", DisplayPath(setup.params.file, models)},
-                           {"simulation", DisplayPath(setup.sim.file, models)},
-                           {"field", DisplayPath(setup.field_file, models)},
-                           {"kicks", DisplayPath(setup.kicks_file, models)},
-                           {"config", DisplayPath(setup.config.file, models)},
-                           {"team", setup.team},
-                           {"team_file", DisplayPath(setup.reactive.file, models)},
-                           {"executor", o.physics ? "physics" : "coarse"},
-                           {"mirrored", setup.mirrored ? "yes" : "no"}};
-  if (o.physics) run.provenance.SetInput("physics", physics_file);
-  run.setup = &setup;
-  run.result = RunPassing(setup, *executor, seed, threads, TerminalProgress("passing:", "trials"));
-  run.summaries = SummarisePassing(run.result, setup.params.confidence);
-  run.provenance.run_time_s = SecondsSince(start);
-
   const std::filesystem::path dir(o.out_dir);
-  ReportFiles files = {{dir / "passing.json", PassingJson(run).dump(2) + "\n"},
-                       {dir / "passing_trials.csv", PassingTrialsCsv(run)},
-                       {dir / "passing_events.csv", PassingEventsCsv(run)},
-                       {dir / "passing_outcomes.svg", PassingOutcomesSvg(run)},
-                       {dir / "passing_possession.svg", PassingPossessionSvg(run)},
-                       {dir / "passing_time.svg", PassingTimeSvg(run)}};
-  for (std::size_t i = 0; i < run.result.scenarios.size(); ++i) {
-    files.push_back({dir / ("passing_example_" + run.result.scenarios[i].name + ".svg"),
-                     PassingExampleSvg(run, i)});
-    files.push_back({dir / ("passing_replay_" + run.result.scenarios[i].name + ".html"),
-                     PassingReplayHtml(run, i)});
+  const bool both = setup.teams.size() > 1;
+  ReportFiles files;
+  std::string text;
+  std::vector<PassingRun> runs;
+  for (const std::string& team : setup.teams) {
+    PassingRun run;
+    run.provenance.version = FORESIGHT_VERSION;
+    run.provenance.seed = seed;
+    run.provenance.inputs = {
+        {"file", DisplayPath(setup.params.file, models)},
+        {"simulation", DisplayPath(setup.sim.file, models)},
+        {"field", DisplayPath(setup.field_file, models)},
+        {"kicks", DisplayPath(setup.kicks_file, models)},
+        {"config", DisplayPath(setup.config.file, models)},
+        {"team", team},
+        {"team_file", DisplayPath(team == "cbr" ? setup.cbr.file : setup.reactive.file, models)},
+        {"executor", o.physics ? "physics" : "coarse"},
+        {"mirrored", setup.mirrored ? "yes" : "no"}};
+    if (o.physics) run.provenance.SetInput("physics", physics_file);
+    run.setup = &setup;
+    run.result = RunPassing(setup, team, *executor, seed, threads,
+                            TerminalProgress("passing " + team + ":", "trials"));
+    run.summaries = SummarisePassing(run.result, setup.params.confidence);
+    run.provenance.run_time_s = SecondsSince(start);
+    AddPassingFiles(dir, both ? "passing_" + team : "passing", run, files);
+    text += PassingText(run);
+    runs.push_back(std::move(run));
   }
-  WriteReport(o.out_dir, files, PassingText(run), "passing_outcomes.svg");
+  if (both) {
+    std::vector<std::string> opponents;
+    for (const OpponentSpec& spec : setup.config.opponents) opponents.push_back(spec.name);
+    const PassingComparison comparison =
+        ComparePassing(setup.teams[0], runs[0].result, setup.teams[1], runs[1].result, opponents,
+                       setup.params.confidence);
+    files.push_back({dir / "passing_comparison.json",
+                     PassingComparisonJson(comparison).dump(2) + "\n"});
+    text += PassingComparisonText(comparison);
+  }
+  WriteReport(o.out_dir, files, text,
+              both ? "passing_" + setup.teams[0] + "_outcomes.svg" : "passing_outcomes.svg");
   return 0;
 }
 

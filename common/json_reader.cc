@@ -264,4 +264,13 @@ JsonObject JsonDocument::Root() const {
   return JsonObject(&tree_, origin_, "");
 }
 
+void RequireSources(const JsonObject& root, std::initializer_list<std::string_view> figures) {
+  const JsonObject sources = root.Object("sources");
+  sources.RejectUnknownKeys(figures);
+  for (std::string_view figure : figures) {
+    if (!sources.Has(figure)) sources.Fail(figure, "missing: every figure needs a source");
+    if (sources.String(figure).empty()) sources.Fail(figure, "must not be empty");
+  }
+}
+
 }  // namespace foresight

@@ -81,4 +81,9 @@ class JsonDocument {
   std::string origin_;
 };
 
+// Throws unless `root` has a "sources" object with a non-empty string for every key in
+// `figures` (and nothing else): "FILE: sources.walk_speed_mps: ...". Every number a data file
+// chooses names where it comes from, or "assumption: why".
+void RequireSources(const JsonObject& root, std::initializer_list<std::string_view> figures);
+
 }  // namespace foresight

@@ -1,18 +1,47 @@
 #include "experiments/passing.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "common/checks.h"
 #include "common/error.h"
 #include "common/parallel_for.h"
 #include "common/random.h"
+#include "cbr/cbr_team.h"
 #include "match/opponent_team.h"
 #include "models/model_paths.h"
 
 namespace foresight {
 
 namespace {
-const char* const kTeams = "reactive";
+const char* const kTeams = "reactive, cbr, both";
+
+// Every kick a case names must be one the match's kick model knows.
+void RequireCaseKicks(const LoadedCaseBase& base, const KickModel& kicks,
+                      const std::filesystem::path& kicks_file) {
+  for (const Case& c : base.cases.Defending(DefendingGoal::kCyan)) {
+    for (const CaseTeammate& tm : c.teammates) {
+      for (const CaseAction& a : tm.actions) {
+        if (a.kick.empty() || kicks.Find(a.kick)) continue;
+        throw InputError(kicks_file.string() + ": kicks: no kick '" + a.kick + "', which case " +
+                         c.name + " plays (the model has: " + kicks.Names() + ")");
+      }
+    }
+  }
+}
+
+void LoadCbrTeam(PassingSetup& s, const std::filesystem::path& models_dir) {
+  s.cbr = LoadCbrTeamParams("team", models_dir);
+  s.case_base = LoadCaseBase(DefaultCaseBasePath(models_dir), models_dir);
+  if (s.case_base.rules.field.name != s.field.name) {
+    throw InputError(DefaultCaseBasePath(models_dir).string() + ": field: the cases are for '" +
+                     s.case_base.rules.field.name + "', the match plays on '" + s.field.name +
+                     "'");
+  }
+  s.retrieval = LoadRetrievalParams(ResolveModelFile("retrieval", DataFolder::kCbr, ".", models_dir),
+                                    s.case_base.rules.field);
+  RequireCaseKicks(s.case_base, s.kicks, s.kicks_file);
+}
 }  // namespace
 
 void PassingParams::Validate() const {
@@ -46,7 +75,11 @@ std::string PassingTeamNames() {
 PassingSetup LoadPassingSetup(const PassingRequest& request,
                               const std::filesystem::path& models_dir) {
   PassingSetup s;
-  if (request.team != "reactive") {
+  if (request.team == "both") {
+    s.teams = {"cbr", "reactive"};
+  } else if (request.team == "reactive" || request.team == "cbr") {
+    s.teams = {request.team};
+  } else {
     throw InputError("--team: unknown team '" + request.team + "' (one of: " + kTeams + ")");
   }
   s.team = request.team;
@@ -69,6 +102,7 @@ PassingSetup LoadPassingSetup(const PassingRequest& request,
   // Kick names are checked here, before any work.
   RequireKick(s.kicks, s.config.clear_kick, s.config.file.string(), "clear_kick");
   RequireKick(s.kicks, s.reactive.shoot_kick, s.reactive.file.string(), "shoot_kick");
+  if (request.team != "reactive") LoadCbrTeam(s, models_dir);
   const int count = static_cast<int>(s.config.scenarios.size());
   s.scenarios = request.scenarios;
   if (s.scenarios.empty()) {
@@ -86,6 +120,19 @@ PassingSetup LoadPassingSetup(const PassingRequest& request,
   return s;
 }
 
+CbrTeamSetup CbrSetup(const PassingSetup& setup) {
+  CbrTeamSetup c;
+  c.cases = &setup.case_base.cases;
+  c.skills.team = &setup.cbr;
+  c.skills.retrieval = &setup.retrieval;
+  c.skills.kicks = &setup.kicks;
+  c.skills.aim_tolerance_rad = setup.reactive.aim_tolerance_rad;
+  c.skills.release_after_s = setup.sim.ball_holding_limit_s - setup.robot.kick_launch_s;
+  c.skills.control_step_s = setup.sim.control_step_s;
+  c.skills.release_kick = *setup.kicks.Find(setup.reactive.shoot_kick);
+  return c;
+}
+
 std::uint64_t PassingTrialKey(std::uint64_t seed, int scenario, int trial) {
   return StreamKey(seed,
                    static_cast<std::uint64_t>(scenario) * kTrialsPerScenarioKey +
@@ -93,8 +140,8 @@ std::uint64_t PassingTrialKey(std::uint64_t seed, int scenario, int trial) {
                    kPassingDomain);
 }
 
-PassingResult RunPassing(const PassingSetup& setup, const KickExecutor& executor,
-                         std::uint64_t seed, int threads,
+PassingResult RunPassing(const PassingSetup& setup, const std::string& team,
+                         const KickExecutor& executor, std::uint64_t seed, int threads,
                          const std::function<void(int, int)>& progress) {
   MatchSetup match;
   match.field = &setup.field;
@@ -124,8 +171,11 @@ PassingResult RunPassing(const PassingSetup& setup, const KickExecutor& executor
         const int trial = job % per;
         const Scenario& scenario =
             setup.config.scenarios[static_cast<std::size_t>(st.scenario - 1)];
-        ReactiveTeam attackers(setup.reactive, setup.field, setup.kicks, setup.robot, setup.sim,
-                               static_cast<int>(scenario.attackers.size()));
+        const int n = static_cast<int>(scenario.attackers.size());
+        ReactiveTeam reactive(setup.reactive, setup.field, setup.kicks, setup.robot, setup.sim, n);
+        std::optional<CbrTeam> cbr;
+        if (team == "cbr") cbr.emplace(CbrSetup(setup), reactive, n);
+        TeamPolicy& attackers = cbr ? static_cast<TeamPolicy&>(*cbr) : reactive;
         OpponentTeam opponents(setup.config, setup.kicks, setup.robot, setup.field.ball.radius_m,
                                setup.sim);
         const bool is_example = trial == std::min(setup.params.example_trial, per - 1);

@@ -1,7 +1,7 @@
-// The passing experiment (Ros et al. 2009, sec. 5.2): two attackers played by a team (today the
-// reactive baseline, match/reactive_team.h; the CBR team next) against the opponents of one
-// configuration (DG or 2D) from each of the four scenarios, N trials each, in the match
-// simulator (match/match.h).
+// The passing experiment (Ros et al. 2009, sec. 5.2): two attackers played by a team (the
+// reactive baseline, match/reactive_team.h, or the CBR team, cbr/cbr_team.h, whose default
+// behaviour is the reactive team) against the opponents of one configuration (DG or 2D) from
+// each of the four scenarios, N trials each, in the match simulator (match/match.h).
 //
 // Trial i of scenario s draws everything from StreamKey(seed, s * kTrialsPerScenarioKey + i,
 // kPassingDomain): the key does not depend on the team, so every team meets the same random
@@ -17,6 +17,10 @@
 #include <string>
 #include <vector>
 
+#include "cbr/case_base.h"
+#include "cbr/cbr_team.h"
+#include "cbr/retrieval_params.h"
+#include "cbr/team_params.h"
 #include "match/match.h"
 #include "match/reactive_team.h"
 #include "models/field_spec.h"
@@ -49,8 +53,13 @@ struct PassingSetup {
   std::filesystem::path kicks_file;
   RobotParams robot;
   MatchConfig config;  // mirrored when `mirrored`
-  std::string team;    // "reactive"
+  std::string team;                // as requested: "reactive", "cbr" or "both"
+  std::vector<std::string> teams;  // the teams to play, in report order ("cbr", "reactive")
   ReactiveParams reactive;
+  // The CBR team (loaded when it plays): its parameters, retrieval's and the case base.
+  CbrTeamParams cbr;
+  RetrievalParams retrieval;
+  LoadedCaseBase case_base;
   std::vector<int> scenarios;  // 1-based scenario numbers to play, ascending
   int trials = 0;              // per scenario
   bool mirrored = false;       // the attackers attack the goal at -x
@@ -83,9 +92,14 @@ struct PassingResult {
 
 std::uint64_t PassingTrialKey(std::uint64_t seed, int scenario, int trial);
 
-// Plays every trial with `executor` carrying out the kicks; progress(done, total) counts trials.
-PassingResult RunPassing(const PassingSetup& setup, const KickExecutor& executor,
-                         std::uint64_t seed, int threads,
+// The CBR team's setup from the loaded inputs: the low-level skills are the reactive team's
+// (its aim tolerance) and the match's (the ball-holding rule), as in the paper (sec. 5.3).
+CbrTeamSetup CbrSetup(const PassingSetup& setup);
+
+// Plays every trial with `team` (one of setup.teams) attacking and `executor` carrying out the
+// kicks; progress(done, total) counts trials.
+PassingResult RunPassing(const PassingSetup& setup, const std::string& team,
+                         const KickExecutor& executor, std::uint64_t seed, int threads,
                          const std::function<void(int, int)>& progress = {});
 
 }  // namespace foresight

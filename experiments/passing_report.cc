@@ -33,6 +33,12 @@ std::vector<std::string> OpponentNames(const PassingSetup& setup) {
 
 const std::vector<std::string> kAttackerNames = {"A", "B"};
 
+Json TeamCountersJson(const ScenarioSummary& s) {
+  Json j = Json::object();
+  for (const auto& [name, stat] : s.team_counters) j[name] = StatJson(stat);
+  return j;
+}
+
 Json SummaryJson(const ScenarioSummary& s, const PassingSetup& setup) {
   Json outcomes = Json::object();
   for (int k = 0; k < kTrialOutcomeCount; ++k) {
@@ -63,7 +69,8 @@ Json SummaryJson(const ScenarioSummary& s, const PassingSetup& setup) {
           {"kicks_missed", s.kicks_missed},
           {"kicks_not_settled", s.kicks_not_settled},
           {"time_s", StatJson(s.time_s)},
-          {"time_without_timeouts_s", StatJson(s.time_ended_s)}};
+          {"time_without_timeouts_s", StatJson(s.time_ended_s)},
+          {"team_counters", TeamCountersJson(s)}};
 }
 
 }  // namespace

@@ -68,6 +68,14 @@ ScenarioSummary Summarise(const ScenarioTrials& st, double confidence) {
   for (const MeanStat& b : s.backups) s.backup_share.push_back(total > 0.0 ? b.mean / total : 0.0);
   s.time_s = SummariseValues(times, confidence);
   s.time_ended_s = SummariseValues(times_ended, confidence);
+  if (!st.trials.empty()) {
+    for (std::size_t k = 0; k < st.trials.front().attacker_counters.size(); ++k) {
+      std::vector<double> values;
+      for (const MatchTrialResult& t : st.trials) values.push_back(t.attacker_counters[k].value);
+      s.team_counters.emplace_back(st.trials.front().attacker_counters[k].name,
+                                   SummariseValues(values, confidence));
+    }
+  }
   return s;
 }
 

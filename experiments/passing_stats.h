@@ -8,6 +8,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "experiments/passing.h"
@@ -40,6 +41,9 @@ struct ScenarioSummary {
   int kicks_not_settled = 0;
   MeanStat time_s;
   MeanStat time_ended_s;
+  // The attacking team's own counters (TeamPolicy::Counters, e.g. the CBR team's cases and
+  // aborts), per trial, in the order the team reports them.
+  std::vector<std::pair<std::string, MeanStat>> team_counters;
 };
 
 std::vector<ScenarioSummary> SummarisePassing(const PassingResult& result, double confidence);

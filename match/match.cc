@@ -8,6 +8,7 @@
 #include "match/referee.h"
 #include "match/robot_collisions.h"
 #include "match/robot_motion.h"
+#include "models/walk_command.h"
 
 namespace foresight {
 
@@ -340,7 +341,9 @@ std::optional<TrialOutcome> Match::UpdateTouches() {
 
 MatchTrialResult RunTrial(const MatchSetup& setup, const Scenario& scenario, TeamPolicy& attackers,
                           TeamPolicy& opponents, std::uint64_t trial_key) {
-  return Match(setup, scenario, attackers, opponents, trial_key).Run();
+  MatchTrialResult result = Match(setup, scenario, attackers, opponents, trial_key).Run();
+  result.attacker_counters = attackers.Counters();
+  return result;
 }
 
 }  // namespace foresight

@@ -37,15 +37,6 @@ void SimulationParams::Validate() const {
   RequireInRange("ball_holding_limit_s", ball_holding_limit_s, 0.1, 60.0);
 }
 
-void RequireSources(const JsonObject& root, std::initializer_list<std::string_view> figures) {
-  const JsonObject sources = root.Object("sources");
-  sources.RejectUnknownKeys(figures);
-  for (std::string_view figure : figures) {
-    if (!sources.Has(figure)) sources.Fail(figure, "missing: every figure needs a source");
-    if (sources.String(figure).empty()) sources.Fail(figure, "must not be empty");
-  }
-}
-
 RobotParams LoadRobotParams(const std::string& reference, const std::filesystem::path& models_dir) {
   const std::filesystem::path file =
       ResolveModelFile(reference, DataFolder::kMatch, ".", models_dir);

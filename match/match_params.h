@@ -63,10 +63,6 @@ struct SimulationParams {
   void Validate() const;
 };
 
-// Throws unless `root` has a "sources" object with a non-empty string for every key in
-// `figures` (and nothing else): "FILE: sources.walk_speed_mps: ...".
-void RequireSources(const JsonObject& root, std::initializer_list<std::string_view> figures);
-
 // `reference` is a bare name in MODELS/match/ or a path ending in ".json".
 RobotParams LoadRobotParams(const std::string& reference, const std::filesystem::path& models_dir);
 SimulationParams LoadSimulationParams(const std::string& reference,

@@ -5,6 +5,7 @@
 
 #include "common/error.h"
 #include "match/robot_motion.h"
+#include "models/walk_command.h"
 
 namespace foresight {
 

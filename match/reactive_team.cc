@@ -8,6 +8,7 @@
 #include "common/error.h"
 #include "match/opponent_team.h"
 #include "match/robot_motion.h"
+#include "models/walk_command.h"
 #include "models/model_paths.h"
 #include "planner/ball_roll.h"
 

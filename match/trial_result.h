@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/geometry.h"
+#include "models/team_policy.h"
 
 namespace foresight {
 
@@ -75,6 +76,7 @@ struct MatchTrialResult {
   TrialCounters counters;
   std::vector<MatchEvent> events;
   std::vector<TraceFrame> trace;  // empty unless asked for
+  std::vector<TeamPolicy::Counter> attacker_counters;  // the attackers' policy's own counters
 };
 
 }  // namespace foresight

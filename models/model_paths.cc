@@ -7,7 +7,7 @@
 namespace foresight {
 namespace {
 
-constexpr EnumNames<DataFolder, 13> kFolderNames{{{
+constexpr EnumNames<DataFolder, 14> kFolderNames{{{
     {DataFolder::kFields, "fields"},
     {DataFolder::kKicks, "kicks"},
     {DataFolder::kEvaluation, "evaluation"},
@@ -21,6 +21,7 @@ constexpr EnumNames<DataFolder, 13> kFolderNames{{{
     {DataFolder::kCases, "cases"},
     {DataFolder::kMatch, "match"},
     {DataFolder::kMatchScenarios, "match/scenarios"},
+    {DataFolder::kCbr, "cbr"},
 }}};
 
 }  // namespace

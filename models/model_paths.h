@@ -29,6 +29,7 @@ enum class DataFolder {
   kCases,
   kMatch,           // the match simulator: robot, simulation, configurations, teams
   kMatchScenarios,  // the match scenarios (Ros et al. 2009, Fig. 12)
+  kCbr,             // case retrieval and the CBR team's parameters
 };
 std::string_view DataFolderName(DataFolder folder);  // "fields", "kicks", ...
 

@@ -12,9 +12,11 @@
 // (delivered after a latency, possibly lost).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -31,6 +33,7 @@ struct TeamMessage {
   int kind = 0;
   Vec2 p_F{0.0, 0.0};
   double value = 0.0;
+  std::array<std::int32_t, 4> words{};  // integers the team defines (a cycle, a case, a mapping)
 };
 
 // What one robot knows at one control step. Its own pose and what it is doing are exact; the
@@ -69,6 +72,14 @@ class TeamPolicy {
   // keep state per robot (indexed by perception.self) but must not pass anything between its
   // robots except through messages.
   virtual RobotCommand Decide(const Perception& perception) = 0;
+  // What the team counted about itself during the trial (e.g. the CBR team's cases retrieved
+  // and aborts), read once the trial has ended; the simulator stores them with the trial's
+  // result without knowing what they mean. Names are snake_case and stable.
+  struct Counter {
+    std::string name;
+    double value = 0.0;
+  };
+  virtual std::vector<Counter> Counters() const { return {}; }
 };
 
 }  // namespace foresight

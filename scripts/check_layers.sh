@@ -20,7 +20,7 @@ declare -A may_use=(
   [cbr]="common models planner"
   [match]="common models planner"
   [validation]="common models stats report planner physics"
-  [experiments]="common models stats report planner match"
+  [experiments]="common models stats report planner match cbr"
   [app]="common models stats report planner physics validation experiments cbr match"
   [tools]="common models"
 )

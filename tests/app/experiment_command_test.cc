@@ -172,8 +172,8 @@ TEST_F(ExperimentCommandTest, PassingBadScenarioOrParameterFileIsOneLineExitTwoA
                  "bad_scenario.json: ball.x_m: must be a number");
   ExpectBadInput({"passing", "--config", "dg", "--scenarios", "5", "--out", "out"},
                  "--scenarios: scenario 5 does not exist");
-  ExpectBadInput({"passing", "--config", "dg", "--team", "cbr", "--out", "out"},
-                 "--team: unknown team 'cbr'");
+  ExpectBadInput({"passing", "--config", "dg", "--team", "robots", "--out", "out"},
+                 "--team: unknown team 'robots'");
   ExpectBadInput({"passing", "--config", "3d", "--out", "out"}, "3d.json");
   ExpectBadInput({"passing", "--config", "dg", "--physics-file", "x.json", "--out", "out"},
                  "--physics-file needs --physics");

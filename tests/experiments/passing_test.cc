@@ -32,10 +32,10 @@ std::string Csv(const PassingSetup& setup, const PassingResult& result) {
 TEST(PassingTest, SameBytesWithOneThreadOrTwo) {
   const PassingSetup setup = LoadSetup("2d", 12, false, {3, 4});
   const CoarseKickExecutor executor(setup.field, setup.kicks.rolling_deceleration_mps2);
-  const std::string one = Csv(setup, RunPassing(setup, executor, 3, 1));
-  const std::string two = Csv(setup, RunPassing(setup, executor, 3, 2));
+  const std::string one = Csv(setup, RunPassing(setup, "reactive", executor, 3, 1));
+  const std::string two = Csv(setup, RunPassing(setup, "reactive", executor, 3, 2));
   EXPECT_EQ(one, two);
-  EXPECT_NE(one, Csv(setup, RunPassing(setup, executor, 4, 2)));
+  EXPECT_NE(one, Csv(setup, RunPassing(setup, "reactive", executor, 4, 2)));
 }
 
 TEST(PassingTest, MirroredGameGivesTheSameSharesWithinTheirIntervals) {
@@ -43,8 +43,8 @@ TEST(PassingTest, MirroredGameGivesTheSameSharesWithinTheirIntervals) {
     const PassingSetup plain = LoadSetup(config, 150, false, {});
     const PassingSetup mirror = LoadSetup(config, 150, true, {});
     const CoarseKickExecutor executor(plain.field, plain.kicks.rolling_deceleration_mps2);
-    const auto a = SummarisePassing(RunPassing(plain, executor, 21, 2), 0.95);
-    const auto b = SummarisePassing(RunPassing(mirror, executor, 21, 2), 0.95);
+    const auto a = SummarisePassing(RunPassing(plain, "reactive", executor, 21, 2), 0.95);
+    const auto b = SummarisePassing(RunPassing(mirror, "reactive", executor, 21, 2), 0.95);
     ASSERT_EQ(a.size(), b.size());
     for (std::size_t s = 0; s < a.size(); ++s) {
       for (int k = 0; k < kTrialOutcomeCount; ++k) {
@@ -70,7 +70,7 @@ TEST(PassingTest, MirroredGameGivesTheSameSharesWithinTheirIntervals) {
 TEST(PassingTest, SummaryCountsTheTrials) {
   const PassingSetup setup = LoadSetup("dg", 20, false, {4});
   const CoarseKickExecutor executor(setup.field, setup.kicks.rolling_deceleration_mps2);
-  const PassingResult result = RunPassing(setup, executor, 1, 2);
+  const PassingResult result = RunPassing(setup, "reactive", executor, 1, 2);
   const auto summary = SummarisePassing(result, 0.95);
   ASSERT_EQ(summary.size(), 1u);
   int total = 0, to_goal = 0;

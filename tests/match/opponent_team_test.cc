@@ -9,6 +9,7 @@
 #include "match/match.h"
 #include "match/reactive_team.h"
 #include "match/robot_motion.h"
+#include "models/walk_command.h"
 #include "tests/support/temp_files.h"
 
 namespace foresight {

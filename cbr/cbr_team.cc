@@ -1,0 +1,352 @@
+#include "cbr/cbr_team.h"
+
+#include <limits>
+
+#include "models/walk_command.h"
+
+namespace foresight {
+
+namespace {
+std::size_t At(int i) {
+  return static_cast<std::size_t>(i);
+}
+}  // namespace
+
+std::string_view CbrPhaseName(CbrPhase phase) {
+  switch (phase) {
+    case CbrPhase::kIdle:
+      return "idle";
+    case CbrPhase::kAwaitCase:
+      return "await_case";
+    case CbrPhase::kAdapt:
+      return "adapt";
+    case CbrPhase::kExecute:
+      return "execute";
+    case CbrPhase::kWaitEnd:
+      return "wait_end";
+  }
+  return "?";
+}
+
+CbrTeam::CbrTeam(const CbrTeamSetup& setup, TeamPolicy& default_behaviour, int robots)
+    : setup_(setup), default_(&default_behaviour), robots_(At(robots)) {
+  for (Robot& r : robots_) {
+    // Until a teammate reports, its distance to the ball is unknown: never the closest.
+    r.team.assign(At(robots), TeammateBelief{false, std::numeric_limits<double>::infinity()});
+    r.heard_s.assign(At(robots), 0.0);
+  }
+}
+
+CbrPhase CbrTeam::PhaseOf(int robot) const {
+  return robots_[At(robot)].phase;
+}
+
+int CbrTeam::CycleOf(int robot) const {
+  return robots_[At(robot)].cycle;
+}
+
+std::span<const Case> CbrTeam::CasesFor(const Perception& p) const {
+  return setup_.cases->Defending(p.attack_sign > 0.0 ? DefendingGoal::kCyan
+                                                     : DefendingGoal::kYellow);
+}
+
+RobotCommand CbrTeam::Decide(const Perception& p) {
+  Robot& r = robots_[At(p.self)];
+  Account(r, p);
+  Hear(r, p);
+  RobotCommand command = Act(r, p);
+  if (p.holding_ball && !r.was_holding) r.holding_since_s = p.time_s;
+  r.was_holding = p.holding_ball;
+  const ActionContext& ctx = setup_.skills;
+  if (p.holding_ball && !p.busy && p.time_s - r.holding_since_s >= ctx.release_after_s &&
+      command.kind != CommandKind::kKick) {
+    command = RobotCommand{};
+    command.kind = CommandKind::kKick;
+    command.kick_index = ctx.release_kick;
+  }
+  if (!r.outbox.empty()) {
+    command.message = r.outbox.front();
+    r.outbox.pop_front();
+    r.last_sent_s = p.time_s;
+  } else if (!command.message &&
+             p.time_s - r.last_sent_s >= setup_.skills.team->belief_period_s - 1e-9) {
+    command.message = MakeCbrMessage(CbrMessageKind::kBelief, r.cycle, p.p_F_ball,
+                                     (p.p_F_ball - p.pose.p_F).norm());
+    r.last_sent_s = p.time_s;
+  }
+  return command;
+}
+
+void CbrTeam::Account(Robot& r, const Perception& p) {
+  if (r.last_time_s >= 0.0) phase_time_s_[At(static_cast<int>(r.phase))] += p.time_s - r.last_time_s;
+  r.last_time_s = p.time_s;
+}
+
+void CbrTeam::Hear(Robot& r, const Perception& p) {
+  const CbrTeamParams& params = *setup_.skills.team;
+  for (const TeamMessage& m : p.inbox) {
+    if (m.sender < 0 || m.sender >= static_cast<int>(r.team.size())) continue;
+    r.heard_s[At(m.sender)] = m.sent_time_s;
+    if (IsCbrMessage(m)) r.team[At(m.sender)].ball_distance_m = m.value;
+  }
+  for (std::size_t i = 0; i < r.team.size(); ++i) {
+    r.team[i].present = p.time_s - r.heard_s[i] <= params.presence_timeout_s;
+  }
+  r.team[At(p.self)] = {true, (p.p_F_ball - p.pose.p_F).norm()};
+  for (const TeamMessage& m : p.inbox) {
+    if (IsCbrMessage(m)) HearProtocol(r, p, m);
+  }
+}
+
+void CbrTeam::HearProtocol(Robot& r, const Perception& p, const TeamMessage& m) {
+  const int cycle = m.words[0];
+  if (cycle < r.cycle) return;  // an older cycle's message never revives its case
+  const int from = r.play ? r.play->CaseTeammateOf(m.sender) : -1;
+  switch (*CbrKind(m)) {
+    case CbrMessageKind::kBelief:
+      return;
+    case CbrMessageKind::kCoordinator:
+      if (cycle == r.cycle) return;
+      r.cycle = cycle;
+      r.coordinator = m.words[1];
+      r.play.reset();
+      if (r.coordinator == p.self) {
+        Retrieve(r, p);
+      } else {
+        Enter(r, CbrPhase::kAwaitCase, p.time_s);
+      }
+      return;
+    case CbrMessageKind::kCase:
+      if (cycle == r.cycle && r.phase != CbrPhase::kAwaitCase) return;
+      if (m.words[1] < 0 || m.words[1] >= static_cast<int>(CasesFor(p).size())) return;
+      if (cycle > r.cycle) r.coordinator = m.sender;
+      Adopt(r, p, cycle, m.words[1], UnpackRobots(m.words[2]), m.p_F);
+      return;
+    case CbrMessageKind::kNoCase:
+      r.cycle = cycle;
+      r.play.reset();
+      Enter(r, CbrPhase::kIdle, p.time_s);
+      r.idle_until_s = p.time_s + setup_.skills.team->no_case_retry_s;
+      return;
+    case CbrMessageKind::kArrived:
+      if (cycle == r.cycle && from >= 0) r.arrived[At(from)] = true;
+      return;
+    case CbrMessageKind::kPassed:
+      if (cycle == r.cycle && m.words[1] == p.self) r.progress.pass_heard = true;
+      return;
+    case CbrMessageKind::kDone:
+      if (cycle == r.cycle && from >= 0) r.done[At(from)] = true;
+      return;
+    case CbrMessageKind::kEnd:
+    case CbrMessageKind::kAbort:
+      r.cycle = cycle;
+      r.play.reset();
+      Enter(r, CbrPhase::kIdle, p.time_s);
+      r.idle_until_s = p.time_s;
+      return;
+  }
+}
+
+void CbrTeam::Enter(Robot& r, CbrPhase phase, double time_s) {
+  r.phase = phase;
+  r.phase_since_s = time_s;
+}
+
+void CbrTeam::Send(Robot& r, const Perception& p, CbrMessageKind kind, int word1, int word2) {
+  r.outbox.push_back(MakeCbrMessage(kind, r.cycle, p.p_F_ball, (p.p_F_ball - p.pose.p_F).norm(),
+                                    word1, word2));
+}
+
+void CbrTeam::StartCycle(Robot& r, const Perception& p) {
+  const int coordinator = ChooseCoordinator(r.team, setup_.skills.team->retrievers);
+  if (coordinator < 0) return;  // a retriever's report is due: try again next step
+  ++r.cycle;
+  ++cycles_;
+  r.coordinator = coordinator;
+  r.play.reset();
+  Send(r, p, CbrMessageKind::kCoordinator, coordinator);
+  if (coordinator == p.self) {
+    Retrieve(r, p);
+  } else {
+    Enter(r, CbrPhase::kAwaitCase, p.time_s);
+  }
+}
+
+void CbrTeam::Retrieve(Robot& r, const Perception& p) {
+  Problem problem;
+  problem.p_F_ball = p.p_F_ball;
+  problem.defending = p.attack_sign > 0.0 ? DefendingGoal::kCyan : DefendingGoal::kYellow;
+  for (std::size_t i = 0; i < r.team.size() && problem.teammates.size() < kMaxTeammates; ++i) {
+    if (!r.team[i].present) continue;
+    problem.teammates.push_back(
+        {static_cast<int>(i) + 1, static_cast<int>(i) == p.self ? p.pose : p.teammates[i]});
+  }
+  for (const Pose2& o : p.opponents) problem.opponents.push_back(o.p_F);
+  const std::span<const Case> cases = CasesFor(p);
+  foresight::Retrieve(cases, problem, *setup_.skills.retrieval, &scratch_);
+  if (!scratch_.retrieved) {
+    ++no_case_;
+    Send(r, p, CbrMessageKind::kNoCase);
+    Enter(r, CbrPhase::kIdle, p.time_s);
+    r.idle_until_s = p.time_s + setup_.skills.team->no_case_retry_s;
+    return;
+  }
+  const CaseEvaluation& e = *scratch_.Best();
+  CaseRobots robots{-1, -1, -1, -1};
+  for (int i = 0; i < e.correspondence.count; ++i) {
+    robots[At(i)] = problem.teammates[At(e.correspondence.problem_index[At(i)])].id - 1;
+  }
+  ++retrieved_;
+  ++(e.correspondence.count >= 2 ? cooperative_ : individual_);
+  Send(r, p, CbrMessageKind::kCase, *scratch_.retrieved, PackRobots(robots));
+  Adopt(r, p, r.cycle, *scratch_.retrieved, robots, p.p_F_ball);
+}
+
+void CbrTeam::Adopt(Robot& r, const Perception& p, int cycle, int case_index,
+                    const CaseRobots& robots, const Vec2& p_F_ball) {
+  const Case& c = CasesFor(p)[At(case_index)];
+  r.play = MakeCasePlay(c, case_index, cycle, p_F_ball, robots, *setup_.skills.retrieval);
+  r.cycle = cycle;
+  r.me = r.play->CaseTeammateOf(p.self);
+  r.progress = ActionProgress{};
+  r.arrived = {};
+  r.done = {};
+  r.sent_arrived = false;
+  Enter(r, r.me >= 0 ? CbrPhase::kAdapt : CbrPhase::kWaitEnd, p.time_s);
+}
+
+void CbrTeam::Abort(Robot& r, const Perception& p, AbortReason reason) {
+  // Counted once per cycle: two robots may find the case inapplicable in the same step.
+  if (r.cycle != last_aborted_cycle_) ++aborts_[At(static_cast<int>(reason))];
+  last_aborted_cycle_ = r.cycle;
+  Send(r, p, CbrMessageKind::kAbort, static_cast<int>(reason));
+  r.play.reset();
+  Enter(r, CbrPhase::kIdle, p.time_s);
+  r.idle_until_s = p.time_s;
+}
+
+RobotCommand CbrTeam::Act(Robot& r, const Perception& p) {
+  const CbrTeamParams& params = *setup_.skills.team;
+  if (r.phase == CbrPhase::kIdle && p.time_s >= r.idle_until_s &&
+      Selector(r.team) == p.self && !OpponentHasBall(p, setup_.skills)) {
+    StartCycle(r, p);
+  }
+  if (r.phase == CbrPhase::kAwaitCase && p.time_s - r.phase_since_s > params.await_case_timeout_s) {
+    Enter(r, CbrPhase::kIdle, p.time_s);
+    r.idle_until_s = p.time_s;
+  }
+  switch (r.phase) {
+    case CbrPhase::kIdle:
+    case CbrPhase::kAwaitCase:
+      return Default(p);
+    case CbrPhase::kAdapt:
+      return Adapt(r, p);
+    case CbrPhase::kExecute:
+      return Execute(r, p);
+    case CbrPhase::kWaitEnd:
+      return WaitEnd(r, p);
+  }
+  return Default(p);
+}
+
+RobotCommand CbrTeam::Adapt(Robot& r, const Perception& p) {
+  const ActionContext& ctx = setup_.skills;
+  const CasePlay& play = *r.play;
+  if (p.time_s - r.phase_since_s > ctx.team->adapt_timeout_s) {
+    Abort(r, p, AbortReason::kTimeout);
+  } else if (OpponentHasBall(p, ctx)) {
+    Abort(r, p, AbortReason::kBallLost);
+  } else if (BallLeftScope(play, p, ctx)) {
+    Abort(r, p, AbortReason::kBallMoved);
+  }
+  if (r.phase != CbrPhase::kAdapt) return Default(p);
+  const Vec2 target = play.adapted_F[At(r.me)];
+  // The getter's adapted position is next to the ball (sec. 4.2): holding it is being there.
+  const bool there = (target - p.pose.p_F).norm() <= ctx.team->arrive_tolerance_m ||
+                     (r.me == play.getter && p.holding_ball);
+  if (there && !r.sent_arrived) {
+    r.sent_arrived = true;
+    r.arrived[At(r.me)] = true;
+    Send(r, p, CbrMessageKind::kArrived);
+  }
+  bool ready = play.getter >= 0 && r.arrived[At(play.getter)];
+  if (ctx.team->positioning == Positioning::kIndependent) {
+    for (int i = 0; i < play.TeammateCount(); ++i) ready = ready && r.arrived[At(i)];
+  }
+  // A lost "arrived" must not stall the team: the getter playing the ball shows it too.
+  ready = ready || (p.p_F_ball - play.p_F_ball).norm() > ctx.team->pass_seen_m;
+  if (ready) {
+    Enter(r, CbrPhase::kExecute, p.time_s);
+    return Execute(r, p);
+  }
+  return WalkTowards(p.pose, target, HeadingTowards(p.pose.p_F, p.p_F_ball),
+                     ctx.control_step_s);
+}
+
+RobotCommand CbrTeam::Execute(Robot& r, const Perception& p) {
+  const ActionContext& ctx = setup_.skills;
+  if (p.time_s - r.phase_since_s > ctx.team->execute_timeout_s) {
+    Abort(r, p, AbortReason::kTimeout);
+    return Default(p);
+  }
+  const ActionStep step = StepActions(*r.play, r.me, r.progress, p, ctx);
+  if (step.abort) {
+    Abort(r, p, *step.abort);
+    return Default(p);
+  }
+  if (step.passed_to >= 0) Send(r, p, CbrMessageKind::kPassed, step.passed_to);
+  if (step.finished) {
+    r.done[At(r.me)] = true;
+    Send(r, p, CbrMessageKind::kDone);
+    Enter(r, CbrPhase::kWaitEnd, p.time_s);
+    return WaitEnd(r, p);
+  }
+  return step.command;
+}
+
+RobotCommand CbrTeam::WaitEnd(Robot& r, const Perception& p) {
+  const CbrTeamParams& params = *setup_.skills.team;
+  const CasePlay& play = *r.play;
+  bool all_done = true;
+  for (int i = 0; i < play.TeammateCount(); ++i) all_done = all_done && r.done[At(i)];
+  double limit_s = params.wait_end_timeout_s;
+  if (r.me < 0) limit_s += params.adapt_timeout_s + params.execute_timeout_s;
+  if ((all_done && r.coordinator == p.self) || p.time_s - r.phase_since_s > limit_s) {
+    if (all_done && r.coordinator == p.self) Send(r, p, CbrMessageKind::kEnd);
+    r.play.reset();
+    Enter(r, CbrPhase::kIdle, p.time_s);
+    r.idle_until_s = p.time_s;
+    return Default(p);
+  }
+  if (p.holding_ball) return Default(p);
+  return KeepClose(p, params.keep_close_m, setup_.skills.control_step_s);
+}
+
+RobotCommand CbrTeam::Default(const Perception& p) {
+  default_inbox_.clear();
+  for (const TeamMessage& m : p.inbox) {
+    if (m.kind < kCbrKindBase) default_inbox_.push_back(m);
+  }
+  Perception own = p;
+  own.inbox = default_inbox_;
+  return default_->Decide(own);
+}
+
+std::vector<TeamPolicy::Counter> CbrTeam::Counters() const {
+  std::vector<Counter> c = {{"cycles", static_cast<double>(cycles_)},
+                            {"cases_retrieved", static_cast<double>(retrieved_)},
+                            {"cases_individual", static_cast<double>(individual_)},
+                            {"cases_cooperative", static_cast<double>(cooperative_)},
+                            {"no_case", static_cast<double>(no_case_)}};
+  for (int i = 0; i < kAbortReasonCount; ++i) {
+    c.push_back({"aborts_" + std::string(AbortReasonName(static_cast<AbortReason>(i))),
+                 static_cast<double>(aborts_[At(i)])});
+  }
+  for (int i = 0; i < kCbrPhaseCount; ++i) {
+    c.push_back({"robot_time_" + std::string(CbrPhaseName(static_cast<CbrPhase>(i))) + "_s",
+                 phase_time_s_[At(i)]});
+  }
+  return c;
+}
+
+}  // namespace foresight

@@ -1,0 +1,120 @@
+// The CBR team (Ros et al. 2009, sec. 4): every robot runs the same reasoning on its own
+// perception and the messages it got, and the robots agree through messages only
+// (cbr/team_messages.h):
+//   1. The robot with the lowest id present (cbr/coordination.h) starts a cycle: it names the
+//      retriever closest to the ball the coordinator.
+//   2. The coordinator retrieves a case for the problem it perceives (cbr/retrieval.h: the ball,
+//      the present teammates, the opponents) and sends the case and the correspondence, or
+//      "no case": then everyone plays the default behaviour (the reactive team, sec. 5.1.2) for
+//      no_case_retry_s before the next cycle.
+//   3. Reuse (Fig. 10): the robots of the case ADAPT (walk to their adapted positions; sec. 3.2)
+//      and EXECUTE their actions (cbr/case_actions.h) once the robot that gets the ball is at its
+//      position (dependent positioning) or once all are (independent); robots not in the case, and
+//      those that finished, keep close to the ball without going after it (WAIT END). Each robot
+//      reports DONE; when the coordinator has heard all, it sends END and a new cycle begins.
+//   4. ABORT: a robot of the case that finds it no longer applicable (ball out of the case's
+//      scope while adapting or going for it, ball lost, path blocked) or whose state lasted past
+//      its timeout tells the team; everyone goes back to step 1.
+// Robustness to lost messages (the paper is silent): every waiting state has a timeout, messages
+// of older cycles are ignored, a robot that missed the case plays the default behaviour until a
+// newer cycle reaches it, and a receiver whose pass message was lost sees the pass happen. A
+// robot out of the case waits at most the adapt, execute and wait-end timeouts together; one that
+// finished, the wait-end timeout. At the start every teammate counts as present (the team starts
+// together), until presence_timeout_s passes without a message from it.
+// Decisions where the paper is silent: a robot holding the ball when it has no action for it
+// plays the default behaviour; any robot that has held the ball for release_after_s kicks it
+// with release_kick, whatever its state (the league's holding rule binds both teams); and no
+// cycle starts while an opponent has the ball (its body touches it): the default behaviour
+// fights for it first, since any case would at once be aborted as "ball lost".
+#pragma once
+
+#include <array>
+#include <deque>
+#include <optional>
+#include <vector>
+
+#include "cbr/case_actions.h"
+#include "cbr/case_base.h"
+#include "cbr/coordination.h"
+#include "cbr/retrieval.h"
+
+namespace foresight {
+
+struct CbrTeamSetup {
+  const CaseBase* cases = nullptr;
+  ActionContext skills;  // team, retrieval and kicks parameters, the shared low-level skills
+};
+
+enum class CbrPhase { kIdle, kAwaitCase, kAdapt, kExecute, kWaitEnd };
+inline constexpr int kCbrPhaseCount = 5;
+std::string_view CbrPhaseName(CbrPhase phase);
+
+class CbrTeam final : public TeamPolicy {
+ public:
+  // `default_behaviour` plays a robot whenever the team has no case for it (idle, waiting for a
+  // case); it sees only the messages of kinds below kCbrKindBase.
+  CbrTeam(const CbrTeamSetup& setup, TeamPolicy& default_behaviour, int robots);
+  RobotCommand Decide(const Perception& perception) override;
+  std::vector<Counter> Counters() const override;
+
+  // For tests and reports: where robot `robot` is in the protocol.
+  CbrPhase PhaseOf(int robot) const;
+  int CycleOf(int robot) const;
+
+ private:
+  struct Robot {
+    std::vector<TeammateBelief> team;
+    std::vector<double> heard_s;
+    int cycle = 0;
+    int coordinator = -1;
+    CbrPhase phase = CbrPhase::kIdle;
+    double phase_since_s = 0.0;
+    double idle_until_s = 0.0;
+    double last_time_s = -1.0;
+    double last_sent_s = -1e9;
+    std::optional<CasePlay> play;
+    int me = -1;  // case teammate index, -1 when not in the case
+    ActionProgress progress;
+    std::array<bool, kMaxTeammates> arrived{};
+    std::array<bool, kMaxTeammates> done{};
+    bool sent_arrived = false;
+    bool was_holding = false;
+    double holding_since_s = 0.0;
+    bool executing_started = false;
+    std::deque<TeamMessage> outbox;
+  };
+
+  void Account(Robot& r, const Perception& p);
+  void Hear(Robot& r, const Perception& p);
+  void HearProtocol(Robot& r, const Perception& p, const TeamMessage& m);
+  void Enter(Robot& r, CbrPhase phase, double time_s);
+  void Send(Robot& r, const Perception& p, CbrMessageKind kind, int word1 = 0, int word2 = 0);
+  void StartCycle(Robot& r, const Perception& p);
+  void Retrieve(Robot& r, const Perception& p);
+  void Adopt(Robot& r, const Perception& p, int cycle, int case_index, const CaseRobots& robots,
+             const Vec2& p_F_ball);
+  void Abort(Robot& r, const Perception& p, AbortReason reason);
+  RobotCommand Act(Robot& r, const Perception& p);
+  RobotCommand Adapt(Robot& r, const Perception& p);
+  RobotCommand Execute(Robot& r, const Perception& p);
+  RobotCommand WaitEnd(Robot& r, const Perception& p);
+  RobotCommand Default(const Perception& p);
+  std::span<const Case> CasesFor(const Perception& p) const;
+
+  CbrTeamSetup setup_;
+  TeamPolicy* default_;
+  std::vector<Robot> robots_;
+  RetrievalResult scratch_;
+  std::vector<TeamMessage> default_inbox_;
+  // Counters (the experimenter's instruments, not shared knowledge of the robots).
+  int cycles_ = 0;
+  int retrieved_ = 0;
+  int individual_ = 0;
+  int cooperative_ = 0;
+  int no_case_ = 0;
+  std::array<int, kAbortReasonCount> aborts_{};  // cycles aborted, by the first reason
+  int last_aborted_cycle_ = -1;
+  std::array<double, kCbrPhaseCount> phase_time_s_{};
+};
+
+}  // namespace foresight

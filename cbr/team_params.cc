@@ -1,0 +1,69 @@
+#include "cbr/team_params.h"
+
+#include "common/checks.h"
+#include "common/error.h"
+#include "common/json_reader.h"
+#include "models/model_paths.h"
+
+namespace foresight {
+
+std::string_view PositioningName(Positioning positioning) {
+  return positioning == Positioning::kDependent ? "dependent" : "independent";
+}
+
+void CbrTeamParams::Validate() const {
+  RequireInRange("retrievers", retrievers, 1, 4);
+  RequireInRange("belief_period_s", belief_period_s, 0.01, 10.0);
+  RequireInRange("presence_timeout_s", presence_timeout_s, belief_period_s, 60.0);
+  RequireInRange("await_case_timeout_s", await_case_timeout_s, 0.01, 60.0);
+  RequireInRange("adapt_timeout_s", adapt_timeout_s, 0.1, 600.0);
+  RequireInRange("execute_timeout_s", execute_timeout_s, 0.1, 600.0);
+  RequireInRange("wait_end_timeout_s", wait_end_timeout_s, 0.01, 600.0);
+  RequireInRange("no_case_retry_s", no_case_retry_s, 0.0, 60.0);
+  RequireInRange("arrive_tolerance_m", arrive_tolerance_m, 0.001, 2.0);
+  RequireInRange("ball_lost_margin_m", ball_lost_margin_m, 0.0, 1.0);
+  RequireInRange("pass_seen_m", pass_seen_m, 0.01, 10.0);
+  RequireInRange("keep_close_m", keep_close_m, 0.0, 10.0);
+}
+
+CbrTeamParams LoadCbrTeamParams(const std::string& reference,
+                                const std::filesystem::path& models_dir) {
+  CbrTeamParams p;
+  p.file = ResolveModelFile(reference, DataFolder::kCbr, ".", models_dir);
+  const JsonDocument doc = JsonDocument::Load(p.file);
+  const JsonObject root = doc.Root();
+  root.RejectUnknownKeys({"notes", "sources", "retrievers", "positioning", "belief_period_s",
+                          "presence_timeout_s", "await_case_timeout_s", "adapt_timeout_s",
+                          "execute_timeout_s", "wait_end_timeout_s", "no_case_retry_s",
+                          "arrive_tolerance_m", "ball_lost_margin_m",
+                          "pass_seen_m", "keep_close_m"});
+  RequireSources(root, {"retrievers", "positioning", "belief_period_s", "presence_timeout_s",
+                        "await_case_timeout_s", "adapt_timeout_s", "execute_timeout_s",
+                        "wait_end_timeout_s", "no_case_retry_s", "arrive_tolerance_m",
+                        "ball_lost_margin_m", "pass_seen_m", "keep_close_m"});
+  p.retrievers = root.Integer("retrievers");
+  const std::string positioning = root.String("positioning");
+  if (positioning == "dependent") {
+    p.positioning = Positioning::kDependent;
+  } else if (positioning == "independent") {
+    p.positioning = Positioning::kIndependent;
+  } else {
+    root.Fail("positioning", "must be \"dependent\" or \"independent\", got " +
+                                 QuoteJson(positioning));
+  }
+  p.belief_period_s = root.Number("belief_period_s");
+  p.presence_timeout_s = root.Number("presence_timeout_s");
+  p.await_case_timeout_s = root.Number("await_case_timeout_s");
+  p.adapt_timeout_s = root.Number("adapt_timeout_s");
+  p.execute_timeout_s = root.Number("execute_timeout_s");
+  p.wait_end_timeout_s = root.Number("wait_end_timeout_s");
+  p.no_case_retry_s = root.Number("no_case_retry_s");
+  p.arrive_tolerance_m = root.Number("arrive_tolerance_m");
+  p.ball_lost_margin_m = root.Number("ball_lost_margin_m");
+  p.pass_seen_m = root.Number("pass_seen_m");
+  p.keep_close_m = root.Number("keep_close_m");
+  WithFile(p.file.string(), [&] { p.Validate(); });
+  return p;
+}
+
+}  // namespace foresight

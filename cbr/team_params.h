@@ -1,0 +1,41 @@
+// The parameters of the CBR team's multi-robot reasoning (Ros et al. 2009, sec. 4): how many
+// robots may retrieve, the positioning strategy of the reuse FSM (Fig. 10), and the timeouts and
+// tolerances the paper leaves to the designer. models/cbr/team.json gives each value with its
+// source or "assumption: why" (the file is rejected otherwise).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace foresight {
+
+// Sec. 4.2: dependent (everyone executes once the robot that gets the ball is at its adapted
+// position; the paper's choice) or independent (everyone waits until all are at theirs).
+enum class Positioning { kDependent, kIndependent };
+std::string_view PositioningName(Positioning positioning);
+
+struct CbrTeamParams {
+  std::filesystem::path file;
+  int retrievers = 0;  // k: the robots with the k lowest ids may coordinate (sec. 4.1)
+  Positioning positioning = Positioning::kDependent;
+  double belief_period_s = 0.0;       // how often a robot reports its beliefs (ball, distance)
+  double presence_timeout_s = 0.0;    // a teammate not heard from for this long is not present
+  double await_case_timeout_s = 0.0;  // no case or "no case" this long after a cycle began
+  double adapt_timeout_s = 0.0;       // ADAPT lasts at most this long, then ABORT
+  double execute_timeout_s = 0.0;     // EXECUTE lasts at most this long, then ABORT
+  double wait_end_timeout_s = 0.0;    // WAIT END without the coordinator's end: a new cycle
+  double no_case_retry_s = 0.0;       // after "no case": the default behaviour this long
+  double arrive_tolerance_m = 0.0;    // at an adapted position or target
+  double ball_lost_margin_m = 0.0;    // an opponent's body this close to the ball has it
+  double pass_seen_m = 0.0;           // the ball this far from the passer: the pass was made
+  double keep_close_m = 0.0;          // robots out of the play keep this far from the ball
+
+  void Validate() const;
+};
+
+// `reference`: a bare name in MODELS/cbr/ ("team") or a path ending in ".json".
+CbrTeamParams LoadCbrTeamParams(const std::string& reference,
+                                const std::filesystem::path& models_dir);
+
+}  // namespace foresight

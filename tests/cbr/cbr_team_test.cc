@@ -1,0 +1,237 @@
+// The CBR team's protocol (Ros et al. 2009, sec. 4) on a scripted message bus, without the match
+// simulator: robots stand where the test puts them, messages arrive one control step later
+// (or are dropped), so each rule of cbr/cbr_team.h can be watched in isolation.
+#include "cbr/cbr_team.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <vector>
+
+#include "cbr/retrieval_params.h"
+#include "cbr/team_params.h"
+#include "models/model_paths.h"
+#include "tests/support/temp_files.h"
+
+namespace foresight {
+namespace {
+
+constexpr double kDt = 0.04;
+
+// The default behaviour: stands still and counts how often it played.
+class StandStill final : public TeamPolicy {
+ public:
+  RobotCommand Decide(const Perception&) override {
+    ++calls;
+    return {};
+  }
+  int calls = 0;
+};
+
+struct Sent {
+  int step = 0;
+  TeamMessage message;
+};
+
+class CbrTeamTest : public ::testing::Test {
+ protected:
+  CbrTeamTest()
+      : base_(LoadCaseBase(DefaultCaseBasePath(testing::ModelsDir()), testing::ModelsDir())),
+        team_params_(LoadCbrTeamParams("team", testing::ModelsDir())),
+        retrieval_(LoadRetrievalParams(testing::ModelsDir() / "cbr" / "retrieval.json",
+                                       base_.rules.field)) {
+    poses_ = {Pose2(Vec2(1.0, 0.2), 0.0), Pose2(Vec2(0.2, -1.0), 0.0)};
+  }
+
+  CbrTeam& MakeTeam() {
+    setup_.cases = &base_.cases;
+    setup_.skills.team = &team_params_;
+    setup_.skills.retrieval = &retrieval_;
+    setup_.skills.kicks = &base_.rules.kicks;
+    setup_.skills.aim_tolerance_rad = 10.0 * kDegToRad;
+    setup_.skills.release_after_s = 2.7;
+    setup_.skills.release_kick = 0;
+    setup_.skills.control_step_s = kDt;
+    team_.emplace(setup_, fallback_, 2);
+    return *team_;
+  }
+
+  // Plays `steps` control steps of the robots in `active`.
+  void Run(int steps, const std::vector<int>& active = {0, 1}) {
+    for (int k = 0; k < steps; ++k, ++step_) {
+      std::vector<std::vector<TeamMessage>> inbox(2);
+      for (const Sent& s : sent_) {
+        if (s.step != step_ - 1) continue;
+        for (int r : {0, 1}) {
+          if (r != s.message.sender && !(drop && drop(s.message))) {
+            inbox[static_cast<std::size_t>(r)].push_back(s.message);
+          }
+        }
+      }
+      for (int r : active) {
+        Perception p;
+        p.time_s = step_ * kDt;
+        p.self = r;
+        p.pose = poses_[static_cast<std::size_t>(r)];
+        p.p_F_ball = ball_;
+        p.teammates = poses_;
+        for (const Vec2& o : opponents_) p.opponents.push_back(Pose2(o, kPi));
+        p.inbox = inbox[static_cast<std::size_t>(r)];
+        RobotCommand c = team_->Decide(p);
+        if (c.message) {
+          c.message->sender = r;
+          c.message->sent_time_s = p.time_s;
+          sent_.push_back({step_, *c.message});
+        }
+      }
+    }
+  }
+
+  // The senders of the messages of `kind`, in order.
+  std::vector<int> SendersOf(CbrMessageKind kind) const {
+    std::vector<int> senders;
+    for (const Sent& s : sent_) {
+      if (s.message.kind == static_cast<int>(kind)) senders.push_back(s.message.sender);
+    }
+    return senders;
+  }
+
+  double Counter(const std::string& name) const {
+    for (const TeamPolicy::Counter& c : team_->Counters()) {
+      if (c.name == name) return c.value;
+    }
+    ADD_FAILURE() << "no counter " << name;
+    return -1.0;
+  }
+
+  LoadedCaseBase base_;
+  CbrTeamParams team_params_;
+  RetrievalParams retrieval_;
+  CbrTeamSetup setup_;
+  StandStill fallback_;
+  std::optional<CbrTeam> team_;
+  std::vector<Pose2> poses_;
+  Vec2 ball_{1.3, 0.2};
+  std::vector<Vec2> opponents_;
+  std::vector<Sent> sent_;
+  std::function<bool(const TeamMessage&)> drop;
+  int step_ = 0;
+};
+
+TEST_F(CbrTeamTest, LowestIdChoosesTheClosestRobotWhichRetrievesForTheTeam) {
+  MakeTeam();
+  Run(3);
+  EXPECT_EQ(SendersOf(CbrMessageKind::kCoordinator), std::vector<int>{0});
+  EXPECT_EQ(SendersOf(CbrMessageKind::kCase), std::vector<int>{0});  // robot 0 is closest
+  EXPECT_EQ(Counter("cases_retrieved"), 1.0);
+  EXPECT_EQ(team_->CycleOf(0), 1);
+  EXPECT_EQ(team_->CycleOf(1), 1);  // robot 1 adopted the case
+  EXPECT_NE(team_->PhaseOf(1), CbrPhase::kIdle);
+}
+
+TEST_F(CbrTeamTest, TheSelectorNamesATeammateCloserToTheBall) {
+  std::swap(poses_[0], poses_[1]);  // robot 1 is now next to the ball
+  MakeTeam();
+  Run(4);
+  EXPECT_EQ(SendersOf(CbrMessageKind::kCoordinator), std::vector<int>{0});
+  EXPECT_EQ(SendersOf(CbrMessageKind::kCase), std::vector<int>{1});
+  EXPECT_EQ(team_->CycleOf(0), 1);
+  EXPECT_EQ(team_->CycleOf(1), 1);
+}
+
+TEST_F(CbrTeamTest, OnlyRetrieversCoordinate) {
+  std::swap(poses_[0], poses_[1]);
+  team_params_.retrievers = 1;
+  MakeTeam();
+  Run(4);
+  EXPECT_EQ(SendersOf(CbrMessageKind::kCase), std::vector<int>{0});
+}
+
+TEST_F(CbrTeamTest, ARobotThatLeftIsNoLongerTheSelector) {
+  MakeTeam();
+  // Robot 0 is gone from the start: robot 1 waits for it while it still counts as present...
+  Run(static_cast<int>(0.9 * team_params_.presence_timeout_s / kDt), {1});
+  EXPECT_TRUE(SendersOf(CbrMessageKind::kCoordinator).empty());
+  // ... and then chooses the coordinator itself: itself, the only retriever present.
+  Run(static_cast<int>(0.2 * team_params_.presence_timeout_s / kDt) + 2, {1});
+  EXPECT_EQ(SendersOf(CbrMessageKind::kCoordinator), std::vector<int>{1});
+  EXPECT_EQ(SendersOf(CbrMessageKind::kCase), std::vector<int>{1});
+  EXPECT_NE(team_->PhaseOf(1), CbrPhase::kIdle);
+}
+
+TEST_F(CbrTeamTest, AdaptingPastItsTimeoutAborts) {
+  poses_[0] = Pose2(Vec2(0.6, 0.6), 0.0);  // far from any adapted position, and frozen there
+  MakeTeam();
+  Run(3);
+  ASSERT_EQ(Counter("cases_retrieved"), 1.0);
+  ASSERT_EQ(team_->PhaseOf(0), CbrPhase::kAdapt);
+  Run(static_cast<int>(team_params_.adapt_timeout_s / kDt) - 5);
+  EXPECT_EQ(Counter("aborts_timeout"), 0.0);
+  Run(10);
+  EXPECT_EQ(Counter("aborts_timeout"), 1.0);
+  EXPECT_EQ(SendersOf(CbrMessageKind::kAbort).size(), 1u);
+  EXPECT_GE(team_->CycleOf(0), 2);  // a new cycle began
+}
+
+TEST_F(CbrTeamTest, ABallThatLeftTheCaseScopeAborts) {
+  poses_[0] = Pose2(Vec2(0.6, 0.6), 0.0);
+  MakeTeam();
+  Run(3);
+  ASSERT_EQ(team_->PhaseOf(0), CbrPhase::kAdapt);
+  ball_ += Vec2(0.0, 1.2);  // pushed away by someone
+  Run(1);
+  EXPECT_EQ(Counter("aborts_ball_moved"), 1.0);  // one aborted cycle...
+  EXPECT_EQ(SendersOf(CbrMessageKind::kAbort).size(), 2u);  // ...that both robots saw at once
+}
+
+TEST_F(CbrTeamTest, AnOpponentOnTheBallAbortsAndNoCycleStartsUntilItIsFree) {
+  poses_[0] = Pose2(Vec2(0.6, 0.6), 0.0);
+  MakeTeam();
+  Run(3);
+  ASSERT_EQ(team_->PhaseOf(0), CbrPhase::kAdapt);
+  opponents_ = {ball_ + Vec2(retrieval_.opponent_radius_m + retrieval_.ball_radius_m, 0.0)};
+  Run(1);
+  EXPECT_EQ(Counter("aborts_ball_lost"), 1.0);
+  const int cycle = team_->CycleOf(0);
+  const int played = fallback_.calls;
+  Run(50);
+  EXPECT_EQ(team_->CycleOf(0), cycle);  // the default behaviour fights for the ball
+  EXPECT_GT(fallback_.calls, played);
+  opponents_.clear();
+  Run(3);
+  EXPECT_EQ(team_->CycleOf(0), cycle + 1);
+}
+
+TEST_F(CbrTeamTest, ARobotWhoseMessagesAreAllLostDoesNotStallTheOther) {
+  drop = [](const TeamMessage& m) { return m.sender == 0; };
+  std::swap(poses_[0], poses_[1]);  // robot 1 is closest: robot 0 would name it, but is unheard
+  MakeTeam();
+  Run(static_cast<int>(2.0 * team_params_.presence_timeout_s / kDt));
+  // Robot 1 stops counting robot 0 as present, becomes the selector and plays its own cycles.
+  const std::vector<int> coordinators = SendersOf(CbrMessageKind::kCoordinator);
+  EXPECT_NE(std::find(coordinators.begin(), coordinators.end(), 1), coordinators.end());
+  EXPECT_NE(team_->PhaseOf(1), CbrPhase::kIdle);
+  EXPECT_NE(team_->PhaseOf(1), CbrPhase::kAwaitCase);
+}
+
+TEST_F(CbrTeamTest, MessagesOfAnOlderCycleAreIgnored) {
+  poses_[0] = Pose2(Vec2(0.6, 0.6), 0.0);
+  MakeTeam();
+  Run(6);
+  ASSERT_EQ(team_->CycleOf(1), 1);
+  const TeamMessage old_abort = MakeCbrMessage(CbrMessageKind::kAbort, 0, ball_, 0.0, 0);
+  sent_.push_back({step_ - 1, old_abort});
+  sent_.back().message.sender = 0;
+  const CbrPhase before = team_->PhaseOf(1);
+  Run(1);
+  EXPECT_EQ(team_->PhaseOf(1), before);
+  EXPECT_EQ(team_->CycleOf(1), 1);
+}
+
+TEST(TeamMessagesTest, CorrespondencePacksAndUnpacks) {
+  const CaseRobots robots{1, 0, -1, 3};
+  EXPECT_EQ(UnpackRobots(PackRobots(robots)), robots);
+}
+
+}  // namespace
+}  // namespace foresight
