@@ -184,22 +184,42 @@ void CbrTeam::Retrieve(Robot& r, const Perception& p) {
   for (const Pose2& o : p.opponents) problem.opponents.push_back(o.p_F);
   const std::span<const Case> cases = CasesFor(p);
   foresight::Retrieve(cases, problem, *setup_.skills.retrieval, &scratch_);
-  if (!scratch_.retrieved) {
+  const CaseEvaluation* chosen = ChooseCase(cases, problem);
+  if (chosen == nullptr) {
     ++no_case_;
     Send(r, p, CbrMessageKind::kNoCase);
     Enter(r, CbrPhase::kIdle, p.time_s);
     r.idle_until_s = p.time_s + setup_.skills.team->no_case_retry_s;
     return;
   }
-  const CaseEvaluation& e = *scratch_.Best();
+  const CaseEvaluation& e = *chosen;
   CaseRobots robots{-1, -1, -1, -1};
   for (int i = 0; i < e.correspondence.count; ++i) {
     robots[At(i)] = problem.teammates[At(e.correspondence.problem_index[At(i)])].id - 1;
   }
   ++retrieved_;
   ++(e.correspondence.count >= 2 ? cooperative_ : individual_);
-  Send(r, p, CbrMessageKind::kCase, *scratch_.retrieved, PackRobots(robots));
-  Adopt(r, p, r.cycle, *scratch_.retrieved, robots, p.p_F_ball);
+  Send(r, p, CbrMessageKind::kCase, e.case_index, PackRobots(robots));
+  Adopt(r, p, r.cycle, e.case_index, robots, p.p_F_ball);
+}
+
+const CaseEvaluation* CbrTeam::ChooseCase(std::span<const Case> cases, const Problem& problem) {
+  const PassTimingParams& timing = setup_.skills.team->pass_timing;
+  if (!timing.enabled) return scratch_.Best();
+  // The timing-aware check: the best-ranked candidate whose passes are likely to arrive.
+  for (int index : scratch_.ranking) {
+    const CaseEvaluation& e = *scratch_.Find(index);
+    const CaseBallPath path =
+        BuildBallPath(problem, cases[At(index)],
+                      std::span<const Vec2>(e.correspondence.adapted_F.data(),
+                                            At(e.correspondence.count)),
+                      *setup_.skills.retrieval);
+    if (PassSuccess(path, problem.opponents, *setup_.skills.kicks, timing) >= timing.min_success) {
+      return &e;
+    }
+    ++timing_rejected_;
+  }
+  return nullptr;
 }
 
 void CbrTeam::Adopt(Robot& r, const Perception& p, int cycle, int case_index,
@@ -337,7 +357,8 @@ std::vector<TeamPolicy::Counter> CbrTeam::Counters() const {
                             {"cases_retrieved", static_cast<double>(retrieved_)},
                             {"cases_individual", static_cast<double>(individual_)},
                             {"cases_cooperative", static_cast<double>(cooperative_)},
-                            {"no_case", static_cast<double>(no_case_)}};
+                            {"no_case", static_cast<double>(no_case_)},
+                            {"timing_rejected", static_cast<double>(timing_rejected_)}};
   for (int i = 0; i < kAbortReasonCount; ++i) {
     c.push_back({"aborts_" + std::string(AbortReasonName(static_cast<AbortReason>(i))),
                  static_cast<double>(aborts_[At(i)])});

@@ -4,7 +4,8 @@
 //   1. The robot with the lowest id present (cbr/coordination.h) starts a cycle: it names the
 //      retriever closest to the ball the coordinator.
 //   2. The coordinator retrieves a case for the problem it perceives (cbr/retrieval.h: the ball,
-//      the present teammates, the opponents) and sends the case and the correspondence, or
+//      the present teammates, the opponents; optionally checked by cbr/pass_timing.h) and sends
+//      the case and the correspondence, or
 //      "no case": then everyone plays the default behaviour (the reactive team, sec. 5.1.2) for
 //      no_case_retry_s before the next cycle.
 //   3. Reuse (Fig. 10): the robots of the case ADAPT (walk to their adapted positions; sec. 3.2)
@@ -100,6 +101,9 @@ class CbrTeam final : public TeamPolicy {
   RobotCommand WaitEnd(Robot& r, const Perception& p);
   RobotCommand Default(const Perception& p);
   std::span<const Case> CasesFor(const Perception& p) const;
+  // The retrieved case, or with the timing-aware pass check the best-ranked candidate whose
+  // estimated pass success reaches min_success; nullptr for none.
+  const CaseEvaluation* ChooseCase(std::span<const Case> cases, const Problem& problem);
 
   CbrTeamSetup setup_;
   TeamPolicy* default_;
@@ -112,6 +116,7 @@ class CbrTeam final : public TeamPolicy {
   int individual_ = 0;
   int cooperative_ = 0;
   int no_case_ = 0;
+  int timing_rejected_ = 0;  // candidates the timing-aware pass check turned down
   std::array<int, kAbortReasonCount> aborts_{};  // cycles aborted, by the first reason
   int last_aborted_cycle_ = -1;
   std::array<double, kCbrPhaseCount> phase_time_s_{};

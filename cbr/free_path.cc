@@ -72,6 +72,7 @@ CaseBallPath BuildBallPath(const Problem& problem, const Case& c, std::span<cons
     t.action = a.type;
     t.kicker = robot;
     t.receiver = receiver;
+    t.kick = &a;
     ball = t.end_F;
     if (path.count == kMaxTrajectories) {
       path.overflow = true;

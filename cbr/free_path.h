@@ -60,6 +60,7 @@ struct FuzzyTrajectory {
   ActionType action = ActionType::kKick;  // kKick or kPass
   int kicker = -1;                        // case teammate index
   int receiver = -1;                      // case teammate index for a pass
+  const CaseAction* kick = nullptr;       // the kick or pass action (points into the case)
 };
 
 // mu of sec. 3.3.1 at p_F, and its exponent (y'/rho)^2 (+infinity where mu = 0).

@@ -92,12 +92,13 @@ void Evaluate(const Problem& problem, const Case& c, int index, const RetrievalP
                     std::span<const Vec2>(e.correspondence.adapted_F.data(),
                                           static_cast<std::size_t>(e.correspondence.count)),
                     params);
-  e.path = CheckFreePath(path, problem.opponents, params.thr_trajectory);
+  if (params.free_path) e.path = CheckFreePath(path, problem.opponents, params.thr_trajectory);
   if (!e.path.free) {
     e.verdict = Verdict::kPathBlocked;
     return;
   }
-  e.conditions = OpponentSimilarity(problem, c, params.thr_opponent);
+  e.conditions =
+      params.opponent_similarity ? OpponentSimilarity(problem, c, params.thr_opponent) : 0;
   e.verdict = Verdict::kCandidate;
 }
 

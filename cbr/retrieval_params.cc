@@ -124,7 +124,8 @@ RetrievalParams LoadRetrievalParams(const std::filesystem::path& file, const Fie
   JsonDocument doc = JsonDocument::Load(file);
   JsonObject root = doc.Root();
   root.RejectUnknownKeys({"thr_ball", "thr_cost_m", "thr_trajectory", "thr_opponent", "bands",
-                          "cost", "order", "widths", "width_sigmas", "default_kick", "kicks"});
+                          "cost", "order", "widths", "width_sigmas", "default_kick", "kicks",
+                          "free_path", "opponent_similarity"});
   RetrievalParams p;
   p.thr_ball = root.Number("thr_ball");
   p.thr_cost_m = root.Number("thr_cost_m");
@@ -158,6 +159,8 @@ RetrievalParams LoadRetrievalParams(const std::filesystem::path& file, const Fie
     root.Fail("widths", "must be one of " + kWidthNames.List() + ", got \"" + widths + "\"");
   }
   p.width_sigmas = root.Number("width_sigmas");
+  p.free_path = root.BoolOr("free_path", true);
+  p.opponent_similarity = root.BoolOr("opponent_similarity", true);
   p.goal_x_m = field.HalfLength();
   p.opponent_radius_m = field.default_obstacle_radius_m;
   p.ball_radius_m = field.ball.radius_m;

@@ -76,6 +76,11 @@ struct RetrievalParams {
   double ball_radius_m = 0.042;     // four_legged.json ball.radius_m
   KickTrajectory default_kick{"default"};
   std::vector<KickTrajectory> kicks;
+  // Ablation switches (issue 15; the paper always uses both): without the free-path filter no
+  // case is rejected for an opponent on its ball path; without opponent similarity every
+  // candidate fulfils 0 conditions, so that criterion never decides.
+  bool free_path = true;
+  bool opponent_similarity = true;
 
   // The entry of `kick`, or default_kick.
   const KickTrajectory& TrajectoryFor(std::string_view kick) const;

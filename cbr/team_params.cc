@@ -36,11 +36,12 @@ CbrTeamParams LoadCbrTeamParams(const std::string& reference,
                           "presence_timeout_s", "await_case_timeout_s", "adapt_timeout_s",
                           "execute_timeout_s", "wait_end_timeout_s", "no_case_retry_s",
                           "arrive_tolerance_m", "ball_lost_margin_m",
-                          "pass_seen_m", "keep_close_m"});
+                          "pass_seen_m", "keep_close_m", "pass_timing"});
   RequireSources(root, {"retrievers", "positioning", "belief_period_s", "presence_timeout_s",
                         "await_case_timeout_s", "adapt_timeout_s", "execute_timeout_s",
                         "wait_end_timeout_s", "no_case_retry_s", "arrive_tolerance_m",
-                        "ball_lost_margin_m", "pass_seen_m", "keep_close_m"});
+                        "ball_lost_margin_m", "pass_seen_m", "keep_close_m",
+                        "pass_timing"});
   p.retrievers = root.Integer("retrievers");
   const std::string positioning = root.String("positioning");
   if (positioning == "dependent") {
@@ -62,6 +63,20 @@ CbrTeamParams LoadCbrTeamParams(const std::string& reference,
   p.ball_lost_margin_m = root.Number("ball_lost_margin_m");
   p.pass_seen_m = root.Number("pass_seen_m");
   p.keep_close_m = root.Number("keep_close_m");
+  const JsonObject timing = root.Object("pass_timing");
+  timing.RejectUnknownKeys({"enabled", "reaction_s", "samples", "time_step_s", "min_success"});
+  p.pass_timing.enabled = timing.BoolOr("enabled", false);
+  p.pass_timing.reaction_s = timing.Number("reaction_s");
+  p.pass_timing.time_step_s = timing.Number("time_step_s");
+  p.pass_timing.min_success = timing.Number("min_success");
+  const int samples = timing.Integer("samples");
+  WithFile(p.file.string(), [&] {
+    RequireInRange("pass_timing.samples", samples, 1, 100000);
+    RequireInRange("pass_timing.reaction_s", p.pass_timing.reaction_s, 0.0, 60.0);
+    RequireInRange("pass_timing.time_step_s", p.pass_timing.time_step_s, 0.001, 1.0);
+    RequireInRange("pass_timing.min_success", p.pass_timing.min_success, 0.0, 1.0);
+  });
+  DrawPassSamples(samples, &p.pass_timing);
   WithFile(p.file.string(), [&] { p.Validate(); });
   return p;
 }

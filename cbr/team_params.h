@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 
+#include "cbr/pass_timing.h"
+
 namespace foresight {
 
 // Sec. 4.2: dependent (everyone executes once the robot that gets the ball is at its adapted
@@ -30,6 +32,10 @@ struct CbrTeamParams {
   double ball_lost_margin_m = 0.0;    // an opponent's body this close to the ball has it
   double pass_seen_m = 0.0;           // the ball this far from the passer: the pass was made
   double keep_close_m = 0.0;          // robots out of the play keep this far from the ball
+  // The timing-aware pass check (cbr/pass_timing.h), off in the paper's team. The file gives
+  // enabled, reaction_s, samples, time_step_s and min_success; the walking speeds and reach
+  // are the match's (set by whoever puts the team on a field).
+  PassTimingParams pass_timing;
 
   void Validate() const;
 };

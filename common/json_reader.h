@@ -37,6 +37,7 @@ class JsonObject {
   int Integer(std::string_view key) const;
   std::string String(std::string_view key) const;
   std::string StringOr(std::string_view key, std::string fallback) const;
+  bool BoolOr(std::string_view key, bool fallback) const;  // true or false, nothing else
   JsonObject Object(std::string_view key) const;
   std::vector<JsonObject> ObjectArray(std::string_view key) const;  // empty if the key is absent
   // Arrays of plain values; each item is checked ("FILE: PATH.key[2]: must be a number, ...").

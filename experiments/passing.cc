@@ -41,6 +41,10 @@ void LoadCbrTeam(PassingSetup& s, const std::filesystem::path& models_dir) {
   s.retrieval = LoadRetrievalParams(ResolveModelFile("retrieval", DataFolder::kCbr, ".", models_dir),
                                     s.case_base.rules.field);
   RequireCaseKicks(s.case_base, s.kicks, s.kicks_file);
+  // The timing check judges the match's robots: their walk and their reach.
+  s.cbr.pass_timing.opponent_speed_mps = s.robot.walk_speed_mps;
+  s.cbr.pass_timing.receiver_speed_mps = s.robot.walk_speed_mps;
+  s.cbr.pass_timing.reach_m = s.robot.body_radius_m + s.field.ball.radius_m;
 }
 }  // namespace
 

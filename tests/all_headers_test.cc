@@ -33,6 +33,7 @@
 #include "cbr/free_path.h"
 #include "cbr/gameplay_rules.h"
 #include "cbr/own_situation.h"
+#include "cbr/pass_timing.h"
 #include "cbr/problem.h"
 #include "cbr/retrieval.h"
 #include "cbr/retrieval_params.h"
