@@ -7,6 +7,7 @@
 #include "app/passing_physics.h"
 #include "app/report_text.h"
 #include "common/error.h"
+#include "experiments/passing_ablations.h"
 #include "experiments/passing_comparison.h"
 #include "experiments/passing_example.h"
 #include "experiments/passing_figures.h"
@@ -202,31 +203,63 @@ void AddPassingFiles(const std::filesystem::path& dir, const std::string& prefix
   }
 }
 
-int RunPassingExperiment(const PassingOptions& o, const std::filesystem::path& models) {
-  const auto start = std::chrono::steady_clock::now();
-  const std::uint64_t seed = ParseSeed(o.seed);
-  const int threads = ParseCount("--threads", o.threads, 0, 1024);
+// The inputs of a passing run, loaded and checked, and the executor of its kicks.
+struct PassingInputs {
+  PassingSetup setup;
+  std::unique_ptr<KickExecutor> executor;
+  std::string physics_file;  // empty without --physics
+};
+
+PassingInputs LoadPassingInputs(const PassingOptions& o, const std::string& team,
+                                const std::filesystem::path& models) {
   PassingRequest request;
   request.params = o.params;
   request.config = o.config;
-  request.team = o.team;
+  request.team = team;
   if (!o.scenarios.empty()) request.scenarios = ParseSampleCounts("--scenarios", o.scenarios);
   if (!o.trials.empty()) request.trials = ParseCount("--trials", o.trials, 1, 10000000);
   request.mirrored = o.mirror;
   request.kicks_file = o.kicks_file;
   if (!o.physics && !o.physics_file.empty()) throw InputError("--physics-file needs --physics");
-  const PassingSetup setup = LoadPassingSetup(request, models);
-  std::unique_ptr<KickExecutor> executor;
-  std::string physics_file;
+  PassingInputs in{LoadPassingSetup(request, models), nullptr, ""};
   if (o.physics) {
-    auto physics = std::make_unique<PhysicsKickExecutor>(setup.field, setup.kicks, models,
+    auto physics = std::make_unique<PhysicsKickExecutor>(in.setup.field, in.setup.kicks, models,
                                                          o.physics_file);
-    physics_file = DisplayPath(physics->physics_file(), models);
-    executor = std::move(physics);
+    in.physics_file = DisplayPath(physics->physics_file(), models);
+    in.executor = std::move(physics);
   } else {
-    executor = std::make_unique<CoarseKickExecutor>(setup.field,
-                                                    setup.kicks.rolling_deceleration_mps2);
+    in.executor = std::make_unique<CoarseKickExecutor>(in.setup.field,
+                                                       in.setup.kicks.rolling_deceleration_mps2);
   }
+  return in;
+}
+
+RunProvenance PassingProvenance(const PassingOptions& o, const PassingInputs& in,
+                                const std::string& team, const std::string& team_file,
+                                std::uint64_t seed, const std::filesystem::path& models) {
+  const PassingSetup& setup = in.setup;
+  RunProvenance p;
+  p.version = FORESIGHT_VERSION;
+  p.seed = seed;
+  p.inputs = {{"file", DisplayPath(setup.params.file, models)},
+              {"simulation", DisplayPath(setup.sim.file, models)},
+              {"field", DisplayPath(setup.field_file, models)},
+              {"kicks", DisplayPath(setup.kicks_file, models)},
+              {"config", DisplayPath(setup.config.file, models)},
+              {"team", team},
+              {"team_file", team_file},
+              {"executor", o.physics ? "physics" : "coarse"},
+              {"mirrored", setup.mirrored ? "yes" : "no"}};
+  if (o.physics) p.SetInput("physics", in.physics_file);
+  return p;
+}
+
+int RunPassingExperiment(const PassingOptions& o, const std::filesystem::path& models) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::uint64_t seed = ParseSeed(o.seed);
+  const int threads = ParseCount("--threads", o.threads, 0, 1024);
+  const PassingInputs in = LoadPassingInputs(o, o.team, models);
+  const PassingSetup& setup = in.setup;
   CheckReportDir(o.out_dir, "--out");
 
   const std::filesystem::path dir(o.out_dir);
@@ -236,21 +269,12 @@ int RunPassingExperiment(const PassingOptions& o, const std::filesystem::path& m
   std::vector<PassingRun> runs;
   for (const std::string& team : setup.teams) {
     PassingRun run;
-    run.provenance.version = FORESIGHT_VERSION;
-    run.provenance.seed = seed;
-    run.provenance.inputs = {
-        {"file", DisplayPath(setup.params.file, models)},
-        {"simulation", DisplayPath(setup.sim.file, models)},
-        {"field", DisplayPath(setup.field_file, models)},
-        {"kicks", DisplayPath(setup.kicks_file, models)},
-        {"config", DisplayPath(setup.config.file, models)},
-        {"team", team},
-        {"team_file", DisplayPath(team == "cbr" ? setup.cbr.file : setup.reactive.file, models)},
-        {"executor", o.physics ? "physics" : "coarse"},
-        {"mirrored", setup.mirrored ? "yes" : "no"}};
-    if (o.physics) run.provenance.SetInput("physics", physics_file);
+    run.provenance = PassingProvenance(
+        o, in, team,
+        DisplayPath(team == "cbr" ? setup.cbr.file : setup.reactive.file, models), seed, models);
     run.setup = &setup;
-    run.result = RunPassing(setup, team, *executor, seed, threads,
+    run.team = team;
+    run.result = RunPassing(setup, team, *in.executor, seed, threads,
                             TerminalProgress("passing " + team + ":", "trials"));
     run.summaries = SummarisePassing(run.result, setup.params.confidence);
     run.provenance.run_time_s = SecondsSince(start);
@@ -273,15 +297,59 @@ int RunPassingExperiment(const PassingOptions& o, const std::filesystem::path& m
   return 0;
 }
 
+int RunAblationsExperiment(const PassingOptions& o, const std::filesystem::path& models) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::uint64_t seed = ParseSeed(o.seed);
+  const int threads = ParseCount("--threads", o.threads, 0, 1024);
+  const PassingInputs in = LoadPassingInputs(o, "both", models);
+  std::vector<PassingVariant> variants = LoadPassingVariants(o.variants, models);
+  for (const PassingVariant& v : variants) v.Apply(in.setup);  // every variant valid, before work
+  CheckReportDir(o.out_dir, "--out");
+  AblationRun run = RunAblations(in.setup, std::move(variants), *in.executor, seed, threads,
+                                 TerminalProgress("ablations:", "trials"));
+  run.provenance = PassingProvenance(o, in, "cbr variants",
+                                     DisplayPath(in.setup.cbr.file, models), seed, models);
+  run.provenance.SetInput(
+      "variants",
+      DisplayPath(ResolveModelFile(o.variants, DataFolder::kExperiments, ".", models), models));
+  run.provenance.run_time_s = SecondsSince(start);
+  const std::filesystem::path dir(o.out_dir);
+  const ReportFiles files = {{dir / "ablations.json", AblationsJson(run).dump(2) + "\n"},
+                             {dir / "ablations.csv", AblationsCsv(run)},
+                             {dir / "ablations.svg", AblationsSvg(run)}};
+  WriteReport(o.out_dir, files, AblationsText(run), "ablations.svg");
+  return 0;
+}
+
+void AddAblations(CLI::App& experiment, PassingOptions& o) {
+  CLI::App* cmd = experiment.add_subcommand(
+      "ablations", "The CBR team's variants and the reactive team from the same trial keys");
+  cmd->add_option("--config", o.config, "Opponents: dg, 2d or a configuration file")->required();
+  cmd->add_option("--variants", o.variants,
+                  "Variants file, or a name in MODELS/experiments/")->capture_default_str();
+  cmd->add_option("--scenarios", o.scenarios, "Scenarios, e.g. 1-4 or 3,4 (default: all)");
+  cmd->add_option("--trials", o.trials, "Trials per scenario (default: the configuration's)");
+  cmd->add_flag("--physics", o.physics, "Execute every kick in the Bullet scene");
+  cmd->add_option("--physics-file", o.physics_file,
+                  "Physics file (default: MODELS/physics/<field>.json)");
+  cmd->add_option("--kicks", o.kicks_file, "AIBO kick model replacing the simulation file's");
+  cmd->add_option("--params", o.params, "Experiment file, or a name in MODELS/experiments/")
+      ->capture_default_str();
+  cmd->add_option("--seed", o.seed, "Random seed")->capture_default_str();
+  cmd->add_option("--threads", o.threads, "Worker threads (0: all cores)")->capture_default_str();
+  cmd->add_option("--out", o.out_dir, "Folder for the results")->required();
+}
+
 }  // namespace
 
 void AddExperimentCommand(CLI::App& app, ExperimentOptions& options) {
   CLI::App* experiment =
-      app.add_subcommand("experiment", "The papers' experiments: stability, strategies, passing");
+      app.add_subcommand("experiment", "The papers' experiments: stability, strategies, passing, ablations");
   experiment->require_subcommand(1);
   AddStability(*experiment, options.stability);
   AddStrategies(*experiment, options.strategies);
   AddPassing(*experiment, options.passing);
+  AddAblations(*experiment, options.ablations);
 }
 
 int RunExperimentCommand(const CLI::App& app, const ExperimentOptions& options,
@@ -290,6 +358,9 @@ int RunExperimentCommand(const CLI::App& app, const ExperimentOptions& options,
   const std::filesystem::path models = ModelsFolder(models_dir);
   if (experiment->got_subcommand("stability")) return RunStability(options.stability, models);
   if (experiment->got_subcommand("passing")) return RunPassingExperiment(options.passing, models);
+  if (experiment->got_subcommand("ablations")) {
+    return RunAblationsExperiment(options.ablations, models);
+  }
   return RunStrategiesExperiment(options.strategies, models);
 }
 

@@ -41,6 +41,7 @@ struct PassingOptions {
   bool physics = false;
   std::string physics_file;
   std::string kicks_file;  // replaces the simulation file's kick model
+  std::string variants = "cbr_variants";  // experiment ablations: the CBR team's variants
   std::string seed = "1";
   std::string threads = "0";
   std::string out_dir;
@@ -50,6 +51,7 @@ struct ExperimentOptions {
   StabilityOptions stability;
   StrategiesOptions strategies;
   PassingOptions passing;
+  PassingOptions ablations;  // the same inputs; the team is always the reactive one and the CBR variants
 };
 
 void AddExperimentCommand(CLI::App& app, ExperimentOptions& options);

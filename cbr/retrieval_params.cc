@@ -59,6 +59,18 @@ KickTrajectory ReadKick(const JsonObject& item, std::string name) {
 std::string_view CostFunctionName(CostFunction cost) {
   return kCostNames.Name(cost);
 }
+std::optional<CostFunction> ParseCostFunction(std::string_view name) {
+  return kCostNames.Parse(name);
+}
+std::optional<RankCriterion> ParseRankCriterion(std::string_view name) {
+  return kCriterionNames.Parse(name);
+}
+std::string CostFunctionNames() {
+  return kCostNames.List();
+}
+std::string RankCriterionNames() {
+  return kCriterionNames.List();
+}
 std::string_view RankCriterionName(RankCriterion criterion) {
   return kCriterionNames.Name(criterion);
 }

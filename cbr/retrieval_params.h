@@ -15,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -98,6 +99,10 @@ RetrievalParams LoadRetrievalParams(const std::filesystem::path& file, const Fie
 // Names as the JSON file spells them ("sum", "max_then_sum"; "conditions", "teammates",
 // "band_then_cost"; "data", "kick_model").
 std::string_view CostFunctionName(CostFunction cost);
+std::optional<CostFunction> ParseCostFunction(std::string_view name);
+std::optional<RankCriterion> ParseRankCriterion(std::string_view name);
+std::string CostFunctionNames();   // "sum, max, max_then_sum" for messages
+std::string RankCriterionNames();
 std::string_view RankCriterionName(RankCriterion criterion);
 std::string_view TrajectoryWidthsName(TrajectoryWidths widths);
 

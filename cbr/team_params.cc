@@ -11,6 +11,12 @@ std::string_view PositioningName(Positioning positioning) {
   return positioning == Positioning::kDependent ? "dependent" : "independent";
 }
 
+std::optional<Positioning> ParsePositioning(std::string_view name) {
+  if (name == "dependent") return Positioning::kDependent;
+  if (name == "independent") return Positioning::kIndependent;
+  return std::nullopt;
+}
+
 void CbrTeamParams::Validate() const {
   RequireInRange("retrievers", retrievers, 1, 4);
   RequireInRange("belief_period_s", belief_period_s, 0.01, 10.0);
@@ -44,10 +50,8 @@ CbrTeamParams LoadCbrTeamParams(const std::string& reference,
                         "pass_timing"});
   p.retrievers = root.Integer("retrievers");
   const std::string positioning = root.String("positioning");
-  if (positioning == "dependent") {
-    p.positioning = Positioning::kDependent;
-  } else if (positioning == "independent") {
-    p.positioning = Positioning::kIndependent;
+  if (auto parsed = ParsePositioning(positioning)) {
+    p.positioning = *parsed;
   } else {
     root.Fail("positioning", "must be \"dependent\" or \"independent\", got " +
                                  QuoteJson(positioning));

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -16,6 +17,7 @@ namespace foresight {
 // position; the paper's choice) or independent (everyone waits until all are at theirs).
 enum class Positioning { kDependent, kIndependent };
 std::string_view PositioningName(Positioning positioning);
+std::optional<Positioning> ParsePositioning(std::string_view name);
 
 struct CbrTeamParams {
   std::filesystem::path file;

@@ -57,7 +57,7 @@ void DrawLegend(FieldCanvas& c, const PassingRun& run, const ScenarioTrials& st,
   };
   line("Scenario " + std::to_string(st.scenario) + " (" + st.name + ")",
        "font:bold 14px sans-serif");
-  line(run.setup->team + " vs " + run.setup->config.name);
+  line(run.team + " vs " + run.setup->config.name);
   line(Format("outcome: %s after %.1f s", std::string(TrialOutcomeName(t.outcome)).c_str(),
               t.counters.time_s));
   line(Format("marks every %.0f s", run.setup->params.step_mark_period_s));

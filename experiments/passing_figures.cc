@@ -41,7 +41,7 @@ std::vector<TrialOutcome> ShownOutcomes(const PassingRun& run) {
 }
 
 std::string RunTitle(const PassingRun& run, const std::string& what) {
-  return what + " (" + run.setup->team + " vs " + run.setup->config.name + ", " +
+  return what + " (" + run.team + " vs " + run.setup->config.name + ", " +
          std::to_string(run.setup->trials) + " trials per scenario)";
 }
 

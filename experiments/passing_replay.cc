@@ -146,7 +146,7 @@ std::string PassingReplayHtml(const PassingRun& run, std::size_t index) {
       "border:1px solid #ccc;padding:4px;margin:0}#t{width:700px}</style></head><body>\n";
   if (t == nullptr) return html + "<p>No example trial was recorded.</p></body></html>\n";
   html += Format("<h2>Scenario %d (%s): %s vs %s, trial %d, outcome %s after %.1f s</h2>\n",
-                 st.scenario, st.name.c_str(), setup.team.c_str(), setup.config.name.c_str(),
+                 st.scenario, st.name.c_str(), run.team.c_str(), setup.config.name.c_str(),
                  static_cast<int>(t - st.trials.data()),
                  std::string(TrialOutcomeName(t->outcome)).c_str(), t->counters.time_s);
   html +=

@@ -138,7 +138,7 @@ std::string PassingEventsCsv(const PassingRun& run) {
 std::string PassingText(const PassingRun& run) {
   const PassingSetup& setup = *run.setup;
   std::string text = Format("passing: %s team against %s, %d trials per scenario%s\n",
-                            setup.team.c_str(), setup.config.name.c_str(), setup.trials,
+                            run.team.c_str(), setup.config.name.c_str(), setup.trials,
                             setup.mirrored ? " (mirrored: attacking -x)" : "");
   text +=
       "scenario  goal close block  out  p.area timeout | to goal | possession (per opp.) | time "

@@ -18,6 +18,7 @@ struct PassingRun {
   // "team", "executor" ("coarse"), "mirrored".
   RunProvenance provenance;
   const PassingSetup* setup = nullptr;
+  std::string team = "reactive";  // the team these trials were played by (one of setup->teams)
   PassingResult result;
   std::vector<ScenarioSummary> summaries;
 };
