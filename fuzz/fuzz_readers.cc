@@ -9,7 +9,7 @@
 // physics, robot (robot.json), motion (kick motion), urdf, mesh (OBJ referenced by a fixed URDF),
 // fidelity_set, check_spec, stability, strategies, observed_kicks (CSV), case, problem,
 // case_base (settings file), retrieval, match_robot, match_simulation, match_config,
-// match_scenario (inside a fixed configuration), reactive, passing.
+// match_scenario (inside a fixed configuration), reactive, passing, cbr_team, cbr_variants.
 #include <unistd.h>
 
 #include <cstddef>
@@ -27,9 +27,11 @@
 #include "cbr/case_file.h"
 #include "cbr/problem.h"
 #include "cbr/retrieval_params.h"
+#include "cbr/team_params.h"
 #include "common/error.h"
 #include "experiments/experiment_params.h"
 #include "experiments/passing.h"
+#include "experiments/passing_variants.h"
 #include "match/match_config.h"
 #include "match/match_params.h"
 #include "match/reactive_team.h"
@@ -153,6 +155,10 @@ const std::map<std::string, Reader>& Readers() {
        [](auto d, auto n) { LoadReactiveParams(Write("re.json", d, n).string(), models); }},
       {"passing",
        [](auto d, auto n) { LoadPassingParams(Write("pa.json", d, n).string(), models); }},
+      {"cbr_team",
+       [](auto d, auto n) { LoadCbrTeamParams(Write("ct.json", d, n).string(), models); }},
+      {"cbr_variants",
+       [](auto d, auto n) { LoadPassingVariants(Write("cv.json", d, n).string(), models); }},
   };
   return readers;
 }

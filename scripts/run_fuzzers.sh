@@ -35,6 +35,8 @@ declare -A seeds=(
   [match_scenario]="$m/match/scenarios/*.json"
   [reactive]="$m/match/reactive.json"
   [passing]="$m/experiments/passing.json"
+  [cbr_team]="$m/cbr/team.json"
+  [cbr_variants]="$m/experiments/cbr_variants.json"
 )
 mkdir -p "$build/findings"
 failed=0

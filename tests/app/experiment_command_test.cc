@@ -226,3 +226,39 @@ TEST_F(ExperimentCommandTest, OutBlockedByAFileFailsBeforeTheWork) {
 }
 
 }  // namespace
+
+namespace {
+
+// --team both: both teams' reports and the paired comparison, which names the teams.
+TEST_F(ExperimentCommandTest, PassingBothTeamsWritesEachReportAndThePairedComparison) {
+  const RunResult r = Experiment({"passing", "--config", "dg", "--team", "both", "--scenarios",
+                                  "1", "--trials", "6", "--out", "both"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* f : {"passing_cbr.json", "passing_reactive.json", "passing_cbr_trials.csv",
+                        "passing_reactive_replay_dg_1.html", "passing_comparison.json"}) {
+    EXPECT_TRUE(fs::exists(work() / "both" / f)) << f;
+  }
+  const nlohmann::json c = nlohmann::json::parse(ReadFile(work() / "both" / "passing_comparison.json"));
+  EXPECT_EQ(c["first"], "cbr");
+  EXPECT_EQ(c["second"], "reactive");
+  EXPECT_TRUE(c["scenarios"][0]["measures"].contains("to_goal"));
+  const nlohmann::json cbr = nlohmann::json::parse(ReadFile(work() / "both" / "passing_cbr.json"));
+  EXPECT_EQ(cbr["params"]["team"], "cbr");
+  EXPECT_GT(cbr["scenarios"][0]["team_counters"]["cases_retrieved"]["mean"].get<double>(), 0.0);
+}
+
+TEST_F(ExperimentCommandTest, AblationsPlayEveryVariantAndRejectABadVariantsFile) {
+  const RunResult r = Experiment({"ablations", "--config", "dg", "--scenarios", "4", "--trials",
+                                  "3", "--out", "abl"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(ReadFile(work() / "abl" / "ablations.json"));
+  EXPECT_EQ(j["variants"].size(), 12u);
+  EXPECT_EQ(j["variants"][0]["name"], "paper");
+  EXPECT_TRUE(fs::exists(work() / "abl" / "ablations.svg"));
+  const fs::path bad = Write("variants.json",
+                             R"({"variants": [{"name": "a", "simulation": {"message_loss_rate": 2}}]})");
+  ExpectBadInput({"ablations", "--config", "dg", "--variants", bad.string(), "--out", "out"},
+                 bad.string() + ": variants[0].simulation.message_loss_rate: must be within [0, 1]");
+}
+
+}  // namespace
