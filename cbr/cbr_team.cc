@@ -46,12 +46,16 @@ int CbrTeam::CycleOf(int robot) const {
 }
 
 std::span<const Case> CbrTeam::CasesFor(const Perception& p) const {
-  return setup_.cases->Defending(p.attack_sign > 0.0 ? DefendingGoal::kCyan
-                                                     : DefendingGoal::kYellow);
+  return setup_.cases->Defending(DefendingOf(p));
+}
+
+DefendingGoal CbrTeam::DefendingOf(const Perception& p) {
+  return p.attack_sign > 0.0 ? DefendingGoal::kCyan : DefendingGoal::kYellow;
 }
 
 RobotCommand CbrTeam::Decide(const Perception& p) {
   Robot& r = robots_[At(p.self)];
+  defending_ = DefendingOf(p);
   Account(r, p);
   Hear(r, p);
   RobotCommand command = Act(r, p);
@@ -175,7 +179,7 @@ void CbrTeam::StartCycle(Robot& r, const Perception& p) {
 void CbrTeam::Retrieve(Robot& r, const Perception& p) {
   Problem problem;
   problem.p_F_ball = p.p_F_ball;
-  problem.defending = p.attack_sign > 0.0 ? DefendingGoal::kCyan : DefendingGoal::kYellow;
+  problem.defending = DefendingOf(p);
   for (std::size_t i = 0; i < r.team.size() && problem.teammates.size() < kMaxTeammates; ++i) {
     if (!r.team[i].present) continue;
     problem.teammates.push_back(
@@ -350,6 +354,28 @@ RobotCommand CbrTeam::Default(const Perception& p) {
   Perception own = p;
   own.inbox = default_inbox_;
   return default_->Decide(own);
+}
+
+std::string CbrTeam::MessageName(const TeamMessage& m) const {
+  const auto kind = CbrKind(m);
+  if (!kind) return default_->MessageName(m);
+  std::string name = "cbr " + std::string(CbrMessageKindName(*kind)) + " cycle " +
+                     std::to_string(m.words[0]);
+  switch (*kind) {
+    case CbrMessageKind::kCoordinator:
+    case CbrMessageKind::kPassed:
+      return name + " robot " + std::to_string(m.words[1]);
+    case CbrMessageKind::kCase: {
+      const auto cases = setup_.cases->Defending(defending_);
+      if (m.words[1] < 0 || m.words[1] >= static_cast<int>(cases.size())) return name;
+      return name + " " + cases[At(m.words[1])].name;
+    }
+    case CbrMessageKind::kAbort:
+      if (m.words[1] < 0 || m.words[1] >= kAbortReasonCount) return name;
+      return name + " " + std::string(AbortReasonName(static_cast<AbortReason>(m.words[1])));
+    default:
+      return name;
+  }
 }
 
 std::vector<TeamPolicy::Counter> CbrTeam::Counters() const {

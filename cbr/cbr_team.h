@@ -57,6 +57,9 @@ class CbrTeam final : public TeamPolicy {
   CbrTeam(const CbrTeamSetup& setup, TeamPolicy& default_behaviour, int robots);
   RobotCommand Decide(const Perception& perception) override;
   std::vector<Counter> Counters() const override;
+  // "cbr case 12 front_pass_dg/mirror_y", "cbr abort ball_lost", ...; the default behaviour's
+  // messages by their kind.
+  std::string MessageName(const TeamMessage& message) const override;
 
   // For tests and reports: where robot `robot` is in the protocol.
   CbrPhase PhaseOf(int robot) const;
@@ -101,12 +104,14 @@ class CbrTeam final : public TeamPolicy {
   RobotCommand WaitEnd(Robot& r, const Perception& p);
   RobotCommand Default(const Perception& p);
   std::span<const Case> CasesFor(const Perception& p) const;
+  static DefendingGoal DefendingOf(const Perception& p);
   // The retrieved case, or with the timing-aware pass check the best-ranked candidate whose
   // estimated pass success reaches min_success; nullptr for none.
   const CaseEvaluation* ChooseCase(std::span<const Case> cases, const Problem& problem);
 
   CbrTeamSetup setup_;
   TeamPolicy* default_;
+  DefendingGoal defending_ = DefendingGoal::kCyan;  // the goal the team defends (for names)
   std::vector<Robot> robots_;
   RetrievalResult scratch_;
   std::vector<TeamMessage> default_inbox_;

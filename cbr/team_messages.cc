@@ -21,6 +21,12 @@ std::string_view AbortReasonName(AbortReason reason) {
   return "?";
 }
 
+std::string_view CbrMessageKindName(CbrMessageKind kind) {
+  constexpr std::string_view kNames[] = {"belief", "coordinator", "case", "no_case", "arrived",
+                                         "passed", "done",        "end",  "abort"};
+  return kNames[static_cast<int>(kind) - kCbrKindBase];
+}
+
 bool IsCbrMessage(const TeamMessage& message) {
   return message.kind >= kCbrKindBase && message.kind <= kLastKind;
 }

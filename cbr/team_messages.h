@@ -37,6 +37,7 @@ enum class CbrMessageKind {
 enum class AbortReason { kTimeout, kBallMoved, kPathBlocked, kBallLost };
 inline constexpr int kAbortReasonCount = 4;
 std::string_view AbortReasonName(AbortReason reason);
+std::string_view CbrMessageKindName(CbrMessageKind kind);  // "belief", "coordinator", "case", ...
 
 bool IsCbrMessage(const TeamMessage& message);
 std::optional<CbrMessageKind> CbrKind(const TeamMessage& message);

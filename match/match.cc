@@ -163,12 +163,13 @@ class Match {
     const RobotState& r = world_.robots[static_cast<std::size_t>(robot)];
     message.sender = r.index;
     message.sent_time_s = world_.time_s;
+    const std::string name = policies_[r.side == Side::kAttackers ? 0 : 1]->MessageName(message);
     if (s_.sim->message_loss_rate > 0.0 && rng_.NextUniform() < s_.sim->message_loss_rate) {
-      Event(EventKind::kMessageLost, robot, std::to_string(message.kind));
+      Event(EventKind::kMessageLost, robot, name);
       return;
     }
     world_.messages.push_back({world_.time_s + s_.sim->message_latency_s, r.side, message});
-    Event(EventKind::kMessage, robot, std::to_string(message.kind));
+    Event(EventKind::kMessage, robot, name);
   }
 
   bool InGrabReach(const RobotState& r) const {

@@ -80,6 +80,10 @@ class TeamPolicy {
     double value = 0.0;
   };
   virtual std::vector<Counter> Counters() const { return {}; }
+  // How the event log names a message of this team (default: its kind as a number).
+  virtual std::string MessageName(const TeamMessage& message) const {
+    return std::to_string(message.kind);
+  }
 };
 
 }  // namespace foresight
