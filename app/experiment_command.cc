@@ -167,24 +167,29 @@ int RunStrategiesExperiment(const StrategiesOptions& o, const std::filesystem::p
   return 0;
 }
 
+// The options passing and ablations share: which trials, how kicks are executed, where to.
+void AddPassingRunOptions(CLI::App& cmd, PassingOptions& o) {
+  cmd.add_option("--scenarios", o.scenarios, "Scenarios, e.g. 1-4 or 3,4 (default: all)");
+  cmd.add_option("--trials", o.trials, "Trials per scenario (default: the configuration's)");
+  cmd.add_flag("--mirror", o.mirror, "Attack the goal at -x instead (the mirrored game)");
+  cmd.add_flag("--physics", o.physics, "Execute every kick in the Bullet scene");
+  cmd.add_option("--physics-file", o.physics_file,
+                  "Physics file (default: MODELS/physics/<field>.json)");
+  cmd.add_option("--kicks", o.kicks_file, "AIBO kick model replacing the simulation file's");
+  cmd.add_option("--params", o.params, "Experiment file, or a name in MODELS/experiments/")
+      ->capture_default_str();
+  cmd.add_option("--seed", o.seed, "Random seed")->capture_default_str();
+  cmd.add_option("--threads", o.threads, "Worker threads (0: all cores)")->capture_default_str();
+  cmd.add_option("--out", o.out_dir, "Folder for the results")->required();
+}
+
 void AddPassing(CLI::App& experiment, PassingOptions& o) {
   CLI::App* cmd = experiment.add_subcommand(
       "passing", "2-vs-2 attacks against DG or 2D opponents (Ros et al. 2009, sec. 5.2)");
   cmd->add_option("--config", o.config, "Opponents: dg, 2d or a configuration file")->required();
   cmd->add_option("--team", o.team, "Attacking team: " + PassingTeamNames())
       ->capture_default_str();
-  cmd->add_option("--scenarios", o.scenarios, "Scenarios, e.g. 1-4 or 3,4 (default: all)");
-  cmd->add_option("--trials", o.trials, "Trials per scenario (default: the configuration's)");
-  cmd->add_flag("--mirror", o.mirror, "Attack the goal at -x instead (the mirrored game)");
-  cmd->add_flag("--physics", o.physics, "Execute every kick in the Bullet scene");
-  cmd->add_option("--physics-file", o.physics_file,
-                  "Physics file (default: MODELS/physics/<field>.json)");
-  cmd->add_option("--kicks", o.kicks_file, "AIBO kick model replacing the simulation file's");
-  cmd->add_option("--params", o.params, "Experiment file, or a name in MODELS/experiments/")
-      ->capture_default_str();
-  cmd->add_option("--seed", o.seed, "Random seed")->capture_default_str();
-  cmd->add_option("--threads", o.threads, "Worker threads (0: all cores)")->capture_default_str();
-  cmd->add_option("--out", o.out_dir, "Folder for the results")->required();
+  AddPassingRunOptions(*cmd, o);
 }
 
 // One team's report files, named PREFIX.json, PREFIX_trials.csv, ...
@@ -327,17 +332,7 @@ void AddAblations(CLI::App& experiment, PassingOptions& o) {
   cmd->add_option("--config", o.config, "Opponents: dg, 2d or a configuration file")->required();
   cmd->add_option("--variants", o.variants,
                   "Variants file, or a name in MODELS/experiments/")->capture_default_str();
-  cmd->add_option("--scenarios", o.scenarios, "Scenarios, e.g. 1-4 or 3,4 (default: all)");
-  cmd->add_option("--trials", o.trials, "Trials per scenario (default: the configuration's)");
-  cmd->add_flag("--physics", o.physics, "Execute every kick in the Bullet scene");
-  cmd->add_option("--physics-file", o.physics_file,
-                  "Physics file (default: MODELS/physics/<field>.json)");
-  cmd->add_option("--kicks", o.kicks_file, "AIBO kick model replacing the simulation file's");
-  cmd->add_option("--params", o.params, "Experiment file, or a name in MODELS/experiments/")
-      ->capture_default_str();
-  cmd->add_option("--seed", o.seed, "Random seed")->capture_default_str();
-  cmd->add_option("--threads", o.threads, "Worker threads (0: all cores)")->capture_default_str();
-  cmd->add_option("--out", o.out_dir, "Folder for the results")->required();
+  AddPassingRunOptions(*cmd, o);
 }
 
 }  // namespace
