@@ -293,6 +293,7 @@ int RunPassingExperiment(const PassingOptions& o, const std::filesystem::path& m
     const PassingComparison comparison =
         ComparePassing(setup.teams[0], runs[0].result, setup.teams[1], runs[1].result, opponents,
                        setup.params.confidence);
+    files.push_back({dir / "passing_teams.svg", PassingTeamsSvg(runs[0], runs[1])});
     files.push_back({dir / "passing_comparison.json",
                      PassingComparisonJson(comparison).dump(2) + "\n"});
     text += PassingComparisonText(comparison);

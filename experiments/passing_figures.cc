@@ -124,4 +124,46 @@ std::string PassingTimeSvg(const PassingRun& run) {
   return ScatterSvg(chart);
 }
 
+std::string PassingTeamsSvg(const PassingRun& first, const PassingRun& second) {
+  ScatterChart chart;
+  chart.title = "Outcome shares, " + first.team + " and " + second.team + " from the same trials (" +
+                first.setup->config.name + ", " + std::to_string(first.setup->trials) +
+                " trials per scenario and team)";
+  chart.x_label = "scenario";
+  chart.y_label = "share of trials (%)";
+  chart.identity_line = false;
+  chart.size = {760.0, 440.0};
+  std::vector<TrialOutcome> shown = {TrialOutcome::kOut};
+  for (TrialOutcome o : ShownOutcomes(first)) {
+    if (o == TrialOutcome::kBlock) shown.push_back(o);
+  }
+  const PassingRun* runs[2] = {&first, &second};
+  const std::size_t series = 2 * (shown.size() + 1);
+  const double width = 0.8 / static_cast<double>(series);
+  for (std::size_t s = 0; s < first.summaries.size(); ++s) {
+    std::size_t k = 0;
+    for (std::size_t m = 0; m < shown.size() + 1; ++m) {
+      for (const PassingRun* run : runs) {
+        const ScenarioSummary& sum = run->summaries[s];
+        const bool to_goal = m == 0;
+        const auto o = to_goal ? TrialOutcome::kGoal : shown[m - 1];
+        const int count = to_goal ? sum.to_goal : sum.counts[static_cast<std::size_t>(o)];
+        const Interval ci = to_goal ? sum.to_goal_ci : sum.shares_ci[static_cast<std::size_t>(o)];
+        const std::string what = run->team + " " + (to_goal ? "to goal" : std::string(TrialOutcomeName(o)));
+        ScatterPoint p;
+        p.x = sum.scenario - 0.4 + width * (static_cast<double>(k) + 0.5);
+        p.y = 100.0 * count / sum.trials;
+        p.y_low = 100.0 * ci.low;
+        p.y_high = 100.0 * ci.high;
+        p.series = static_cast<int>(k);
+        p.label = PercentLabel(what, sum.name, count, sum.trials, ci);
+        chart.points.push_back(p);
+        if (s == 0) chart.series_names.push_back(what);
+        ++k;
+      }
+    }
+  }
+  return ScatterSvg(chart);
+}
+
 }  // namespace foresight

@@ -235,7 +235,8 @@ TEST_F(ExperimentCommandTest, PassingBothTeamsWritesEachReportAndThePairedCompar
                                   "1", "--trials", "6", "--out", "both"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* f : {"passing_cbr.json", "passing_reactive.json", "passing_cbr_trials.csv",
-                        "passing_reactive_replay_dg_1.html", "passing_comparison.json"}) {
+                        "passing_reactive_replay_dg_1.html", "passing_comparison.json",
+                        "passing_teams.svg"}) {
     EXPECT_TRUE(fs::exists(work() / "both" / f)) << f;
   }
   const nlohmann::json c = nlohmann::json::parse(ReadFile(work() / "both" / "passing_comparison.json"));
