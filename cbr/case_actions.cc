@@ -36,13 +36,8 @@ ActionStep AimAndKick(const FuzzyTrajectory* trajectory, int kick_index, ActionP
     // The free-path test (sec. 3.3.1) on the trajectory from where the ball is now.
     CaseBallPath now;
     now.count = 1;
-    now.trajectories[0] = *trajectory;
-    now.trajectories[0].start_F = p.p_F_ball;
-    const Vec2 d = trajectory->end_F - p.p_F_ball;
-    if (d.norm() > 1e-9) {
-      now.trajectories[0].u = d / d.norm();
-      now.trajectories[0].length_m = d.norm();
-    }
+    now.trajectories[0] = MakeTrajectory(p.p_F_ball, trajectory->end_F,
+                                         ctx.retrieval->TrajectoryFor(kick.name), *ctx.retrieval);
     std::vector<Vec2> opponents;
     for (const Pose2& o : p.opponents) opponents.push_back(o.p_F);
     if (!CheckFreePath(now, opponents, ctx.retrieval->thr_trajectory).free) {
@@ -63,12 +58,10 @@ ActionStep AimAndKick(const FuzzyTrajectory* trajectory, int kick_index, ActionP
   return step;
 }
 
-bool Advance(ActionProgress& s) {
+void Advance(ActionProgress& s) {
   ++s.action;
   s.kicking = false;
   s.passer_had_ball = false;
-  s.pass_heard = false;
-  return true;
 }
 
 }  // namespace
@@ -133,6 +126,7 @@ ActionStep StepActions(const CasePlay& play, int me, ActionProgress& s, const Pe
         return step;
       case ActionType::kReceive: {
         if (p.holding_ball) {
+          ++s.receives_done;
           Advance(s);
           continue;
         }
@@ -141,7 +135,8 @@ ActionStep StepActions(const CasePlay& play, int me, ActionProgress& s, const Pe
           const bool near = Near(p.p_F_ball, p.teammates[static_cast<std::size_t>(passer)].p_F,
                                  ctx.team->pass_seen_m);
           if (near) s.passer_had_ball = true;
-          if (!s.pass_heard && !(s.passer_had_ball && !near)) {
+          const bool heard = s.passes_heard > s.receives_done;
+          if (!heard && !(s.passer_had_ball && !near)) {
             step.command = TurnTowards(p.pose, face_ball, dt);
             return step;
           }

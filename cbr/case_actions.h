@@ -53,7 +53,8 @@ struct ActionProgress {
   bool kicking = false;
   bool was_holding = false;
   double holding_since_s = 0.0;
-  bool pass_heard = false;      // set when the passer's message arrives
+  int passes_heard = 0;   // passes to this robot its messages announced (in this case)
+  int receives_done = 0;  // its receive actions completed
   bool passer_had_ball = false;  // receive: the ball was seen at the passer
 };
 

@@ -136,7 +136,7 @@ void CbrTeam::HearProtocol(Robot& r, const Perception& p, const TeamMessage& m) 
       if (cycle == r.cycle && from >= 0) r.arrived[At(from)] = true;
       return;
     case CbrMessageKind::kPassed:
-      if (cycle == r.cycle && m.words[1] == p.self) r.progress.pass_heard = true;
+      if (cycle == r.cycle && m.words[1] == p.self) ++r.progress.passes_heard;
       return;
     case CbrMessageKind::kDone:
       if (cycle == r.cycle && from >= 0) r.done[At(from)] = true;
