@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -73,11 +74,14 @@ class CbrTeamTest : public ::testing::Test {
         p.time_s = step_ * kDt;
         p.self = r;
         p.pose = poses_[static_cast<std::size_t>(r)];
+        p.holding_ball = holding_[static_cast<std::size_t>(r)];
+        p.busy = busy_[static_cast<std::size_t>(r)];
         p.p_F_ball = ball_;
         p.teammates = poses_;
         for (const Vec2& o : opponents_) p.opponents.push_back(Pose2(o, kPi));
         p.inbox = inbox[static_cast<std::size_t>(r)];
         RobotCommand c = team_->Decide(p);
+        last_[static_cast<std::size_t>(r)] = c;
         if (c.message) {
           c.message->sender = r;
           c.message->sent_time_s = p.time_s;
@@ -115,6 +119,9 @@ class CbrTeamTest : public ::testing::Test {
   std::vector<Vec2> opponents_;
   std::vector<Sent> sent_;
   std::function<bool(const TeamMessage&)> drop;
+  std::vector<bool> holding_{false, false};
+  std::vector<bool> busy_{false, false};
+  std::vector<RobotCommand> last_{RobotCommand{}, RobotCommand{}};
   int step_ = 0;
 };
 
@@ -226,6 +233,57 @@ TEST_F(CbrTeamTest, MessagesOfAnOlderCycleAreIgnored) {
   Run(1);
   EXPECT_EQ(team_->PhaseOf(1), before);
   EXPECT_EQ(team_->CycleOf(1), 1);
+}
+
+// One individual case through every state of Fig. 10: ADAPT until robot 0 stands at its adapted
+// position, EXECUTE (get the ball, aim, kick), WAIT END until the coordinator has heard everyone,
+// END, and a new cycle.
+TEST_F(CbrTeamTest, AnIndividualCaseRunsThroughEveryState) {
+  poses_[1] = Pose2(Vec2(-2.0, -1.5), 0.0);  // far away: the case is robot 0's alone
+  poses_[0] = Pose2(Vec2(0.7, 0.45), 0.0);
+  // A case base of one case whose gameplay is known: get the ball, kick it at the goal.
+  Case c;
+  c.name = "kick_at_goal";
+  c.source = c.name;
+  c.p_F_ball = Vec2(1.3, 0.2);
+  c.ball_scope = {0.6, 0.5};
+  c.teammates = {{1, Vec2(1.0, 0.2), {{ActionType::kGetBall}, {ActionType::kKick, "forward", true}}}};
+  const CaseBase one({c}, base_.kick_mirrors);
+  MakeTeam();
+  setup_.cases = &one;
+  team_.emplace(setup_, fallback_, 2);
+  Run(4);
+  ASSERT_EQ(Counter("cases_individual"), 1.0);
+  ASSERT_EQ(team_->PhaseOf(0), CbrPhase::kAdapt);
+  EXPECT_EQ(team_->PhaseOf(1), CbrPhase::kWaitEnd);  // not in the case
+  EXPECT_EQ(last_[0].kind, CommandKind::kWalk);       // walking to its adapted position
+  // Put it where it walks to (a step's command reaches its target in one step).
+  const RobotCommand walk = last_[0];
+  poses_[0].p_F += Vec2(std::cos(poses_[0].theta_rad) * walk.v_R_mps.x() -
+                            std::sin(poses_[0].theta_rad) * walk.v_R_mps.y(),
+                        std::sin(poses_[0].theta_rad) * walk.v_R_mps.x() +
+                            std::cos(poses_[0].theta_rad) * walk.v_R_mps.y()) *
+                   kDt;
+  Run(1);
+  EXPECT_EQ(team_->PhaseOf(0), CbrPhase::kExecute);
+  EXPECT_EQ(last_[0].kind, CommandKind::kGetBall);
+  holding_[0] = true;
+  Run(1);
+  EXPECT_EQ(last_[0].kind, CommandKind::kKick);  // facing the goal within the aim tolerance
+  busy_[0] = true;
+  Run(5);
+  holding_[0] = false;
+  busy_[0] = false;
+  ball_ = Vec2(2.2, 0.1);
+  Run(1);
+  EXPECT_EQ(team_->PhaseOf(0), CbrPhase::kIdle);  // done, and the coordinator ended the cycle
+  EXPECT_EQ(SendersOf(CbrMessageKind::kDone), std::vector<int>{0});
+  Run(10);
+  EXPECT_EQ(SendersOf(CbrMessageKind::kEnd), std::vector<int>{0});  // one message a step
+  EXPECT_GE(team_->CycleOf(1), 2);  // everyone is in the next cycle
+  EXPECT_EQ(Counter("aborts_timeout") + Counter("aborts_ball_lost") + Counter("aborts_ball_moved") +
+                Counter("aborts_path_blocked"),
+            0.0);
 }
 
 TEST(TeamMessagesTest, CorrespondencePacksAndUnpacks) {
