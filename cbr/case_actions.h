@@ -18,7 +18,8 @@
 //   turn:    turn on the spot to the heading or to face the adapted point.
 //   wait:    done at once (the receive that follows it waits for the pass itself).
 // The case is no longer applicable, and the robot aborts, when (checked while it is in charge of
-// the ball): an opponent touches the ball it is going for (ball_lost); while the robot that gets
+// the ball): an opponent touches the ball it is going for and no teammate is nearer to it
+// (ball_lost: OpponentHasBall); while the robot that gets
 // the ball first goes for it, the ball left the case's ball scope around B^p (ball_moved: sim_B
 // <= thr_b, sec. 3.1; the team checks the same while adapting); an
 // opponent stands on the trajectory it is about to kick (path_blocked: the free-path test of
@@ -75,7 +76,8 @@ bool BallLeftScope(const CasePlay& play, const Perception& perception, const Act
 // Out of play: stay keep_close_m from the ball on the robot's side of it, facing it (sec. 4.2).
 RobotCommand KeepClose(const Perception& perception, double keep_close_m, double dt_s);
 
-// Whether an opponent's body touches the perceived ball (the ball is lost).
+// Whether the ball is lost: an opponent's body touches the perceived ball, and neither this
+// robot holds it nor is a teammate (this robot included) nearer to it than that opponent.
 bool OpponentHasBall(const Perception& perception, const ActionContext& ctx);
 
 }  // namespace foresight

@@ -10,7 +10,7 @@ namespace foresight {
 namespace {
 
 constexpr double kPixelsPerM = 110.0;
-constexpr double kLegendPx = 230.0;
+constexpr double kLegendPx = 330.0;
 constexpr const char* kAttackerColour = "#0072b2";
 constexpr const char* kOpponentColour = "#d55e00";
 
@@ -47,6 +47,45 @@ void DrawPath(FieldCanvas& c, const std::vector<TraceFrame>& trace, int robot,
   }
 }
 
+// The cases a CBR team retrieved in the trial (its "cbr case cycle N NAME" messages, once per
+// cycle), with where the ball was and how each case ended if it was aborted.
+struct RetrievedCase {
+  double time_s = 0.0;
+  Vec2 p_F_ball{0.0, 0.0};
+  std::string name;
+  std::string abort;
+};
+
+std::vector<RetrievedCase> RetrievedCases(const MatchTrialResult& t) {
+  std::vector<RetrievedCase> cases;
+  std::string last_cycle;
+  for (const MatchEvent& e : t.events) {
+    if (e.kind != EventKind::kMessage) continue;
+    const bool is_case = e.detail.rfind("cbr case cycle ", 0) == 0;
+    const bool is_abort = e.detail.rfind("cbr abort cycle ", 0) == 0;
+    if (!is_case && !is_abort) continue;
+    const std::string rest = e.detail.substr(is_case ? 15 : 16);
+    const std::string cycle = rest.substr(0, rest.find(' '));
+    const std::string what = rest.substr(rest.find(' ') + 1);
+    if (is_case && cycle != last_cycle) {
+      cases.push_back({e.time_s, e.p_F_ball, what, ""});
+      last_cycle = cycle;
+    } else if (is_abort && cycle == last_cycle && cases.back().abort.empty()) {
+      cases.back().abort = what;
+    }
+  }
+  return cases;
+}
+
+void DrawCases(FieldCanvas& c, const std::vector<RetrievedCase>& cases) {
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const Vec2& p = cases[i].p_F_ball;
+    c.svg().Rect(c.X(p.x()) + 5, c.Y(p.y()) - 19, 16, 13, "fill:#009e73;stroke:none");
+    c.svg().Text(c.X(p.x()) + 13, c.Y(p.y()) - 9, std::to_string(i + 1),
+                 "font:bold 9px sans-serif;text-anchor:middle;fill:white");
+  }
+}
+
 void DrawLegend(FieldCanvas& c, const PassingRun& run, const ScenarioTrials& st,
                 const MatchTrialResult& t) {
   const double x = c.legend_x();
@@ -73,6 +112,17 @@ void DrawLegend(FieldCanvas& c, const PassingRun& run, const ScenarioTrials& st,
   y += 18.0;
   c.svg().Rect(x, y - 10, 26, 12, "fill:#d55e00;fill-opacity:0.12;stroke:#d55e00");
   c.svg().Text(x + 32, y, "home regions", "font:12px sans-serif");
+  const std::vector<RetrievedCase> cases = RetrievedCases(t);
+  if (cases.empty()) return;
+  y += 26.0;
+  line(Format("cases retrieved: %zu", cases.size()), "font:bold 12px sans-serif");
+  constexpr std::size_t kListed = 14;
+  for (std::size_t i = 0; i < cases.size() && i < kListed; ++i) {
+    line(Format("%zu  %.1f s  %s%s", i + 1, cases[i].time_s, cases[i].name.c_str(),
+                cases[i].abort.empty() ? "" : (" (abort: " + cases[i].abort + ")").c_str()),
+         "font:10px sans-serif");
+  }
+  if (cases.size() > kListed) line(Format("... and %zu more", cases.size() - kListed), "font:10px sans-serif");
 }
 
 }  // namespace
@@ -111,6 +161,7 @@ std::string PassingExampleSvg(const PassingRun& run, std::size_t index) {
     if (e.kind == EventKind::kKick) c.DrawDot(e.p_F_ball, 4.0, "fill:black");
   }
   c.DrawDot(t->trace.back().p_F_ball, 5.0, "fill:white;stroke:black;stroke-width:2");
+  DrawCases(c, RetrievedCases(*t));
   DrawLegend(c, run, st, *t);
   return c.svg().Finish();
 }
