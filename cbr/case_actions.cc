@@ -1,8 +1,6 @@
 #include "cbr/case_actions.h"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "cbr/problem.h"
 #include "cbr/similarity.h"
@@ -69,17 +67,12 @@ void Advance(ActionProgress& s) {
 }  // namespace
 
 bool OpponentHasBall(const Perception& p, const ActionContext& ctx) {
-  if (p.holding_ball) return false;
   const double reach =
       ctx.retrieval->opponent_radius_m + ctx.retrieval->ball_radius_m + ctx.team->ball_lost_margin_m;
-  double opponent_m = std::numeric_limits<double>::infinity();
-  for (const Pose2& o : p.opponents) opponent_m = std::min(opponent_m, (o.p_F - p.p_F_ball).norm());
-  if (!(opponent_m <= reach)) return false;
-  // A teammate nearer to the ball than the opponent holds it or fights for it: not lost yet.
-  for (const Pose2& mate : p.teammates) {
-    if ((mate.p_F - p.p_F_ball).norm() < opponent_m) return false;
+  for (const Pose2& o : p.opponents) {
+    if ((o.p_F - p.p_F_ball).norm() <= reach) return true;
   }
-  return true;
+  return false;
 }
 
 bool BallLeftScope(const CasePlay& play, const Perception& p, const ActionContext& ctx) {

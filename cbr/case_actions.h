@@ -18,8 +18,7 @@
 //   turn:    turn on the spot to the heading or to face the adapted point.
 //   wait:    done at once (the receive that follows it waits for the pass itself).
 // The case is no longer applicable, and the robot aborts, when (checked while it is in charge of
-// the ball): an opponent touches the ball it is going for and no teammate is nearer to it
-// (ball_lost: OpponentHasBall); while the robot that gets
+// the ball): an opponent touches the ball (ball_lost: OpponentHasBall); while the robot that gets
 // the ball first goes for it, the ball left the case's ball scope around B^p (ball_moved: sim_B
 // <= thr_b, sec. 3.1; the team checks the same while adapting); an
 // opponent stands on the trajectory it is about to kick (path_blocked: the free-path test of
@@ -76,8 +75,12 @@ bool BallLeftScope(const CasePlay& play, const Perception& perception, const Act
 // Out of play: stay keep_close_m from the ball on the robot's side of it, facing it (sec. 4.2).
 RobotCommand KeepClose(const Perception& perception, double keep_close_m, double dt_s);
 
-// Whether the ball is lost: an opponent's body touches the perceived ball, and neither this
-// robot holds it nor is a teammate (this robot included) nearer to it than that opponent.
+// Whether the ball is lost: an opponent's body touches the perceived ball, even while a teammate
+// holds it or fights for it. Decision: a case assumes a free ball; in a fight the default
+// behaviour (the reactive team's dodge) takes over until the ball is free again. Tried the
+// other way (not lost while a teammate is nearer to the ball than the opponent): with the
+// shipped kicks the fights then lasted, DG scenario 1 went from 0 to 46 % timeouts and the
+// defender's touches per trial from 9 to 29 (300 trials, seed 1).
 bool OpponentHasBall(const Perception& perception, const ActionContext& ctx);
 
 }  // namespace foresight
