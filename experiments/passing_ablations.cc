@@ -156,14 +156,18 @@ std::string AblationsText(const AblationRun& run) {
   std::string text = Format("ablations: CBR team variants against %s, %d trials per scenario\n",
                             run.base->config.name.c_str(), run.base->trials);
   for (std::size_t s = 0; s < run.reactive.size(); ++s) {
-    text += Format("%s: reactive to goal %.1f %%\n", run.reactive[s].name.c_str(),
-                   100.0 * run.reactive[s].to_goal / run.reactive[s].trials);
+    const ScenarioSummary& r = run.reactive[s];
+    text += Format("%s: reactive to goal %.1f %%, block %.1f %%, out %.1f %%, timeout %.1f %%\n",
+                   r.name.c_str(), 100.0 * r.to_goal / r.trials, 100.0 * Share(r, TrialOutcome::kBlock),
+                   100.0 * Share(r, TrialOutcome::kOut), 100.0 * Share(r, TrialOutcome::kTimeout));
     for (std::size_t v = 0; v < run.variants.size(); ++v) {
       const ScenarioSummary& sum = run.summaries[v][s];
       const MeanStat& dr = Row(run.vs_reference[v], s, "to_goal").difference;
-      text += Format("  %-24s to goal %5.1f %%  out %5.1f %%  d vs %s %+5.1f [%+5.1f, %+5.1f]\n",
+      text += Format("  %-24s to goal %5.1f %%  block %5.1f %%  out %5.1f %%  timeout %5.1f %%  "
+                     "to goal vs %s %+5.1f [%+5.1f, %+5.1f]\n",
                      run.variants[v].name.c_str(), 100.0 * sum.to_goal / sum.trials,
-                     100.0 * Share(sum, TrialOutcome::kOut), run.variants.front().name.c_str(),
+                     100.0 * Share(sum, TrialOutcome::kBlock), 100.0 * Share(sum, TrialOutcome::kOut),
+                     100.0 * Share(sum, TrialOutcome::kTimeout), run.variants.front().name.c_str(),
                      100.0 * dr.mean, 100.0 * dr.ci.low, 100.0 * dr.ci.high);
     }
   }
