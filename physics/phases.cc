@@ -15,11 +15,6 @@ namespace {
 constexpr double kReleaseTimeS = 0.02;
 // Once the motion is over this long without a touch, the kick missed.
 constexpr double kMissGraceS = 0.2;
-// A ball that would stop within this distance of where the robot let go of it is still within
-// reach of the rest of the motion (a paw or a foot sweeps several centimetres): it counts as
-// launched only once the motion is over (assumption; the shipped kicks launch at 0.4-1 m/s,
-// which rolls 0.3-1.9 m).
-constexpr double kMinLaunchRollM = 0.05;
 
 btRigidBody* AddBall(BulletWorld& world, const PhysicsScene& scene, const BallState& state) {
   const BallSpec& spec = scene.field->ball;
@@ -77,7 +72,7 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
     // A touch that leaves the ball (nearly) at rest, e.g. the paw grazing it while the motion
     // winds up, is not a launch: the motion goes on and may still strike it.
     const double speed = end.ball.PlanarSpeed();
-    const bool out_of_reach = speed * speed >= 2.0 * deceleration * kMinLaunchRollM;
+    const bool out_of_reach = speed * speed >= 2.0 * deceleration * steps.min_launch_roll_m;
     if (end.touched && t - last_touch_s >= kReleaseTimeS && (out_of_reach || t > motion_end_s) &&
         RollsFreely(end.ball, radius)) {
       end.launched = true;
