@@ -47,6 +47,7 @@ void PhysicsParams::Validate() const {
   RequireInRange("steps.max_kick_time_s", steps.max_kick_time_s, 0.1, 60.0);
   RequireInRange("steps.max_roll_time_s", steps.max_roll_time_s, 1.0, 3600.0);
   RequireInRange("steps.rest_speed_mps", steps.rest_speed_mps, 1e-5, 0.1);
+  RequireInRange("steps.min_launch_roll_m", steps.min_launch_roll_m, 0.0, 0.5);
   RequireInRange("steps.solver_iterations", steps.solver_iterations, 1, 1000);
   RequireInRange("steps.restitution_threshold_mps", steps.restitution_threshold_mps, 0.0, 0.5);
 }
@@ -102,7 +103,7 @@ StepParams ReadSteps(const JsonObject& o) {
   o.RejectUnknownKeys({"kick_time_step_s", "near_time_step_s", "max_overlap_m", "free_time_step_s",
                        "slow_speed_mps", "slow_time_step_s",
                        "max_kick_time_s", "max_roll_time_s", "rest_speed_mps",
-                       "solver_iterations", "restitution_threshold_mps"});
+                       "min_launch_roll_m", "solver_iterations", "restitution_threshold_mps"});
   StepParams s;
   s.kick_time_step_s = o.Number("kick_time_step_s");
   s.near_time_step_s = o.Number("near_time_step_s");
@@ -113,6 +114,7 @@ StepParams ReadSteps(const JsonObject& o) {
   s.max_kick_time_s = o.Number("max_kick_time_s");
   s.max_roll_time_s = o.Number("max_roll_time_s");
   s.rest_speed_mps = o.Number("rest_speed_mps");
+  s.min_launch_roll_m = o.Number("min_launch_roll_m");
   s.solver_iterations = o.Integer("solver_iterations");
   s.restitution_threshold_mps = o.Number("restitution_threshold_mps");
   return s;

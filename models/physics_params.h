@@ -49,6 +49,9 @@ struct StepParams {
   double max_kick_time_s = 0.0;   // after that the kick phase ends, touched or not
   double max_roll_time_s = 0.0;   // a ball still moving then is reported as not settled
   double rest_speed_mps = 0.0;    // below this (and on the carpet) the ball rests
+  // Before the motion ends, a touched ball counts as launched only once its speed would carry
+  // it this far (v^2 / 2a): a slower one is still within reach of the rest of the motion.
+  double min_launch_roll_m = 0.0;
   int solver_iterations = 0;
   // Contacts approaching slower than this do not bounce (Bullet's restitution threshold): a
   // ball resting on the carpet must not jitter.

@@ -51,6 +51,7 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
   KickingRobot robot(world, *scene.robot, pose_F_root, scene.standing_q_rad,
                      MovingJoints(scene.robot->model, motion.joints), scene.params, dt);
   const double motion_end_s = motion.DurationS() / speed_factor;
+  const double deceleration = scene.params.carpet.rolling_deceleration_mps2;
   PhaseEnd end;
   end.ball = ball_start;
   double last_touch_s = 0.0;
@@ -68,7 +69,12 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
       last_touch_s = t;
     }
     monitor.Observe(t, end.ball, contacts);
-    if (end.touched && t - last_touch_s >= kReleaseTimeS && RollsFreely(end.ball, radius)) {
+    // A touch that leaves the ball (nearly) at rest, e.g. the paw grazing it while the motion
+    // winds up, is not a launch: the motion goes on and may still strike it.
+    const double speed = end.ball.PlanarSpeed();
+    const bool out_of_reach = speed * speed >= 2.0 * deceleration * steps.min_launch_roll_m;
+    if (end.touched && t - last_touch_s >= kReleaseTimeS && (out_of_reach || t > motion_end_s) &&
+        RollsFreely(end.ball, radius)) {
       end.launched = true;
       break;
     }

@@ -57,7 +57,9 @@ INSTANTIATE_TEST_SUITE_P(
                    "materials.restitution.ball_post: must be in [0, 1], got 1.3"},
         BrokenCase{"\"ball_net\": \"assumption: a slack net absorbs the ball (3 %)\"",
                    "\"ball_net\": \"\"", "restitution.sources.ball_net: must say where"},
-        BrokenCase{"\"patch_seed\": 2026", "\"patch_seed\": -4", "carpet.patch_seed"}));
+        BrokenCase{"\"patch_seed\": 2026", "\"patch_seed\": -4", "carpet.patch_seed"},
+        BrokenCase{"\"min_launch_roll_m\": 0.05", "\"min_launch_roll_m\": 2",
+                   "steps.min_launch_roll_m: must be in [0, 0.5], got 2"}));
 
 }  // namespace
 }  // namespace foresight

@@ -362,10 +362,11 @@ TEST(RobotSpecTest, ShippedNaoLoadsWithThreeKicks) {
   }
 }
 
-TEST(RobotSpecTest, ShippedAiboLoadsWithThreeKicks) {
+TEST(RobotSpecTest, ShippedAiboLoadsWithFourKicks) {
   const Robot aibo = LoadRobot("aibo_ers7", ModelsDir());
   EXPECT_EQ(aibo.model.links.size(), 16u);
-  EXPECT_EQ(aibo.motions.size(), 3u);
+  EXPECT_EQ(aibo.motions.size(), 4u);
+  EXPECT_TRUE(aibo.FindMotion("forward_short").has_value());
   EXPECT_EQ(aibo.StandingPositions().size(), aibo.model.joints.size());
 }
 

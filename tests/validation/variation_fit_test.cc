@@ -17,7 +17,7 @@ constexpr int kTrials = 200;
 // The "real robot": physics with the true magnitudes and seeds the fit never uses.
 std::map<std::string, LaunchSpread> SyntheticLog(const TrialVariation& truth) {
   std::map<std::string, LaunchSpread> log;
-  for (const char* kick : {"forward"}) {
+  for (const char* kick : {"side_kick_left"}) {
     PhysicsCalibrationSettings s;
     s.robot = "nao";
     s.kick = kick;
@@ -34,7 +34,10 @@ TEST(VariationFitTest, RecoversTheMagnitudesALogWasDrawnWith) {
   const TrialVariation base = LoadRobot("nao", testing::ModelsDir()).spec.variation;
   // Chosen so both groups show in the log: placement sets the direction's spread, the playback
   // speed most of the speed's. (A log whose speed spread placement alone explains cannot tell
-  // the playback spread apart: the fit then puts it near 0, and says so in its residual.)
+  // the playback spread apart: the fit then puts it near 0, and says so in its residual.) The
+  // log is of the side kick: the forward pendulum strike (issue 12, second pass) loses speed
+  // when the ball lies 2-3 cm farther than planned, so placement explains most of its speed
+  // spread too (fitted on it, the residual is 0.20).
   const std::map<std::string, LaunchSpread> log = SyntheticLog(ScaledVariation(base, 0.6, 0.9));
   VariationFitSettings settings;
   settings.robot = "nao";
