@@ -64,7 +64,7 @@ std::pair<double, double> BoundedFit(const std::vector<Equation>& eqs, double w_
   };
   const double w_alone = bb > 0.0 ? std::clamp(by / bb, 0.0, w_max) : 0.0;
   std::pair<double, double> best{best_u(0.0), 0.0};
-  for (const std::pair<double, double> candidate :
+  for (const std::pair<double, double>& candidate :
        {std::pair{best_u(w_max), w_max}, std::pair{0.0, w_alone}}) {
     if (cost(candidate.first, candidate.second) < cost(best.first, best.second)) best = candidate;
   }
