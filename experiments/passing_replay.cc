@@ -82,17 +82,26 @@ std::string FramesJson(const PassingSetup& setup, const MatchTrialResult& t) {
   return json + "]";
 }
 
+bool IsTeamDecision(const std::string& detail) {
+  for (const char* prefix : {"cbr coordinator", "cbr case", "cbr no_case", "cbr abort", "cbr end"}) {
+    if (detail.rfind(prefix, 0) == 0) return true;
+  }
+  return false;
+}
+
 std::string EventsJson(const PassingSetup& setup, const MatchTrialResult& t) {
   std::string json = "[";
   bool first = true;
   for (const MatchEvent& e : t.events) {
-    if (e.kind == EventKind::kMessage) continue;  // twice a second per robot: not worth a line
+    // Messages come twice a second per robot: only the CBR team's decisions get a line (the
+    // coordinator, the case, no case, aborts and ends; not beliefs, arrivals, passes, dones).
+    if (e.kind == EventKind::kMessage && !IsTeamDecision(e.detail)) continue;
     const std::size_t robot = e.side == Side::kAttackers ? static_cast<std::size_t>(e.robot)
                                                          : 2 + static_cast<std::size_t>(e.robot);
     const std::string who = e.kind == EventKind::kEnd ? "" : RobotName(setup, robot) + " ";
+    const std::string kind = e.kind == EventKind::kMessage ? "" : std::string(EventKindName(e.kind));
     json += Format("%s[%.2f,\"%s%s%s%s\"]", first ? "" : ",", e.time_s, who.c_str(),
-                   std::string(EventKindName(e.kind)).c_str(), e.detail.empty() ? "" : " ",
-                   e.detail.c_str());
+                   kind.c_str(), e.detail.empty() || kind.empty() ? "" : " ", e.detail.c_str());
     first = false;
   }
   return json + "]";
@@ -142,7 +151,7 @@ std::string PassingReplayHtml(const PassingRun& run, std::size_t index) {
       st.name +
       "</title>\n<style>body{font-family:sans-serif;margin:16px}"
       "#wrap{display:flex;gap:16px;align-items:flex-start}"
-      "#log{white-space:pre;font:12px monospace;height:560px;width:260px;overflow:auto;"
+      "#log{white-space:pre;font:12px monospace;height:560px;width:400px;overflow:auto;"
       "border:1px solid #ccc;padding:4px;margin:0}#t{width:700px}</style></head><body>\n";
   if (t == nullptr) return html + "<p>No example trial was recorded.</p></body></html>\n";
   html += Format("<h2>Scenario %d (%s): %s vs %s, trial %d, outcome %s after %.1f s</h2>\n",
