@@ -15,6 +15,22 @@ std::string PercentLabel(const std::string& what, const std::string& scenario, i
                 count, n, 100.0 * count / n, 100.0 * ci.low, 100.0 * ci.high);
 }
 
+// One outcome's share in one scenario as a point with its interval: `to_goal` (the paper's "to
+// goal") or outcome `o`.
+ScatterPoint SharePoint(const ScenarioSummary& s, bool to_goal, TrialOutcome o, double x,
+                        int series, const std::string& what) {
+  const int count = to_goal ? s.to_goal : s.counts[static_cast<std::size_t>(o)];
+  const Interval ci = to_goal ? s.to_goal_ci : s.shares_ci[static_cast<std::size_t>(o)];
+  ScatterPoint p;
+  p.x = x;
+  p.y = 100.0 * count / s.trials;
+  p.y_low = 100.0 * ci.low;
+  p.y_high = 100.0 * ci.high;
+  p.series = series;
+  p.label = PercentLabel(what, s.name, count, s.trials, ci);
+  return p;
+}
+
 std::vector<TrialOutcome> ShownOutcomes(const PassingRun& run) {
   // Classes no trial of this configuration can end with are left out (no goalie: no goal,
   // close or block in 2D; no penalty-area rule in DG).
@@ -59,17 +75,11 @@ std::string PassingOutcomesSvg(const PassingRun& run) {
   for (const ScenarioSummary& s : run.summaries) {
     for (std::size_t k = 0; k < shown.size() + 1; ++k) {
       const bool to_goal = k == shown.size();
-      const int count = to_goal ? s.to_goal : s.counts[static_cast<std::size_t>(shown[k])];
-      const Interval ci = to_goal ? s.to_goal_ci : s.shares_ci[static_cast<std::size_t>(shown[k])];
-      const std::string name = to_goal ? "to goal" : std::string(TrialOutcomeName(shown[k]));
-      ScatterPoint p;
-      p.x = s.scenario - 0.35 + width * (static_cast<double>(k) + 0.5);
-      p.y = 100.0 * count / s.trials;
-      p.y_low = 100.0 * ci.low;
-      p.y_high = 100.0 * ci.high;
-      p.series = static_cast<int>(k);
-      p.label = PercentLabel(name, s.name, count, s.trials, ci);
-      chart.points.push_back(p);
+      const TrialOutcome o = to_goal ? TrialOutcome::kGoal : shown[k];
+      const std::string name = to_goal ? "to goal" : std::string(TrialOutcomeName(o));
+      chart.points.push_back(SharePoint(s, to_goal, o,
+                                        s.scenario - 0.35 + width * (static_cast<double>(k) + 0.5),
+                                        static_cast<int>(k), name));
     }
   }
   for (TrialOutcome o : shown) chart.series_names.emplace_back(TrialOutcomeName(o));
@@ -146,18 +156,12 @@ std::string PassingTeamsSvg(const PassingRun& first, const PassingRun& second) {
       for (const PassingRun* run : runs) {
         const ScenarioSummary& sum = run->summaries[s];
         const bool to_goal = m == 0;
-        const auto o = to_goal ? TrialOutcome::kGoal : shown[m - 1];
-        const int count = to_goal ? sum.to_goal : sum.counts[static_cast<std::size_t>(o)];
-        const Interval ci = to_goal ? sum.to_goal_ci : sum.shares_ci[static_cast<std::size_t>(o)];
-        const std::string what = run->team + " " + (to_goal ? "to goal" : std::string(TrialOutcomeName(o)));
-        ScatterPoint p;
-        p.x = sum.scenario - 0.4 + width * (static_cast<double>(k) + 0.5);
-        p.y = 100.0 * count / sum.trials;
-        p.y_low = 100.0 * ci.low;
-        p.y_high = 100.0 * ci.high;
-        p.series = static_cast<int>(k);
-        p.label = PercentLabel(what, sum.name, count, sum.trials, ci);
-        chart.points.push_back(p);
+        const TrialOutcome o = to_goal ? TrialOutcome::kGoal : shown[m - 1];
+        const std::string what =
+            run->team + " " + (to_goal ? "to goal" : std::string(TrialOutcomeName(o)));
+        chart.points.push_back(SharePoint(sum, to_goal, o,
+                                          sum.scenario - 0.4 + width * (static_cast<double>(k) + 0.5),
+                                          static_cast<int>(k), what));
         if (s == 0) chart.series_names.push_back(what);
         ++k;
       }
