@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs every libFuzzer target of a fuzz build (make fuzz) on its seed corpus from models/.
-# Usage: scripts/run_fuzzers.sh BUILD_DIR RUNS [SEED]
+# Usage: scripts/run_fuzzers.sh BUILD_DIR RUNS [SEED]   (FUZZ_TARGETS="kicks field" runs only those)
 #   RUNS inputs per target with libFuzzer seed SEED (default 1): the same inputs on every machine,
 #   so a CI run is reproducible. A finding (crash, sanitizer report, uncaught exception, timeout)
 #   stops with exit 1 and leaves the input in BUILD_DIR/findings/.
@@ -40,7 +40,9 @@ declare -A seeds=(
 )
 mkdir -p "$build/findings"
 failed=0
-for target in $(printf '%s\n' "${!seeds[@]}" | sort); do
+targets=${FUZZ_TARGETS:-$(printf '%s\n' "${!seeds[@]}" | sort)}
+for target in $targets; do
+  if [ -z "${seeds[$target]+set}" ]; then echo "fuzz: no target '$target'"; exit 2; fi
   corpus=$build/corpus/$target
   rm -rf "$corpus" && mkdir -p "$corpus"
   # shellcheck disable=SC2086  # the globs are meant to expand
