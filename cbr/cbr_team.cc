@@ -12,22 +12,6 @@ std::size_t At(int i) {
 }
 }  // namespace
 
-std::string_view CbrPhaseName(CbrPhase phase) {
-  switch (phase) {
-    case CbrPhase::kIdle:
-      return "idle";
-    case CbrPhase::kAwaitCase:
-      return "await_case";
-    case CbrPhase::kAdapt:
-      return "adapt";
-    case CbrPhase::kExecute:
-      return "execute";
-    case CbrPhase::kWaitEnd:
-      return "wait_end";
-  }
-  return "?";
-}
-
 CbrTeam::CbrTeam(const CbrTeamSetup& setup, TeamPolicy& default_behaviour, int robots)
     : setup_(setup), default_(&default_behaviour), robots_(At(robots)) {
   for (Robot& r : robots_) {
@@ -82,7 +66,7 @@ RobotCommand CbrTeam::Decide(const Perception& p) {
 }
 
 void CbrTeam::Account(Robot& r, const Perception& p) {
-  if (r.last_time_s >= 0.0) phase_time_s_[At(static_cast<int>(r.phase))] += p.time_s - r.last_time_s;
+  if (r.last_time_s >= 0.0) counters_.phase_time_s[At(static_cast<int>(r.phase))] += p.time_s - r.last_time_s;
   r.last_time_s = p.time_s;
 }
 
@@ -165,7 +149,7 @@ void CbrTeam::StartCycle(Robot& r, const Perception& p) {
   const int coordinator = ChooseCoordinator(r.team, setup_.skills.team->retrievers);
   if (coordinator < 0) return;  // a retriever's report is due: try again next step
   ++r.cycle;
-  ++cycles_;
+  ++counters_.cycles;
   r.coordinator = coordinator;
   r.play.reset();
   Send(r, p, CbrMessageKind::kCoordinator, coordinator);
@@ -190,7 +174,7 @@ void CbrTeam::Retrieve(Robot& r, const Perception& p) {
   foresight::Retrieve(cases, problem, *setup_.skills.retrieval, &scratch_);
   const CaseEvaluation* chosen = ChooseCase(cases, problem);
   if (chosen == nullptr) {
-    ++no_case_;
+    ++counters_.no_case;
     Send(r, p, CbrMessageKind::kNoCase);
     Enter(r, CbrPhase::kIdle, p.time_s);
     r.idle_until_s = p.time_s + setup_.skills.team->no_case_retry_s;
@@ -201,8 +185,7 @@ void CbrTeam::Retrieve(Robot& r, const Perception& p) {
   for (int i = 0; i < e.correspondence.count; ++i) {
     robots[At(i)] = problem.teammates[At(e.correspondence.problem_index[At(i)])].id - 1;
   }
-  ++retrieved_;
-  ++(e.correspondence.count >= 2 ? cooperative_ : individual_);
+  counters_.CountCase(e.correspondence.count);
   Send(r, p, CbrMessageKind::kCase, e.case_index, PackRobots(robots));
   Adopt(r, p, r.cycle, e.case_index, robots, p.p_F_ball);
 }
@@ -221,7 +204,7 @@ const CaseEvaluation* CbrTeam::ChooseCase(std::span<const Case> cases, const Pro
     if (PassSuccess(path, problem.opponents, *setup_.skills.kicks, timing) >= timing.min_success) {
       return &e;
     }
-    ++timing_rejected_;
+    ++counters_.timing_rejected;
   }
   return nullptr;
 }
@@ -240,9 +223,7 @@ void CbrTeam::Adopt(Robot& r, const Perception& p, int cycle, int case_index,
 }
 
 void CbrTeam::Abort(Robot& r, const Perception& p, AbortReason reason) {
-  // Counted once per cycle: two robots may find the case inapplicable in the same step.
-  if (r.cycle != last_aborted_cycle_) ++aborts_[At(static_cast<int>(reason))];
-  last_aborted_cycle_ = r.cycle;
+  counters_.CountAbort(r.cycle, reason);
   Send(r, p, CbrMessageKind::kAbort, static_cast<int>(reason));
   r.play.reset();
   Enter(r, CbrPhase::kIdle, p.time_s);
@@ -357,43 +338,12 @@ RobotCommand CbrTeam::Default(const Perception& p) {
 }
 
 std::string CbrTeam::MessageName(const TeamMessage& m) const {
-  const auto kind = CbrKind(m);
-  if (!kind) return default_->MessageName(m);
-  std::string name = "cbr " + std::string(CbrMessageKindName(*kind)) + " cycle " +
-                     std::to_string(m.words[0]);
-  switch (*kind) {
-    case CbrMessageKind::kCoordinator:
-    case CbrMessageKind::kPassed:
-      return name + " robot " + std::to_string(m.words[1]);
-    case CbrMessageKind::kCase: {
-      const auto cases = setup_.cases->Defending(defending_);
-      if (m.words[1] < 0 || m.words[1] >= static_cast<int>(cases.size())) return name;
-      return name + " " + cases[At(m.words[1])].name;
-    }
-    case CbrMessageKind::kAbort:
-      if (m.words[1] < 0 || m.words[1] >= kAbortReasonCount) return name;
-      return name + " " + std::string(AbortReasonName(static_cast<AbortReason>(m.words[1])));
-    default:
-      return name;
-  }
+  return CbrKind(m) ? CbrMessageName(m, setup_.cases->Defending(defending_))
+                    : default_->MessageName(m);
 }
 
 std::vector<TeamPolicy::Counter> CbrTeam::Counters() const {
-  std::vector<Counter> c = {{"cycles", static_cast<double>(cycles_)},
-                            {"cases_retrieved", static_cast<double>(retrieved_)},
-                            {"cases_individual", static_cast<double>(individual_)},
-                            {"cases_cooperative", static_cast<double>(cooperative_)},
-                            {"no_case", static_cast<double>(no_case_)},
-                            {"timing_rejected", static_cast<double>(timing_rejected_)}};
-  for (int i = 0; i < kAbortReasonCount; ++i) {
-    c.push_back({"aborts_" + std::string(AbortReasonName(static_cast<AbortReason>(i))),
-                 static_cast<double>(aborts_[At(i)])});
-  }
-  for (int i = 0; i < kCbrPhaseCount; ++i) {
-    c.push_back({"robot_time_" + std::string(CbrPhaseName(static_cast<CbrPhase>(i))) + "_s",
-                 phase_time_s_[At(i)]});
-  }
-  return c;
+  return counters_.List();
 }
 
 }  // namespace foresight

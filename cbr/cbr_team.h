@@ -38,6 +38,7 @@
 #include "cbr/case_base.h"
 #include "cbr/coordination.h"
 #include "cbr/retrieval.h"
+#include "cbr/team_counters.h"
 
 namespace foresight {
 
@@ -45,10 +46,6 @@ struct CbrTeamSetup {
   const CaseBase* cases = nullptr;
   ActionContext skills;  // team, retrieval and kicks parameters, the shared low-level skills
 };
-
-enum class CbrPhase { kIdle, kAwaitCase, kAdapt, kExecute, kWaitEnd };
-inline constexpr int kCbrPhaseCount = 5;
-std::string_view CbrPhaseName(CbrPhase phase);
 
 class CbrTeam final : public TeamPolicy {
  public:
@@ -115,16 +112,7 @@ class CbrTeam final : public TeamPolicy {
   std::vector<Robot> robots_;
   RetrievalResult scratch_;
   std::vector<TeamMessage> default_inbox_;
-  // Counters (the experimenter's instruments, not shared knowledge of the robots).
-  int cycles_ = 0;
-  int retrieved_ = 0;
-  int individual_ = 0;
-  int cooperative_ = 0;
-  int no_case_ = 0;
-  int timing_rejected_ = 0;  // candidates the timing-aware pass check turned down
-  std::array<int, kAbortReasonCount> aborts_{};  // cycles aborted, by the first reason
-  int last_aborted_cycle_ = -1;
-  std::array<double, kCbrPhaseCount> phase_time_s_{};
+  CbrTeamCounters counters_;  // the experimenter's instruments (cbr/team_counters.h)
 };
 
 }  // namespace foresight

@@ -46,6 +46,27 @@ TeamMessage MakeCbrMessage(CbrMessageKind kind, int cycle, const Vec2& p_F_ball,
   return m;
 }
 
+std::string CbrMessageName(const TeamMessage& m, std::span<const Case> cases) {
+  const auto kind = CbrKind(m);
+  if (!kind) return std::to_string(m.kind);
+  std::string name = "cbr " + std::string(CbrMessageKindName(*kind)) + " cycle " +
+                     std::to_string(m.words[0]);
+  const int word = m.words[1];
+  switch (*kind) {
+    case CbrMessageKind::kCoordinator:
+    case CbrMessageKind::kPassed:
+      return name + " robot " + std::to_string(word);
+    case CbrMessageKind::kCase:
+      if (word < 0 || word >= static_cast<int>(cases.size())) return name;
+      return name + " " + cases[static_cast<std::size_t>(word)].name;
+    case CbrMessageKind::kAbort:
+      if (word < 0 || word >= kAbortReasonCount) return name;
+      return name + " " + std::string(AbortReasonName(static_cast<AbortReason>(word)));
+    default:
+      return name;
+  }
+}
+
 int PackRobots(const CaseRobots& robots) {
   int packed = 0;
   for (int i = kMaxTeammates - 1; i >= 0; --i) {

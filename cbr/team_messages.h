@@ -13,8 +13,11 @@
 
 #include <array>
 #include <optional>
+#include <span>
+#include <string>
 #include <string_view>
 
+#include "cbr/case.h"
 #include "cbr/correspondence.h"
 #include "models/team_policy.h"
 
@@ -44,6 +47,10 @@ std::optional<CbrMessageKind> CbrKind(const TeamMessage& message);
 
 TeamMessage MakeCbrMessage(CbrMessageKind kind, int cycle, const Vec2& p_F_ball,
                            double ball_distance_m, int word1 = 0, int word2 = 0);
+
+// How the event log names a CBR message: "cbr case cycle 3 back_pass/mirror_y", "cbr abort cycle
+// 4 ball_lost", "cbr coordinator cycle 2 robot 1", ...; `cases` are the team's (for case names).
+std::string CbrMessageName(const TeamMessage& message, std::span<const Case> cases);
 
 // The correspondence as robot indices per case teammate (-1: none), four bits each.
 using CaseRobots = std::array<int, kMaxTeammates>;

@@ -40,6 +40,7 @@
 #include "cbr/similarity.h"
 #include "cbr/symmetry.h"
 #include "cbr/synthetic_cases.h"
+#include "cbr/team_counters.h"
 #include "cbr/team_messages.h"
 #include "cbr/team_params.h"
 #include "common/checks.h"

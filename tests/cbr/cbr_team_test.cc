@@ -247,7 +247,12 @@ TEST_F(CbrTeamTest, AnIndividualCaseRunsThroughEveryState) {
   c.source = c.name;
   c.p_F_ball = Vec2(1.3, 0.2);
   c.ball_scope = {0.6, 0.5};
-  c.teammates = {{1, Vec2(1.0, 0.2), {{ActionType::kGetBall}, {ActionType::kKick, "forward", true}}}};
+  CaseAction get, kick;
+  get.type = ActionType::kGetBall;
+  kick.type = ActionType::kKick;
+  kick.kick = "forward";
+  kick.at_goal = true;
+  c.teammates = {{1, Vec2(1.0, 0.2), {get, kick}}};
   const CaseBase one({c}, base_.kick_mirrors);
   MakeTeam();
   setup_.cases = &one;

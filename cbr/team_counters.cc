@@ -1,0 +1,40 @@
+#include "cbr/team_counters.h"
+
+#include <string>
+
+namespace foresight {
+
+std::string_view CbrPhaseName(CbrPhase phase) {
+  constexpr std::string_view kNames[] = {"idle", "await_case", "adapt", "execute", "wait_end"};
+  return kNames[static_cast<int>(phase)];
+}
+
+void CbrTeamCounters::CountCase(int teammates) {
+  ++retrieved;
+  ++(teammates >= 2 ? cooperative : individual);
+}
+
+void CbrTeamCounters::CountAbort(int cycle, AbortReason reason) {
+  if (cycle != last_aborted_cycle) ++aborts[static_cast<std::size_t>(reason)];
+  last_aborted_cycle = cycle;
+}
+
+std::vector<TeamPolicy::Counter> CbrTeamCounters::List() const {
+  std::vector<TeamPolicy::Counter> c = {{"cycles", static_cast<double>(cycles)},
+                                        {"cases_retrieved", static_cast<double>(retrieved)},
+                                        {"cases_individual", static_cast<double>(individual)},
+                                        {"cases_cooperative", static_cast<double>(cooperative)},
+                                        {"no_case", static_cast<double>(no_case)},
+                                        {"timing_rejected", static_cast<double>(timing_rejected)}};
+  for (int i = 0; i < kAbortReasonCount; ++i) {
+    c.push_back({"aborts_" + std::string(AbortReasonName(static_cast<AbortReason>(i))),
+                 static_cast<double>(aborts[static_cast<std::size_t>(i)])});
+  }
+  for (int i = 0; i < kCbrPhaseCount; ++i) {
+    c.push_back({"robot_time_" + std::string(CbrPhaseName(static_cast<CbrPhase>(i))) + "_s",
+                 phase_time_s[static_cast<std::size_t>(i)]});
+  }
+  return c;
+}
+
+}  // namespace foresight

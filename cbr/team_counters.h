@@ -1,0 +1,39 @@
+// What the CBR team counts about itself for the experiments' tables (Ros et al. 2009, Table 3:
+// cases retrieved per trial, individualistic vs cooperative; beyond it: cycles, "no case",
+// aborts by reason, the robots' time in each state of Fig. 10). The experimenter's instruments:
+// no robot reads them, so counting them in one place shares nothing between the robots.
+#pragma once
+
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include "cbr/team_messages.h"
+#include "models/team_policy.h"
+
+namespace foresight {
+
+// The states of the reuse FSM (Fig. 10) plus the two before a case is known.
+enum class CbrPhase { kIdle, kAwaitCase, kAdapt, kExecute, kWaitEnd };
+inline constexpr int kCbrPhaseCount = 5;
+std::string_view CbrPhaseName(CbrPhase phase);
+
+struct CbrTeamCounters {
+  int cycles = 0;
+  int retrieved = 0;
+  int individual = 0;
+  int cooperative = 0;
+  int no_case = 0;
+  int timing_rejected = 0;  // candidates the timing-aware pass check turned down
+  std::array<int, kAbortReasonCount> aborts{};  // cycles aborted, by the first reason
+  int last_aborted_cycle = -1;
+  std::array<double, kCbrPhaseCount> phase_time_s{};  // summed over the robots
+
+  void CountCase(int teammates);
+  // Once per cycle: two robots may find the case inapplicable in the same step.
+  void CountAbort(int cycle, AbortReason reason);
+  // "cycles", "cases_retrieved", ..., "aborts_ball_lost", ..., "robot_time_adapt_s", ...
+  std::vector<TeamPolicy::Counter> List() const;
+};
+
+}  // namespace foresight
