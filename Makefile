@@ -8,7 +8,7 @@ STRATEGY ?= optimal_all
 
 FUZZ_RUNS ?= 20000
 
-.PHONY: setup build test main demo experiments experiments-quick bench same-bytes sanitize fuzz clean
+.PHONY: setup build test main demo deb experiments experiments-quick bench same-bytes sanitize fuzz clean
 
 setup:
 	@bash scripts/setup.sh
@@ -36,6 +36,14 @@ main: build
 	@echo
 	@echo "calibrated kick model: out/nao_calibrated.json"
 	@echo "reports: out/calibration/calibration.html and out/fidelity/fidelity.html"
+
+# The Debian package $(BUILD)/foresight_<version>_amd64.deb (issue 17), built for prefix /usr so
+# that programs linked against its libraries find its data; install it with
+# `apt-get install ./$(BUILD)/foresight_*_amd64.deb`.
+deb: setup
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=/usr >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS) --target foresight
+	@cd $(BUILD) && cpack -G DEB
 
 # A decision on a shipped situation, printed and drawn.
 demo: build

@@ -13,6 +13,7 @@
 #include "app/fidelity_command.h"
 #include "app/simulate_command.h"
 #include "common/error.h"
+#include "models/model_paths.h"
 
 namespace {
 
@@ -51,7 +52,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", FORESIGHT_VERSION);
   app.require_subcommand(1);
   std::string models_dir;
-  app.add_option("--models", models_dir, "Folder of the shipped data (default: the source tree's)");
+  app.add_option("--models", models_dir,
+                 "Folder of the shipped data (default: " + foresight::DefaultModelsDir().string() +
+                     ")");
   foresight::DecideOptions decide;
   foresight::AddDecideCommand(app, decide);
   foresight::SimulateOptions simulate;
