@@ -78,7 +78,7 @@ same-bytes: setup
 # AddressSanitizer + UndefinedBehaviorSanitizer build of everything, then the tests and two real
 # runs (a small fidelity report and the strategies experiment).
 sanitize: setup
-	@cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DFORESIGHT_SANITIZE=ON -DFORESIGHT_BUILD_BENCH=OFF >/dev/null
+	@cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DFORESIGHT_SANITIZE=ON -DFORESIGHT_BUILD_BENCH=OFF -DFORESIGHT_BUILD_PYTHON=OFF >/dev/null
 	@cmake --build build-asan -j $(JOBS)
 	@ctest --test-dir build-asan --output-on-failure -j $(JOBS)
 	@build-asan/app/foresight fidelity --situations quick --trials 4 --converged 200 --out build-asan/sanitize-fidelity >/dev/null

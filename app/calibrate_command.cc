@@ -194,11 +194,9 @@ int RunVariationFit(const CalibrateOptions& options, const std::filesystem::path
 
 }  // namespace
 
-int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir) {
+CalibrationRun CalibrateInMemory(const CalibrateOptions& options,
+                                 const std::filesystem::path& models) {
   const auto start = std::chrono::steady_clock::now();
-  const std::filesystem::path models =
-      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
-  if (options.fit_variation) return RunVariationFit(options, models);
   CalibrationRun run;
   run.provenance.version = FORESIGHT_VERSION;
   run.robot = options.robot;
@@ -229,6 +227,14 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
   Fit(run);
   run.provenance.run_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir) {
+  const std::filesystem::path models =
+      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+  if (options.fit_variation) return RunVariationFit(options, models);
+  const CalibrationRun run = CalibrateInMemory(options, models);
 
   // Everything is made before anything is written.
   const std::string model = KickModelJson(run.fitted, ModelNotes(run));

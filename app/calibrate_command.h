@@ -3,10 +3,12 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <string>
 
 #include "app/cli_values.h"
 #include "validation/calibration.h"
+#include "validation/calibration_report.h"
 
 namespace foresight {
 
@@ -32,5 +34,10 @@ struct CalibrateOptions {
 
 void AddCalibrateCommand(CLI::App& app, CalibrateOptions& options);
 int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir);
+
+// The calibration (physics or --from-csv) and its fit, without writing anything (the Python
+// module's calibrate); options.out_file and report_dir may be empty.
+CalibrationRun CalibrateInMemory(const CalibrateOptions& options,
+                                 const std::filesystem::path& models);
 
 }  // namespace foresight

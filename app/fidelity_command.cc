@@ -64,7 +64,7 @@ FidelityPlan PlanFidelity(const FidelityOptions& options, const std::filesystem:
   run.settings.threads = ParseCount("--threads", options.threads, 0, 1024);
   run.settings.physics_file = options.physics_file;
   run.settings.progress = TerminalProgress("fidelity:", "situations");
-  CheckReportDir(options.out_dir, "--out");  // before the work, not after
+  if (!options.out_dir.empty()) CheckReportDir(options.out_dir, "--out");  // before the work
   plan.set = LoadFidelitySet(options.situations, models, options.kicks_file);
   run.provenance.inputs = {{"situations_set", plan.set.name},
                            {"set_file", DisplayPath(plan.set.file, models)},
@@ -108,6 +108,17 @@ int RunFidelityCommand(const FidelityOptions& options, const std::string& models
   run.provenance.run_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return WriteFidelityReport(options.out_dir, run);
+}
+
+FidelityRun RunFidelityInMemory(const FidelityOptions& options,
+                                const std::filesystem::path& models) {
+  const auto start = std::chrono::steady_clock::now();
+  FidelityPlan plan = PlanFidelity(options, models);
+  plan.run.settings.progress = {};
+  plan.run.result = RunFidelity(plan.set, models, plan.run.settings);
+  plan.run.provenance.run_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return std::move(plan.run);
 }
 
 int MergeFidelityCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,

@@ -10,6 +10,7 @@
 #include "app/cli_values.h"
 #include "report/shard_file.h"
 #include "validation/fidelity.h"
+#include "validation/fidelity_report.h"
 
 namespace foresight {
 
@@ -31,6 +32,10 @@ struct FidelityOptions {
 
 void AddFidelityCommand(CLI::App& app, FidelityOptions& options);
 int RunFidelityCommand(const FidelityOptions& options, const std::string& models_dir);
+
+// The whole run without writing anything (the Python module's fidelity); options.out_dir empty.
+FidelityRun RunFidelityInMemory(const FidelityOptions& options,
+                                const std::filesystem::path& models);
 
 // `foresight merge` of a sharded fidelity run into the report folder `out_dir`.
 inline constexpr char kFidelityCommand[] = "fidelity";
