@@ -18,6 +18,8 @@ build: setup
 	@cmake --build $(BUILD) -j $(JOBS)
 
 # The test command (CI runs it through .ci/run): the GoogleTest suite with the layering check,
+# the installed package's consumer project, the Python module's pytest suite, sharded runs with
+# GNU parallel and on a one-node Slurm cluster (issue 17),
 # the physics checks of models/check_specs/default.json (JUnit XML in
 # $(BUILD)/check-junit.xml) and the check of the shipped case base.
 test: build
