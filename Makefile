@@ -44,7 +44,7 @@ main: build
 # `apt-get install ./$(BUILD)/foresight_*_amd64.deb`.
 deb: setup
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=/usr >/dev/null
-	@cmake --build $(BUILD) -j $(JOBS) --target foresight
+	@cmake --build $(BUILD) -j $(JOBS)
 	@cd $(BUILD) && cpack -G DEB
 
 # A decision on a shipped situation, printed and drawn.

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "app/calibrate_command.h"
 #include "app/experiment_command.h"
 #include "app/fidelity_command.h"
 #include "common/error.h"
@@ -28,6 +29,7 @@ int RunMergeCommand(const MergeOptions& options, const std::string& models_dir) 
   if (IsExperimentShardCommand(command))
     return MergeExperimentShards(parts, options.out_dir, models);
   if (command == kFidelityCommand) return MergeFidelityCommand(parts, options.out_dir, models);
+  if (command == "calibrate") return MergeCalibrationCommand(parts, options.out_dir, models);
   throw InputError(parts.front().file.string() + ": command: '" + command +
                    "' is not a command that runs in shards");
 }

@@ -19,6 +19,10 @@ foreach(lib IN LISTS foresight_libraries)
     FILES_MATCHING PATTERN "*.h")
 endforeach()
 install(TARGETS foresight RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The Python module where Debian's python3 finds it (PREFIX/lib/python3/dist-packages).
+if(TARGET foresight_python)
+  install(TARGETS foresight_python LIBRARY DESTINATION lib/python3/dist-packages)
+endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/models/ DESTINATION ${FORESIGHT_INSTALL_MODELS_DIR}
   PATTERN "*.h" EXCLUDE PATTERN "*.cc" EXCLUDE PATTERN "CMakeLists.txt" EXCLUDE)
 
@@ -49,4 +53,6 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
   "libeigen3-dev, nlohmann-json3-dev, libbullet-dev, liburdfdom-dev, libassimp-dev, pkg-config")
+# The Python module needs NumPy for simulate's arrays.
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3, python3-numpy")
 include(CPack)

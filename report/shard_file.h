@@ -68,6 +68,7 @@ class ShardValue {
   int Int() const;
   bool Bool() const;
   std::string String() const;
+  bool IsNull() const { return value_->is_null(); }
   [[noreturn]] void Fail(const std::string& problem) const;
 
  private:

@@ -137,6 +137,7 @@
 #include "validation/calibration.h"
 #include "validation/calibration_html.h"
 #include "validation/calibration_report.h"
+#include "validation/calibration_shard.h"
 #include "validation/candidate_grid.h"
 #include "validation/check_kinds.h"
 #include "validation/deceleration_fit.h"
