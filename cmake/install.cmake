@@ -21,7 +21,7 @@ endforeach()
 install(TARGETS foresight RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The Python module where Debian's python3 finds it (PREFIX/lib/python3/dist-packages).
 if(TARGET foresight_python)
-  install(TARGETS foresight_python LIBRARY DESTINATION lib/python3/dist-packages)
+  install(TARGETS foresight_python LIBRARY DESTINATION ${FORESIGHT_INSTALL_PYTHON_DIR})
 endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/models/ DESTINATION ${FORESIGHT_INSTALL_MODELS_DIR}
   PATTERN "*.h" EXCLUDE PATTERN "*.cc" EXCLUDE PATTERN "CMakeLists.txt" EXCLUDE)

@@ -1,5 +1,7 @@
 #include "models/model_paths.h"
 
+#include <dlfcn.h>
+
 #include <cstdlib>
 #include <system_error>
 
@@ -31,11 +33,18 @@ std::filesystem::path DefaultModelsDir() {
     return env;
   }
   // An installed binary (PREFIX/bin) finds PREFIX/share/foresight/models, wherever the tree was
-  // moved; a binary in the build tree has no such folder beside it.
+  // moved; so does the installed Python module (PREFIX/lib/python3/dist-packages), whose
+  // process is python3. A binary in the build tree has no such folder beside it.
   std::error_code error;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
   if (!error) {
     const std::filesystem::path beside = exe.parent_path() / FORESIGHT_MODELS_FROM_BIN;
+    if (std::filesystem::is_directory(beside, error)) return beside.lexically_normal();
+  }
+  Dl_info self{};
+  if (dladdr(reinterpret_cast<void*>(&DefaultModelsDir), &self) != 0 && self.dli_fname != nullptr) {
+    const std::filesystem::path beside =
+        std::filesystem::path(self.dli_fname).parent_path() / FORESIGHT_MODELS_FROM_PYTHON;
     if (std::filesystem::is_directory(beside, error)) return beside.lexically_normal();
   }
   // Compile definitions: the source tree's models/, then the install prefix's data folder (a

@@ -21,6 +21,13 @@ situation=$data/situations/near_goal_corner.json
 "$prefix/bin/foresight" --help | grep -F -- "(default: $data)" >/dev/null ||
   { echo "consumer_test: the installed foresight does not find $data"; exit 1; }
 
+# So does the moved Python module (its process is python3, so it looks beside the module).
+if [ -d "$prefix/lib/python3/dist-packages" ]; then
+  found=$(PYTHONPATH=$prefix/lib/python3/dist-packages /usr/bin/python3 -c \
+    'import foresight; print(foresight.models_dir())')
+  [ "$found" = "$data" ] || { echo "consumer_test: the installed module finds $found, not $data"; exit 1; }
+fi
+
 cmake -S "$source_dir/tests/package/consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$prefix" >"$work/configure.log" || { cat "$work/configure.log"; exit 1; }
 cmake --build "$work/consumer" >"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
