@@ -8,7 +8,7 @@ STRATEGY ?= optimal_all
 
 FUZZ_RUNS ?= 20000
 
-.PHONY: setup build test main demo experiments experiments-quick bench same-bytes sanitize fuzz clean
+.PHONY: setup build test main demo deb experiments experiments-quick bench same-bytes sanitize fuzz clean
 
 setup:
 	@bash scripts/setup.sh
@@ -18,6 +18,8 @@ build: setup
 	@cmake --build $(BUILD) -j $(JOBS)
 
 # The test command (CI runs it through .ci/run): the GoogleTest suite with the layering check,
+# the installed package's consumer project, the Python module's pytest suite, sharded runs with
+# GNU parallel and on a one-node Slurm cluster (issue 17),
 # the physics checks of models/check_specs/default.json (JUnit XML in
 # $(BUILD)/check-junit.xml) and the check of the shipped case base.
 test: build
@@ -36,6 +38,14 @@ main: build
 	@echo
 	@echo "calibrated kick model: out/nao_calibrated.json"
 	@echo "reports: out/calibration/calibration.html and out/fidelity/fidelity.html"
+
+# The Debian package $(BUILD)/foresight_<version>_amd64.deb (issue 17), built for prefix /usr so
+# that programs linked against its libraries find its data; install it with
+# `apt-get install ./$(BUILD)/foresight_*_amd64.deb`.
+deb: setup
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=/usr >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS)
+	@cd $(BUILD) && cpack -G DEB
 
 # A decision on a shipped situation, printed and drawn.
 demo: build
@@ -70,7 +80,7 @@ same-bytes: setup
 # AddressSanitizer + UndefinedBehaviorSanitizer build of everything, then the tests and two real
 # runs (a small fidelity report and the strategies experiment).
 sanitize: setup
-	@cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DFORESIGHT_SANITIZE=ON -DFORESIGHT_BUILD_BENCH=OFF >/dev/null
+	@cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DFORESIGHT_SANITIZE=ON -DFORESIGHT_BUILD_BENCH=OFF -DFORESIGHT_BUILD_PYTHON=OFF >/dev/null
 	@cmake --build build-asan -j $(JOBS)
 	@ctest --test-dir build-asan --output-on-failure -j $(JOBS)
 	@build-asan/app/foresight fidelity --situations quick --trials 4 --converged 200 --out build-asan/sanitize-fidelity >/dev/null

@@ -6,12 +6,14 @@
 
 #include "app/cli_values.h"
 #include "app/report_text.h"
+#include "app/shard_output.h"
 #include "app/variation_fit_output.h"
 #include "common/error.h"
 #include "models/model_paths.h"
 #include "report/atomic_file.h"
 #include "validation/calibration_html.h"
 #include "validation/calibration_report.h"
+#include "validation/calibration_shard.h"
 #include "validation/observed_kicks.h"
 #include "validation/physics_calibration.h"
 #include "validation/variation_fit.h"
@@ -30,8 +32,9 @@ std::vector<std::string> ChosenKicks(const CalibrateOptions& options,
   return ChooseKicks(options.all ? "" : options.kick, available, "--kick", where);
 }
 
+// The physics calibration of the flags: played, or (`parts`) merged from its shards.
 void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem::path& models,
-                          CalibrationRun& run) {
+                          CalibrationRun& run, const std::vector<ShardPart>* parts) {
   PhysicsCalibrationSettings settings;
   settings.robot = options.robot;
   settings.kick = options.all ? "" : options.kick;
@@ -44,7 +47,13 @@ void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem
   settings.progress = [](const std::string& kick) {
     return TerminalProgress("calibrate " + kick + ":", "trials");
   };
-  PhysicsCalibration physics = RunPhysicsCalibration(settings, models);
+  PhysicsCalibration physics;
+  if (parts) {
+    physics = PlanPhysicsCalibration(settings, models);
+    MergeCalibrationShards(physics, settings.trials, *parts);
+  } else {
+    physics = RunPhysicsCalibration(settings, models);
+  }
   run.source = "physics";
   run.provenance.SetInput("situation", DisplayPath(physics.situation_file, models));
   run.provenance.SetInput("physics", DisplayPath(physics.physics_file, models));
@@ -158,6 +167,9 @@ void AddCalibrateCommand(CLI::App& app, CalibrateOptions& options) {
       ->capture_default_str();
   cmd->add_option("--confidence", options.confidence, "Interval level")->capture_default_str();
   cmd->add_option("--resamples", options.resamples, "Bootstrap resamples")->capture_default_str();
+  cmd->add_option("--shard", options.shard,
+                  "Play only the trials i with i mod N = I of every kick (I/N, from 0) and write "
+                  "the folder --out; `foresight merge` fits and reports from all N");
 }
 
 namespace {
@@ -194,11 +206,10 @@ int RunVariationFit(const CalibrateOptions& options, const std::filesystem::path
 
 }  // namespace
 
-int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir) {
+CalibrationRun CalibrateInMemory(const CalibrateOptions& options,
+                                 const std::filesystem::path& models,
+                                 const std::vector<ShardPart>* parts) {
   const auto start = std::chrono::steady_clock::now();
-  const std::filesystem::path models =
-      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
-  if (options.fit_variation) return RunVariationFit(options, models);
   CalibrationRun run;
   run.provenance.version = FORESIGHT_VERSION;
   run.robot = options.robot;
@@ -222,14 +233,95 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
   CheckOutputs(options);  // before the work, not after
   if (options.from_csv.empty()) {
     if (options.kick.empty() && !options.all) throw InputError("--kick or --all: say which kicks");
-    CalibrateFromPhysics(options, models, run);
+    CalibrateFromPhysics(options, models, run, parts);
   } else {
     CalibrateFromCsv(options, run, run.base);
   }
   Fit(run);
   run.provenance.run_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
 
+namespace {
+
+constexpr char kCalibrateCommand[] = "calibrate";
+
+// The flags that decide a physics calibration's results, as a shard records them.
+nlohmann::ordered_json CalibrateSettings(const CalibrateOptions& o) {
+  return {{"--robot", o.robot},       {"--kick", o.kick},         {"--all", o.all},
+          {"--trials", o.trials},     {"--seed", o.seed},         {"--situation", o.situation_file},
+          {"--kicks", o.kicks_file},  {"--physics", o.physics_file},
+          {"--confidence", o.confidence}, {"--resamples", o.resamples}};
+}
+
+// --shard: this shard's trials of every kick into the folder --out.
+int RunCalibrationShard(const CalibrateOptions& options, const Shard& shard,
+                        const std::filesystem::path& models) {
+  const auto start = std::chrono::steady_clock::now();
+  if (!options.from_csv.empty() || options.fit_variation || !options.report_dir.empty())
+    throw InputError("--shard: only for physics calibration, with --out DIR and no --report");
+  if (options.kick.empty() && !options.all) throw InputError("--kick or --all: say which kicks");
+  CheckReportDir(options.out_file, "--out");
+  PhysicsCalibrationSettings settings;
+  settings.robot = options.robot;
+  settings.kick = options.all ? "" : options.kick;
+  const int trials = ParseCount("--trials", options.trials, 8, kMaxTrials);
+  settings.trials = trials;
+  settings.seed = ParseSeed(options.seed);
+  settings.threads = ParseCount("--threads", options.threads, 0, kMaxThreads);
+  settings.situation_file = options.situation_file;
+  settings.kicks_file = options.kicks_file;
+  settings.physics_file = options.physics_file;
+  settings.shard = shard;
+  const PhysicsCalibration part = RunPhysicsCalibration(settings, models);
+  const ShardHeader header{kCalibrateCommand, FORESIGHT_VERSION, shard, CalibrateSettings(options),
+                           trials};
+  WriteShardFolder(options.out_file, header, CalibrationShardResults(part, shard, trials), start,
+                   "trials per kick");
+  return 0;
+}
+
+}  // namespace
+
+int WriteCalibration(const CalibrateOptions& options, const CalibrationRun& run);
+
+int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir) {
+  const std::filesystem::path models =
+      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+  if (const std::optional<Shard> shard = ParseShardFlag(options.shard))
+    return RunCalibrationShard(options, *shard, models);
+  if (options.fit_variation) return RunVariationFit(options, models);
+  return WriteCalibration(options, CalibrateInMemory(options, models));
+}
+
+int MergeCalibrationCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
+                            const std::filesystem::path& models) {
+  const ShardPart& first = parts.front();
+  CalibrateOptions options;
+  options.robot = SettingString(first, "--robot");
+  options.kick = SettingString(first, "--kick");
+  options.all = SettingFlag(first, "--all");
+  options.trials = SettingString(first, "--trials");
+  options.seed = SettingString(first, "--seed");
+  options.situation_file = SettingString(first, "--situation");
+  options.kicks_file = SettingString(first, "--kicks");
+  options.physics_file = SettingString(first, "--physics");
+  options.confidence = SettingString(first, "--confidence");
+  options.resamples = SettingString(first, "--resamples");
+  // What `calibrate --report DIR --out DIR/ROBOT_calibrated.json` writes.
+  options.report_dir = out_dir;
+  options.out_file = (std::filesystem::path(out_dir) / (options.robot + "_calibrated.json")).string();
+  if (first.header.items != ParseCount("--trials", options.trials, 8, kMaxTrials)) {
+    throw InputError(first.file.string() + ": items: " + std::to_string(first.header.items) +
+                     " trials, but settings.--trials is " + options.trials);
+  }
+  CalibrationRun run = CalibrateInMemory(options, models, &parts);
+  run.provenance.run_time_s = ShardsRunTime(parts);
+  return WriteCalibration(options, run);
+}
+
+int WriteCalibration(const CalibrateOptions& options, const CalibrationRun& run) {
   // Everything is made before anything is written.
   const std::string model = KickModelJson(run.fitted, ModelNotes(run));
   ReportFiles files;

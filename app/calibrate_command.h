@@ -3,10 +3,14 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "app/cli_values.h"
+#include "report/shard_file.h"
 #include "validation/calibration.h"
+#include "validation/calibration_report.h"
 
 namespace foresight {
 
@@ -28,9 +32,21 @@ struct CalibrateOptions {
   // The defaults of the fit are CalibrationSettings' (shown by --help).
   std::string confidence = DefaultText(CalibrationSettings{}.confidence);
   std::string resamples = std::to_string(CalibrationSettings{}.resamples);
+  std::string shard;  // "I/N": only that shard, --out is then its folder (app/shard_output.h)
 };
 
 void AddCalibrateCommand(CLI::App& app, CalibrateOptions& options);
 int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir);
+
+// The calibration (physics or --from-csv) and its fit, without writing anything (the Python
+// module's calibrate); options.out_file and report_dir may be empty.
+CalibrationRun CalibrateInMemory(const CalibrateOptions& options,
+                                 const std::filesystem::path& models,
+                                 const std::vector<ShardPart>* parts = nullptr);
+
+// `foresight merge` of a sharded physics calibration into `out_dir`: what
+// `calibrate --report DIR --out DIR/ROBOT_calibrated.json` writes.
+int MergeCalibrationCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
+                            const std::filesystem::path& models);
 
 }  // namespace foresight

@@ -27,7 +27,12 @@ void AddDecideCommand(CLI::App& app, DecideOptions& options) {
   cmd->add_option("--svg", options.svg_file, "Draw the field and every sample's rest position");
 }
 
-int RunDecide(const DecideOptions& options, const std::string& models_dir) {
+namespace {
+
+// Loads the situation, decides and hands the decided run to `use` (the planner lives only as
+// long as the call).
+template <typename Use>
+auto WithDecision(const DecideOptions& options, const std::filesystem::path& models, Use&& use) {
   const std::optional<Strategy> strategy = ParseStrategy(options.strategy);
   if (!strategy) {
     throw InputError("--strategy: unknown strategy '" + options.strategy +
@@ -39,29 +44,42 @@ int RunDecide(const DecideOptions& options, const std::string& models_dir) {
   const std::uint64_t seed = ParseSeed(options.seed);
   SituationOverrides overrides;
   overrides.kicks_file = options.kicks_file;
-  const std::filesystem::path models =
-      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
   const Situation situation = LoadSituation(options.situation_file, models, overrides);
   const int samples = samples_given ? samples_flag : situation.evaluation.samples;
 
   const CoarsePlanner planner(situation);
-  DecisionRun run{options.situation_file,
-                  &planner,
-                  planner.Decide(*strategy, samples, seed),
-                  samples,
-                  seed,
-                  models};
-  // Everything is made before anything is written, so a failure leaves no file behind.
-  const std::string printed =
-      options.json ? DecisionJson(run).dump(2, ' ', false,
-                                            nlohmann::ordered_json::error_handler_t::replace) +
-                         "\n"
-                   : DecisionText(run);
-  const std::string drawing = options.svg_file.empty() ? "" : DecisionSvg(run);
-  if (!options.svg_file.empty()) WriteFileAtomically(options.svg_file, drawing);
-  std::cout << printed << std::flush;
-  if (!std::cout) throw InputError("cannot write to standard output");
-  return 0;
+  const DecisionRun run{options.situation_file,
+                        &planner,
+                        planner.Decide(*strategy, samples, seed),
+                        samples,
+                        seed,
+                        models};
+  return use(run);
+}
+
+}  // namespace
+
+nlohmann::ordered_json DecideJson(const DecideOptions& options,
+                                  const std::filesystem::path& models) {
+  return WithDecision(options, models, [](const DecisionRun& run) { return DecisionJson(run); });
+}
+
+int RunDecide(const DecideOptions& options, const std::string& models_dir) {
+  const std::filesystem::path models =
+      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+  return WithDecision(options, models, [&](const DecisionRun& run) {
+    // Everything is made before anything is written, so a failure leaves no file behind.
+    const std::string printed =
+        options.json ? DecisionJson(run).dump(2, ' ', false,
+                                              nlohmann::ordered_json::error_handler_t::replace) +
+                           "\n"
+                     : DecisionText(run);
+    const std::string drawing = options.svg_file.empty() ? "" : DecisionSvg(run);
+    if (!options.svg_file.empty()) WriteFileAtomically(options.svg_file, drawing);
+    std::cout << printed << std::flush;
+    if (!std::cout) throw InputError("cannot write to standard output");
+    return 0;
+  });
 }
 
 }  // namespace foresight

@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace foresight {
@@ -21,5 +23,8 @@ void AddDecideCommand(CLI::App& app, DecideOptions& options);
 
 // Runs the command; bad input throws InputError. Returns the exit code.
 int RunDecide(const DecideOptions& options, const std::string& models_dir);
+
+// What `decide --json` prints, without printing it (the Python module's decide).
+nlohmann::ordered_json DecideJson(const DecideOptions& options, const std::filesystem::path& models);
 
 }  // namespace foresight

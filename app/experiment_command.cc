@@ -6,6 +6,7 @@
 #include "app/cli_values.h"
 #include "app/passing_physics.h"
 #include "app/report_text.h"
+#include "app/shard_output.h"
 #include "common/error.h"
 #include "experiments/passing_ablations.h"
 #include "experiments/passing_comparison.h"
@@ -14,6 +15,8 @@
 #include "experiments/passing_replay.h"
 #include "experiments/passing_report.h"
 #include "experiments/stability_report.h"
+#include "experiments/stability_shard.h"
+#include "experiments/strategies_shard.h"
 #include "experiments/strategies_report.h"
 #include "models/model_paths.h"
 #include "physics/physics_setup.h"
@@ -67,6 +70,7 @@ void AddStability(CLI::App& experiment, StabilityOptions& o) {
   cmd->add_option("--seed", o.seed, "Random seed")->capture_default_str();
   cmd->add_option("--threads", o.threads, "Worker threads (0: all cores)")->capture_default_str();
   cmd->add_option("--out", o.out_dir, "Folder for the results")->required();
+  AddShardOption(*cmd, o.shard);
 }
 
 void AddStrategies(CLI::App& experiment, StrategiesOptions& o) {
@@ -82,13 +86,34 @@ void AddStrategies(CLI::App& experiment, StrategiesOptions& o) {
   cmd->add_option("--seed", o.seed, "Random seed")->capture_default_str();
   cmd->add_option("--threads", o.threads, "Worker threads (0: all cores)")->capture_default_str();
   cmd->add_option("--out", o.out_dir, "Folder for the results")->required();
+  AddShardOption(*cmd, o.shard);
 }
 
-int RunStability(const StabilityOptions& o, const std::filesystem::path& models) {
-  const auto start = std::chrono::steady_clock::now();
+constexpr char kStabilityCommand[] = "experiment stability";
+
+// The flags that decide a stability run's results, as a shard records them.
+nlohmann::ordered_json StabilitySettings(const StabilityOptions& o) {
+  return {{"--params", o.params},   {"--quick", o.quick},     {"--kicks", o.kicks_file},
+          {"--strategy", o.strategy}, {"--repeats", o.repeats}, {"--samples", o.samples},
+          {"--seed", o.seed}};
+}
+
+StabilityOptions StabilityOptionsOf(const ShardPart& part, const std::string& out_dir) {
+  StabilityOptions o;
+  o.params = SettingString(part, "--params");
+  o.quick = SettingFlag(part, "--quick");
+  o.kicks_file = SettingString(part, "--kicks");
+  o.strategy = SettingString(part, "--strategy");
+  o.repeats = SettingString(part, "--repeats");
+  o.samples = SettingString(part, "--samples");
+  o.seed = SettingString(part, "--seed");
+  o.out_dir = out_dir;
+  return o;
+}
+
+// The params of the flags, checked, and the report folder checked before the work.
+StabilityParams LoadStabilityRun(const StabilityOptions& o, const std::filesystem::path& models) {
   if (o.quick && !o.params.empty()) throw InputError("--quick and --params exclude each other");
-  const std::uint64_t seed = ParseSeed(o.seed);
-  const int threads = ParseCount("--threads", o.threads, 0, 1024);
   const std::string name =
       o.params.empty() ? (o.quick ? "stability_quick" : "stability") : o.params;
   StabilityParams params = LoadStabilityParams(name, models, o.kicks_file);
@@ -110,60 +135,164 @@ int RunStability(const StabilityOptions& o, const std::filesystem::path& models)
   WithFile("--strategy/--repeats/--samples with " + DisplayPath(params.file, models),
            [&] { params.Validate(); });
   CheckReportDir(o.out_dir, "--out");  // before hours of work, not after
+  return params;
+}
 
-  StabilityRun run;
-  run.provenance = ExperimentProvenance(params.file, params.situation, seed, models);
-  run.params = &params;
-  run.result = RunStability(params, seed, threads, TerminalProgress("stability:", "poses"));
-  run.provenance.run_time_s = SecondsSince(start);
-
-  const std::filesystem::path dir(o.out_dir);
+void WriteStabilityReport(const std::string& out_dir, const StabilityRun& run) {
+  const std::filesystem::path dir(out_dir);
   const ReportFiles files = {{dir / "stability.json", StabilityJson(run).dump(2) + "\n"},
                              {dir / "stability.csv", StabilityCountsCsv(run)},
                              {dir / "stability_positions.csv", StabilityPositionsCsv(run)},
                              {dir / "stability.svg", StabilityPlotSvg(run)},
                              {dir / "stability_map.svg", StabilityMapSvg(run)}};
-  WriteReport(o.out_dir, files, StabilityText(run), "stability.svg");
+  WriteReport(out_dir, files, StabilityText(run), "stability.svg");
+}
+
+int RunStability(const StabilityOptions& o, const std::filesystem::path& models) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::uint64_t seed = ParseSeed(o.seed);
+  const int threads = ParseCount("--threads", o.threads, 0, 1024);
+  const std::optional<Shard> shard = ParseShardFlag(o.shard);
+  const StabilityParams params = LoadStabilityRun(o, models);
+  const auto progress = TerminalProgress("stability:", "poses");
+  if (shard) {
+    const StabilityResult part = RunStability(params, seed, threads, progress, *shard);
+    const ShardHeader header{kStabilityCommand, FORESIGHT_VERSION,  *shard,
+                             StabilitySettings(o), StabilityItems(params)};
+    WriteShardFolder(o.out_dir, header, StabilityShardResults(part, *shard), start, "poses");
+    return 0;
+  }
+  StabilityRun run;
+  run.provenance = ExperimentProvenance(params.file, params.situation, seed, models);
+  run.params = &params;
+  run.result = RunStability(params, seed, threads, progress);
+  run.provenance.run_time_s = SecondsSince(start);
+  WriteStabilityReport(o.out_dir, run);
   return 0;
+}
+
+int MergeStability(const std::vector<ShardPart>& parts, const std::string& out_dir,
+                   const std::filesystem::path& models) {
+  const StabilityOptions o = StabilityOptionsOf(parts.front(), out_dir);
+  const std::uint64_t seed = ParseSeed(o.seed);
+  const StabilityParams params = LoadStabilityRun(o, models);
+  if (parts.front().header.items != StabilityItems(params)) {
+    throw InputError(parts.front().file.string() + ": items: " +
+                     std::to_string(parts.front().header.items) + " poses, but the run has " +
+                     std::to_string(StabilityItems(params)) + " here (other data files?)");
+  }
+  StabilityRun run;
+  run.provenance = ExperimentProvenance(params.file, params.situation, seed, models);
+  run.params = &params;
+  run.result = MergeStabilityShards(params, parts);
+  run.provenance.run_time_s = ShardsRunTime(parts);
+  WriteStabilityReport(out_dir, run);
+  return 0;
+}
+
+constexpr char kStrategiesCommand[] = "experiment strategies";
+
+// The flags that decide a strategies run's results, as a shard records them.
+nlohmann::ordered_json StrategiesSettings(const StrategiesOptions& o) {
+  return {{"--params", o.params}, {"--kicks", o.kicks_file},         {"--starts", o.starts},
+          {"--physics", o.physics}, {"--physics-file", o.physics_file}, {"--seed", o.seed}};
+}
+
+StrategiesOptions StrategiesOptionsOf(const ShardPart& part, const std::string& out_dir) {
+  StrategiesOptions o;
+  o.params = SettingString(part, "--params");
+  o.kicks_file = SettingString(part, "--kicks");
+  o.starts = SettingString(part, "--starts");
+  o.physics = SettingFlag(part, "--physics");
+  o.physics_file = SettingString(part, "--physics-file");
+  o.seed = SettingString(part, "--seed");
+  o.out_dir = out_dir;
+  return o;
+}
+
+// What a strategies run needs before its work: the params, the physics (with --physics; loaded
+// also by a merge, which checks the inputs the same way) and the provenance.
+struct StrategiesPlan {
+  StrategiesParams params;
+  std::unique_ptr<PhysicsSetup> physics;
+  StrategiesRun run;
+};
+
+std::unique_ptr<StrategiesPlan> PlanStrategies(const StrategiesOptions& o,
+                                               const std::filesystem::path& models) {
+  auto plan = std::make_unique<StrategiesPlan>();
+  const std::uint64_t seed = ParseSeed(o.seed);
+  if (!o.physics && !o.physics_file.empty()) throw InputError("--physics-file needs --physics");
+  StrategiesParams& params = plan->params;
+  params = LoadStrategiesParams(o.params, models, o.kicks_file);
+  if (!o.starts.empty()) {
+    params.starts = ParseCount("--starts", o.starts, 1, 10000000);
+    params.example_start = std::min(params.example_start, params.starts - 1);
+  }
+  StrategiesRun& run = plan->run;
+  run.provenance = ExperimentProvenance(params.file, params.situation, seed, models);
+  run.params = &params;
+  if (o.physics) {
+    plan->physics = LoadPhysicsSetup(params.situation, models, o.physics_file);
+    RequireAllKickMotions(*plan->physics, run.provenance.Input("kicks"));
+    CheckReportDir(o.out_dir, "--out");  // before the work, not after
+    run.provenance.SetInput("executor", "physics");
+    run.provenance.SetInput("physics", DisplayPath(plan->physics->physics_file, models));
+  } else {
+    CheckReportDir(o.out_dir, "--out");
+    run.provenance.SetInput("executor", "coarse");
+  }
+  return plan;
+}
+
+void WriteStrategiesReport(const std::string& out_dir, StrategiesRun& run) {
+  run.summaries = SummariseStrategies(run.result);
+  const std::filesystem::path dir(out_dir);
+  const ReportFiles files = {{dir / "strategies.json", StrategiesJson(run).dump(2) + "\n"},
+                             {dir / "strategies_runs.csv", StrategiesRunsCsv(run)},
+                             {dir / "strategies_turns.svg", StrategiesTurnsSvg(run)},
+                             {dir / "strategies_kicks.svg", StrategiesKicksSvg(run)},
+                             {dir / "strategies_paths.svg", StrategiesPathsSvg(run)}};
+  WriteReport(out_dir, files, StrategiesText(run), "strategies_turns.svg");
 }
 
 int RunStrategiesExperiment(const StrategiesOptions& o, const std::filesystem::path& models) {
   const auto start = std::chrono::steady_clock::now();
   const std::uint64_t seed = ParseSeed(o.seed);
   const int threads = ParseCount("--threads", o.threads, 0, 1024);
-  if (!o.physics && !o.physics_file.empty()) throw InputError("--physics-file needs --physics");
-  StrategiesParams params = LoadStrategiesParams(o.params, models, o.kicks_file);
-  if (!o.starts.empty()) {
-    params.starts = ParseCount("--starts", o.starts, 1, 10000000);
-    params.example_start = std::min(params.example_start, params.starts - 1);
-  }
-
-  StrategiesRun run;
-  run.provenance = ExperimentProvenance(params.file, params.situation, seed, models);
-  run.params = &params;
+  const std::optional<Shard> shard = ParseShardFlag(o.shard);
+  const std::unique_ptr<StrategiesPlan> plan = PlanStrategies(o, models);
+  const OutcomeSimulator* executor = plan->physics ? &*plan->physics->simulator : nullptr;
   const auto progress = TerminalProgress("strategies:", "runs");
-  if (o.physics) {
-    auto setup = LoadPhysicsSetup(params.situation, models, o.physics_file);
-    RequireAllKickMotions(*setup, run.provenance.Input("kicks"));
-    CheckReportDir(o.out_dir, "--out");  // before the work, not after
-    run.provenance.SetInput("executor", "physics");
-    run.provenance.SetInput("physics", DisplayPath(setup->physics_file, models));
-    run.result = RunStrategies(params, &*setup->simulator, seed, threads, progress);
-  } else {
-    CheckReportDir(o.out_dir, "--out");
-    run.provenance.SetInput("executor", "coarse");
-    run.result = RunStrategies(params, nullptr, seed, threads, progress);
+  if (shard) {
+    const StrategiesResult part =
+        RunStrategies(plan->params, executor, seed, threads, progress, *shard);
+    const ShardHeader header{kStrategiesCommand, FORESIGHT_VERSION, *shard,
+                             StrategiesSettings(o), plan->params.starts};
+    WriteShardFolder(o.out_dir, header, StrategiesShardResults(plan->params, part, *shard), start,
+                     "starts");
+    return 0;
   }
-  run.summaries = SummariseStrategies(run.result);
+  StrategiesRun& run = plan->run;
+  run.result = RunStrategies(plan->params, executor, seed, threads, progress);
   run.provenance.run_time_s = SecondsSince(start);
+  WriteStrategiesReport(o.out_dir, run);
+  return 0;
+}
 
-  const std::filesystem::path dir(o.out_dir);
-  const ReportFiles files = {{dir / "strategies.json", StrategiesJson(run).dump(2) + "\n"},
-                             {dir / "strategies_runs.csv", StrategiesRunsCsv(run)},
-                             {dir / "strategies_turns.svg", StrategiesTurnsSvg(run)},
-                             {dir / "strategies_kicks.svg", StrategiesKicksSvg(run)},
-                             {dir / "strategies_paths.svg", StrategiesPathsSvg(run)}};
-  WriteReport(o.out_dir, files, StrategiesText(run), "strategies_turns.svg");
+int MergeStrategies(const std::vector<ShardPart>& parts, const std::string& out_dir,
+                    const std::filesystem::path& models) {
+  const StrategiesOptions o = StrategiesOptionsOf(parts.front(), out_dir);
+  const std::unique_ptr<StrategiesPlan> plan = PlanStrategies(o, models);
+  if (parts.front().header.items != plan->params.starts) {
+    throw InputError(parts.front().file.string() + ": items: " +
+                     std::to_string(parts.front().header.items) + " starts, but the run has " +
+                     std::to_string(plan->params.starts) + " here (other data files?)");
+  }
+  StrategiesRun& run = plan->run;
+  run.result = MergeStrategiesShards(plan->params, ParseSeed(o.seed), parts);
+  run.provenance.run_time_s = ShardsRunTime(parts);
+  WriteStrategiesReport(out_dir, run);
   return 0;
 }
 
@@ -358,6 +487,17 @@ int RunExperimentCommand(const CLI::App& app, const ExperimentOptions& options,
     return RunAblationsExperiment(options.ablations, models);
   }
   return RunStrategiesExperiment(options.strategies, models);
+}
+
+bool IsExperimentShardCommand(const std::string& command) {
+  return command == kStabilityCommand || command == kStrategiesCommand;
+}
+
+int MergeExperimentShards(const std::vector<ShardPart>& parts, const std::string& out_dir,
+                          const std::filesystem::path& models) {
+  if (parts.front().header.command == kStrategiesCommand)
+    return MergeStrategies(parts, out_dir, models);
+  return MergeStability(parts, out_dir, models);
 }
 
 }  // namespace foresight

@@ -4,7 +4,11 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <string>
+#include <vector>
+
+#include "report/shard_file.h"
 
 namespace foresight {
 
@@ -18,6 +22,7 @@ struct StabilityOptions {
   std::string seed = "1";
   std::string threads = "0";
   std::string out_dir;
+  std::string shard;  // "I/N": only that shard (app/shard_output.h); empty: the whole run
 };
 
 struct StrategiesOptions {
@@ -29,6 +34,7 @@ struct StrategiesOptions {
   std::string seed = "1";
   std::string threads = "0";
   std::string out_dir;
+  std::string shard;  // "I/N": only that shard (app/shard_output.h); empty: the whole run
 };
 
 struct PassingOptions {
@@ -58,5 +64,11 @@ void AddExperimentCommand(CLI::App& app, ExperimentOptions& options);
 // Runs the experiment subcommand that was given; 0 on success.
 int RunExperimentCommand(const CLI::App& app, const ExperimentOptions& options,
                          const std::string& models_dir);
+
+// `foresight merge` of the shards of `experiment stability` or `experiment strategies` into the
+// report folder `out_dir`: the same files as the unsharded run.
+bool IsExperimentShardCommand(const std::string& command);
+int MergeExperimentShards(const std::vector<ShardPart>& parts, const std::string& out_dir,
+                          const std::filesystem::path& models);
 
 }  // namespace foresight

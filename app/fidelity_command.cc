@@ -5,11 +5,13 @@
 
 #include "app/cli_values.h"
 #include "app/report_text.h"
+#include "app/shard_output.h"
 #include "common/error.h"
 #include "models/model_paths.h"
 #include "report/atomic_file.h"
 #include "validation/fidelity_html.h"
 #include "validation/fidelity_report.h"
+#include "validation/fidelity_shard.h"
 
 namespace foresight {
 
@@ -32,13 +34,28 @@ void AddFidelityCommand(CLI::App& app, FidelityOptions& options) {
   cmd->add_option("--physics", options.physics_file,
                   "Physics file (default: MODELS/physics/<field>.json)");
   cmd->add_option("--out", options.out_dir, "Folder for the report")->required();
+  AddShardOption(*cmd, options.shard);
 }
 
-int RunFidelityCommand(const FidelityOptions& options, const std::string& models_dir) {
-  const auto start = std::chrono::steady_clock::now();
-  const std::filesystem::path models =
-      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+namespace {
+
+// The flags that decide a fidelity run's results, as a shard records them.
+nlohmann::ordered_json FidelitySettingsOf(const FidelityOptions& o) {
+  return {{"--situations", o.situations}, {"--trials", o.trials},
+          {"--samples", o.samples},       {"--converged", o.converged},
+          {"--seed", o.seed},             {"--kicks", o.kicks_file},
+          {"--physics", o.physics_file}};
+}
+
+// The run's settings, its set and its provenance (run time aside), the report folder checked.
+struct FidelityPlan {
   FidelityRun run;
+  FidelitySet set;
+};
+
+FidelityPlan PlanFidelity(const FidelityOptions& options, const std::filesystem::path& models) {
+  FidelityPlan plan;
+  FidelityRun& run = plan.run;
   run.provenance.version = FORESIGHT_VERSION;
   run.settings.physics_trials = ParseCount("--trials", options.trials, 2, 100000);
   run.settings.coarse_samples = ParseCount("--samples", options.samples, 0, 1000000);
@@ -47,27 +64,84 @@ int RunFidelityCommand(const FidelityOptions& options, const std::string& models
   run.settings.threads = ParseCount("--threads", options.threads, 0, 1024);
   run.settings.physics_file = options.physics_file;
   run.settings.progress = TerminalProgress("fidelity:", "situations");
-  CheckReportDir(options.out_dir, "--out");  // before the work, not after
-  const FidelitySet set = LoadFidelitySet(options.situations, models, options.kicks_file);
-  run.provenance.inputs = {{"situations_set", set.name},
-                           {"set_file", DisplayPath(set.file, models)},
+  if (!options.out_dir.empty()) CheckReportDir(options.out_dir, "--out");  // before the work
+  plan.set = LoadFidelitySet(options.situations, models, options.kicks_file);
+  run.provenance.inputs = {{"situations_set", plan.set.name},
+                           {"set_file", DisplayPath(plan.set.file, models)},
                            {"physics_file", options.physics_file.empty() ? "physics/<field>.json"
                                                                          : options.physics_file}};
-  run.rotations_rad = set.rotations_rad;
-  run.result = RunFidelity(set, models, run.settings);
-  run.provenance.run_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.rotations_rad = plan.set.rotations_rad;
+  return plan;
+}
 
-  const std::filesystem::path dir(options.out_dir);
+int WriteFidelityReport(const std::string& out_dir, const FidelityRun& run) {
+  const std::filesystem::path dir(out_dir);
   const ReportFiles files = {{dir / "fidelity.json", FidelityJson(run).dump(2) + "\n"},
                              {dir / "fidelity_candidates.csv", FidelityCandidatesCsv(run)},
                              {dir / "fidelity_situations.csv", FidelitySituationsCsv(run)},
                              {dir / "fidelity.html", FidelityHtml(run)}};
   const std::string text = FidelityText(run);
-  WriteReportFiles(options.out_dir, "--out", files);
+  WriteReportFiles(out_dir, "--out", files);
   std::cout << text << "report: " << (dir / "fidelity.html").string() << "\n" << std::flush;
   if (!std::cout) throw InputError("cannot write to standard output");
   return 0;
+}
+
+}  // namespace
+
+int RunFidelityCommand(const FidelityOptions& options, const std::string& models_dir) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::filesystem::path models =
+      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+  const std::optional<Shard> shard = ParseShardFlag(options.shard);
+  FidelityPlan plan = PlanFidelity(options, models);
+  FidelityRun& run = plan.run;
+  if (shard) {
+    run.settings.shard = *shard;
+    const FidelityResult part = RunFidelity(plan.set, models, run.settings);
+    const ShardHeader header{kFidelityCommand, FORESIGHT_VERSION, *shard,
+                             FidelitySettingsOf(options), static_cast<int>(plan.set.cases.size())};
+    WriteShardFolder(options.out_dir, header, FidelityShardResults(part), start, "situations");
+    return 0;
+  }
+  run.result = RunFidelity(plan.set, models, run.settings);
+  run.provenance.run_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return WriteFidelityReport(options.out_dir, run);
+}
+
+FidelityRun RunFidelityInMemory(const FidelityOptions& options,
+                                const std::filesystem::path& models) {
+  const auto start = std::chrono::steady_clock::now();
+  FidelityPlan plan = PlanFidelity(options, models);
+  plan.run.settings.progress = {};
+  plan.run.result = RunFidelity(plan.set, models, plan.run.settings);
+  plan.run.provenance.run_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return std::move(plan.run);
+}
+
+int MergeFidelityCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
+                        const std::filesystem::path& models) {
+  const ShardPart& first = parts.front();
+  FidelityOptions options;
+  options.situations = SettingString(first, "--situations");
+  options.trials = SettingString(first, "--trials");
+  options.samples = SettingString(first, "--samples");
+  options.converged = SettingString(first, "--converged");
+  options.seed = SettingString(first, "--seed");
+  options.kicks_file = SettingString(first, "--kicks");
+  options.physics_file = SettingString(first, "--physics");
+  options.out_dir = out_dir;
+  FidelityPlan plan = PlanFidelity(options, models);
+  if (first.header.items != static_cast<int>(plan.set.cases.size())) {
+    throw InputError(first.file.string() + ": items: " + std::to_string(first.header.items) +
+                     " situations, but the set has " + std::to_string(plan.set.cases.size()) +
+                     " here (other data files?)");
+  }
+  plan.run.result = MergeFidelityShards(plan.set, plan.run.settings, parts);
+  plan.run.provenance.run_time_s = ShardsRunTime(parts);
+  return WriteFidelityReport(out_dir, plan.run);
 }
 
 }  // namespace foresight

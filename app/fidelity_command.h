@@ -3,10 +3,14 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "app/cli_values.h"
+#include "report/shard_file.h"
 #include "validation/fidelity.h"
+#include "validation/fidelity_report.h"
 
 namespace foresight {
 
@@ -23,9 +27,19 @@ struct FidelityOptions {
   std::string kicks_file;
   std::string physics_file;
   std::string out_dir;
+  std::string shard;  // "I/N": only that shard (app/shard_output.h); empty: the whole run
 };
 
 void AddFidelityCommand(CLI::App& app, FidelityOptions& options);
 int RunFidelityCommand(const FidelityOptions& options, const std::string& models_dir);
+
+// The whole run without writing anything (the Python module's fidelity); options.out_dir empty.
+FidelityRun RunFidelityInMemory(const FidelityOptions& options,
+                                const std::filesystem::path& models);
+
+// `foresight merge` of a sharded fidelity run into the report folder `out_dir`.
+inline constexpr char kFidelityCommand[] = "fidelity";
+int MergeFidelityCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
+                         const std::filesystem::path& models);
 
 }  // namespace foresight

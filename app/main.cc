@@ -11,8 +11,10 @@
 #include "app/decide_command.h"
 #include "app/experiment_command.h"
 #include "app/fidelity_command.h"
+#include "app/merge_command.h"
 #include "app/simulate_command.h"
 #include "common/error.h"
+#include "models/model_paths.h"
 
 namespace {
 
@@ -51,7 +53,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", FORESIGHT_VERSION);
   app.require_subcommand(1);
   std::string models_dir;
-  app.add_option("--models", models_dir, "Folder of the shipped data (default: the source tree's)");
+  app.add_option("--models", models_dir,
+                 "Folder of the shipped data (default: " + foresight::DefaultModelsDir().string() +
+                     ")");
   foresight::DecideOptions decide;
   foresight::AddDecideCommand(app, decide);
   foresight::SimulateOptions simulate;
@@ -66,6 +70,8 @@ int main(int argc, char** argv) {
   foresight::AddExperimentCommand(app, experiment);
   foresight::CbrOptions cbr;
   foresight::AddCbrCommand(app, cbr);
+  foresight::MergeOptions merge;
+  foresight::AddMergeCommand(app, merge);
 
   try {
     app.parse(argc, argv);
@@ -91,6 +97,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("fidelity")) {
       return foresight::RunFidelityCommand(fidelity, models_dir);
     }
+    if (app.got_subcommand("merge")) return foresight::RunMergeCommand(merge, models_dir);
   } catch (const foresight::InputError& e) {
     return Fail(e.what());
   } catch (const std::exception& e) {

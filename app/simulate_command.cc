@@ -37,13 +37,14 @@ void AddSimulateCommand(CLI::App& app, SimulateOptions& options) {
   cmd->add_option("--trace", options.trace_file, "Write the balls' trajectories as CSV");
 }
 
-int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
-  const int trials = ParseCount("--trials", options.trials, 1, kMaxTrials);
-  const std::uint64_t seed = ParseSeed(options.seed);
-  const int threads = ParseCount("--threads", options.threads, 0, kMaxThreads);
-  const double rotation_deg = ParseNumber("--rotation", options.rotation_deg, -360.0, 360.0);
-  const std::filesystem::path models =
-      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+SimulationPlan PlanSimulation(const SimulateOptions& options, const std::filesystem::path& models) {
+  SimulationPlan plan;
+  KickTrialsRequest& request = plan.request;
+  request.trials = ParseCount("--trials", options.trials, 1, kMaxTrials);
+  request.seed = ParseSeed(options.seed);
+  request.threads = ParseCount("--threads", options.threads, 0, kMaxThreads);
+  request.rotation_rad =
+      ParseNumber("--rotation", options.rotation_deg, -360.0, 360.0) * kDegToRad;
   SituationOverrides overrides;
   overrides.kicks_file = options.kicks_file;
   Situation situation = LoadSituation(options.situation_file, models, overrides);
@@ -52,12 +53,23 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
     throw InputError("--kick: no kick '" + options.kick + "' in " + situation.kicks_file.string() +
                      " (one of: " + situation.kicks.Names() + ")");
   }
-  const auto setup = LoadPhysicsSetup(std::move(situation), models, options.physics_file);
-  if (!setup->robot.FindMotion(options.kick)) {
-    throw InputError("--kick: robot '" + setup->robot.spec.name + "' has no motion for kick '" +
-                     options.kick + "'");
+  request.kick_index = *kick;
+  plan.setup = LoadPhysicsSetup(std::move(situation), models, options.physics_file);
+  if (!plan.setup->robot.FindMotion(options.kick)) {
+    throw InputError("--kick: robot '" + plan.setup->robot.spec.name +
+                     "' has no motion for kick '" + options.kick + "'");
   }
+  request.state = plan.setup->state;  // physics plays the world as it is: the mean state
+  request.record_trace = !options.trace_file.empty();
+  return plan;
+}
 
+int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
+  const std::filesystem::path models =
+      models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+  SimulationPlan plan = PlanSimulation(options, models);
+  const auto& setup = plan.setup;
+  KickTrialsRequest& request = plan.request;
   SimulationRun run;
   run.situation_file = options.situation_file;
   run.situation = &setup->situation;
@@ -65,20 +77,11 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
   run.physics_file = setup->physics_file;
   run.models_dir = models;
   run.kick = options.kick;
-  run.rotation_rad = rotation_deg * kDegToRad;
-  run.seed = seed;
-  run.state = setup->state;  // physics plays the world as it is: the mean state
-  const PhysicsSimulator& simulator = *setup->simulator;
-  KickTrialsRequest request;
-  request.state = run.state;
-  request.kick_index = *kick;
-  request.rotation_rad = run.rotation_rad;
-  request.trials = trials;
-  request.seed = seed;
-  request.threads = threads;
-  request.record_trace = !options.trace_file.empty();
+  run.rotation_rad = request.rotation_rad;
+  run.seed = request.seed;
+  run.state = request.state;
   request.progress = TerminalProgress("simulate:", "trials");
-  run.results = RunKickTrials(simulator, request);
+  run.results = RunKickTrials(*setup->simulator, request);
   run.summary = Summarize(run.results);
 
   // Everything is made before anything is written, so a failure leaves no file behind.

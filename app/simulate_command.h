@@ -2,7 +2,12 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
+#include <memory>
 #include <string>
+
+#include "physics/physics_runs.h"
+#include "physics/physics_setup.h"
 
 namespace foresight {
 
@@ -24,5 +29,13 @@ void AddSimulateCommand(CLI::App& app, SimulateOptions& options);
 
 // Runs the command; bad input throws InputError. Returns the exit code.
 int RunSimulate(const SimulateOptions& options, const std::string& models_dir);
+
+// The command's trials before they run: the physics set-up and the request, every flag checked
+// (the Python module's simulate runs them the same way).
+struct SimulationPlan {
+  std::unique_ptr<PhysicsSetup> setup;
+  KickTrialsRequest request;
+};
+SimulationPlan PlanSimulation(const SimulateOptions& options, const std::filesystem::path& models);
 
 }  // namespace foresight

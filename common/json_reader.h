@@ -76,6 +76,8 @@ class JsonDocument {
   static JsonDocument Parse(std::string_view text, std::string origin);
 
   JsonObject Root() const;
+  // The whole parsed tree (for formats read by their own code, e.g. report/shard_file.h).
+  const nlohmann::json& Tree() const { return tree_; }
 
  private:
   nlohmann::json tree_;

@@ -101,17 +101,35 @@ std::vector<double> StabilityResult::PositionMeans(int count_index) const {
   return means;
 }
 
-StabilityResult RunStability(const StabilityParams& params, std::uint64_t seed, int threads,
-                             const std::function<void(int, int)>& progress) {
+StabilityResult EmptyStabilityResult(const StabilityParams& params) {
   StabilityResult result;
   result.grid =
       MakeStabilityGrid(params.situation.field, params.grid_step_m, params.heading_step_rad);
+  const std::size_t slots = params.sample_counts.size() * result.grid.PoseCount();
+  result.repeats = params.repeats;
+  result.top_count.assign(slots, 0);
+  result.distinct.assign(slots, 0);
+  result.decisions = static_cast<long long>(result.grid.PoseCount()) *
+                     static_cast<long long>(params.sample_counts.size()) * params.repeats;
+  return result;
+}
+
+void SummariseStability(const StabilityParams& params, StabilityResult& result) {
+  const int poses = result.grid.PoseCount();
+  result.counts.clear();
+  for (std::size_t c = 0; c < params.sample_counts.size(); ++c) {
+    const std::size_t offset = c * poses;
+    result.counts.push_back(Summarise(params.sample_counts[c], result.top_count.data() + offset,
+                                      result.distinct.data() + offset, poses, params.repeats));
+  }
+}
+
+StabilityResult RunStability(const StabilityParams& params, std::uint64_t seed, int threads,
+                             const std::function<void(int, int)>& progress, const Shard& shard) {
+  StabilityResult result = EmptyStabilityResult(params);
   const int poses = result.grid.PoseCount();
   const int counts = static_cast<int>(params.sample_counts.size());
   const int repeats = params.repeats;
-  result.repeats = repeats;
-  result.top_count.assign(static_cast<std::size_t>(counts) * poses, 0);
-  std::vector<int> distinct(static_cast<std::size_t>(counts) * poses, 0);
 
   // Every grid pose must be a valid situation (ball on the carpet): check before the work.
   Situation probe = params.situation;
@@ -127,8 +145,9 @@ StabilityResult RunStability(const StabilityParams& params, std::uint64_t seed, 
   const int max_samples =
       *std::max_element(params.sample_counts.begin(), params.sample_counts.end());
   ParallelFor(
-      poses, threads,
-      [&](int pose) {
+      shard.OwnedCount(poses), threads,
+      [&](int owned) {
+        const int pose = shard.Item(owned);
         StateEstimate state = params.situation.state;
         state.robot = result.grid.PoseAt(pose);
         const std::uint64_t pose_key =
@@ -150,16 +169,11 @@ StabilityResult RunStability(const StabilityParams& params, std::uint64_t seed, 
           const auto [top, n] = TopAndDistinct(keys);
           const std::size_t slot = static_cast<std::size_t>(c) * poses + pose;
           result.top_count[slot] = top;
-          distinct[slot] = n;
+          result.distinct[slot] = n;
         }
       },
       progress);
-  for (int c = 0; c < counts; ++c) {
-    const std::size_t offset = static_cast<std::size_t>(c) * poses;
-    result.counts.push_back(Summarise(params.sample_counts[c], result.top_count.data() + offset,
-                                      distinct.data() + offset, poses, repeats));
-  }
-  result.decisions = static_cast<long long>(poses) * counts * repeats;
+  if (shard.IsWhole()) SummariseStability(params, result);
   return result;
 }
 

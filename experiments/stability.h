@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "common/geometry.h"
+#include "common/shard.h"
 #include "experiments/experiment_params.h"
 
 namespace foresight {
@@ -51,6 +52,7 @@ struct StabilityResult {
   // How often the most frequent decision of every pose was made, per sample count:
   // [count_index * PoseCount() + pose], out of `repeats`.
   std::vector<int> top_count;
+  std::vector<int> distinct;  // distinct decisions, indexed like top_count
   long long decisions = 0;
 
   double TopShare(int count_index, int pose) const {
@@ -68,8 +70,16 @@ struct StabilityResult {
 int DecisionKey(int kick_index, double rotation_rad, double rotation_bin_rad);
 
 // `progress(done, total)` counts poses. Throws InputError if a grid pose puts the ball off the
-// carpet (it cannot with the shipped fields and ball offsets).
+// carpet (it cannot with the shipped fields and ball offsets). With a shard other than the whole
+// run, only the shard's poses are decided (the others stay 0) and `counts` stays empty:
+// experiments/stability_shard.h merges the shards and SummariseStability completes the result.
 StabilityResult RunStability(const StabilityParams& params, std::uint64_t seed, int threads,
-                             const std::function<void(int, int)>& progress = {});
+                             const std::function<void(int, int)>& progress = {},
+                             const Shard& shard = {});
+
+// The grid, the empty per-pose tables and the decision count of a run of `params`.
+StabilityResult EmptyStabilityResult(const StabilityParams& params);
+// `counts` from every pose's top_count and distinct.
+void SummariseStability(const StabilityParams& params, StabilityResult& result);
 
 }  // namespace foresight

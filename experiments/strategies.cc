@@ -4,27 +4,33 @@
 
 namespace foresight {
 
-StrategiesResult RunStrategies(const StrategiesParams& params, const OutcomeSimulator* executor,
-                               std::uint64_t seed, int threads,
-                               const std::function<void(int, int)>& progress) {
+StrategiesResult EmptyStrategiesResult(const StrategiesParams& params, std::uint64_t seed) {
   StrategiesResult result;
   for (int i = 0; i < params.starts; ++i) {
     result.starts.push_back(DrawStart(params.situation.field, seed, i));
   }
+  result.strategies.resize(params.strategies.size());
+  for (std::size_t s = 0; s < params.strategies.size(); ++s) {
+    result.strategies[s].strategy = params.strategies[s];
+    result.strategies[s].runs.resize(static_cast<std::size_t>(params.starts));
+  }
+  return result;
+}
+
+StrategiesResult RunStrategies(const StrategiesParams& params, const OutcomeSimulator* executor,
+                               std::uint64_t seed, int threads,
+                               const std::function<void(int, int)>& progress,
+                               const Shard& shard) {
+  StrategiesResult result = EmptyStrategiesResult(params, seed);
   const CoarsePlanner planner(params.situation);
   const StrategyRunContext context{params, planner,
                                    executor != nullptr ? *executor : planner.simulator()};
   const int strategies = static_cast<int>(params.strategies.size());
-  result.strategies.resize(params.strategies.size());
-  for (int s = 0; s < strategies; ++s) {
-    result.strategies[s].strategy = params.strategies[s];
-    result.strategies[s].runs.resize(static_cast<std::size_t>(params.starts));
-  }
   // Start-major order, so that a partial run (and its progress) covers every strategy alike.
   ParallelFor(
-      params.starts * strategies, threads,
+      shard.OwnedCount(params.starts) * strategies, threads,
       [&](int job) {
-        const int start = job / strategies, s = job % strategies;
+        const int start = shard.Item(job / strategies), s = job % strategies;
         StrategyRuns& target = result.strategies[static_cast<std::size_t>(s)];
         const bool example = start == params.example_start;
         StrategyRun run = RunStrategy(context, target.strategy, result.starts[start],

@@ -7,6 +7,7 @@
 #include <functional>
 #include <vector>
 
+#include "common/shard.h"
 #include "experiments/strategy_run.h"
 
 namespace foresight {
@@ -24,8 +25,14 @@ struct StrategiesResult {
 
 // `executor` carries out the kicks: physics, or nullptr for the coarse simulator of the planner
 // that decides. Runs (start, strategy) pairs in parallel; progress(done, total) counts runs.
+// With a shard other than the whole run, only the shard's starts are played (every start is
+// still drawn; the others' runs stay empty): experiments/strategies_shard.h merges the shards.
 StrategiesResult RunStrategies(const StrategiesParams& params, const OutcomeSimulator* executor,
                                std::uint64_t seed, int threads,
-                               const std::function<void(int, int)>& progress = {});
+                               const std::function<void(int, int)>& progress = {},
+                               const Shard& shard = {});
+
+// The starts and the empty runs of every strategy of a run of `params`.
+StrategiesResult EmptyStrategiesResult(const StrategiesParams& params, std::uint64_t seed);
 
 }  // namespace foresight

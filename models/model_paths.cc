@@ -1,6 +1,9 @@
 #include "models/model_paths.h"
 
+#include <dlfcn.h>
+
 #include <cstdlib>
+#include <system_error>
 
 #include "common/enum_names.h"
 
@@ -30,7 +33,25 @@ std::filesystem::path DefaultModelsDir() {
   if (const char* env = std::getenv("FORESIGHT_MODELS_DIR"); env != nullptr && *env != '\0') {
     return env;
   }
-  return FORESIGHT_MODELS_DIR;  // compile definition: the source tree's models/
+  // An installed binary (PREFIX/bin) finds PREFIX/share/foresight/models, wherever the tree was
+  // moved; so does the installed Python module (PREFIX/lib/python3/dist-packages), whose
+  // process is python3. A binary in the build tree has no such folder beside it.
+  std::error_code error;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const std::filesystem::path beside = exe.parent_path() / FORESIGHT_MODELS_FROM_BIN;
+    if (std::filesystem::is_directory(beside, error)) return beside.lexically_normal();
+  }
+  Dl_info self{};
+  if (dladdr(reinterpret_cast<void*>(&DefaultModelsDir), &self) != 0 && self.dli_fname != nullptr) {
+    const std::filesystem::path beside =
+        std::filesystem::path(self.dli_fname).parent_path() / FORESIGHT_MODELS_FROM_PYTHON;
+    if (std::filesystem::is_directory(beside, error)) return beside.lexically_normal();
+  }
+  // Compile definitions: the source tree's models/, then the install prefix's data folder (a
+  // program linked against an installed foresight lives elsewhere than PREFIX/bin).
+  if (std::filesystem::is_directory(FORESIGHT_MODELS_DIR, error)) return FORESIGHT_MODELS_DIR;
+  return FORESIGHT_INSTALLED_MODELS_DIR;
 }
 
 std::string_view DataFolderName(DataFolder folder) {

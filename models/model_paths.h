@@ -3,7 +3,11 @@
 // A situation names its field, kick model and evaluation either by a bare name ("spl"), found
 // as MODELS_DIR/fields/spl.json, or by a path ending in ".json", taken relative to the file
 // that names it. MODELS_DIR is, in this order: the --models flag, the environment variable
-// FORESIGHT_MODELS_DIR, or the source tree's models/ folder compiled into the binary.
+// FORESIGHT_MODELS_DIR, the installed data beside the running binary (BIN/../share/foresight/
+// models, so an installed tree can be moved) or beside the installed Python module that holds
+// this code, the source tree's models/ folder compiled into the
+// library, or the install prefix's data folder compiled into it (for programs linked against an
+// installed foresight that live outside its bin/).
 #pragma once
 
 #include <filesystem>

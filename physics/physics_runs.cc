@@ -10,15 +10,17 @@ namespace foresight {
 
 std::vector<TrialResult> RunKickTrials(const PhysicsSimulator& simulator,
                                        const KickTrialsRequest& request) {
-  std::vector<TrialResult> results(request.trials);
+  const int owned = request.shard.OwnedCount(request.trials);
+  std::vector<TrialResult> results(static_cast<std::size_t>(owned));
   ParallelFor(
-      request.trials, request.threads,
-      [&](int i) {
+      owned, request.threads,
+      [&](int k) {
+        const int i = request.shard.Item(k);
         ConcreteAction action;
         action.kick_index = request.kick_index;
         action.rotation_rad = request.rotation_rad;
         action.stream = StreamKey(request.seed, static_cast<std::uint64_t>(i), kPhysicsTrialDomain);
-        results[i] = simulator.Run(request.state, action, request.record_trace);
+        results[k] = simulator.Run(request.state, action, request.record_trace);
       },
       request.progress);
   return results;

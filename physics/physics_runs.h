@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "common/shard.h"
 #include "physics/physics_simulator.h"
 
 namespace foresight {
@@ -26,6 +27,8 @@ struct KickTrialsRequest {
   int threads = 0;  // <= 0: all cores
   bool record_trace = false;
   std::function<void(int, int)> progress;  // (done, total)
+  // Only trials i with shard.Owns(i) run (issue 17); the results hold those, in trial order.
+  Shard shard;
 };
 
 std::vector<TrialResult> RunKickTrials(const PhysicsSimulator& simulator,

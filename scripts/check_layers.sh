@@ -28,6 +28,10 @@ declare -A may_use=(
 may_use[support]="common models stats report planner physics"
 may_use[bench]="common models stats report planner physics validation experiments cbr match support"
 may_use[fuzz]="common models stats report planner physics validation experiments cbr match"
+# The Python module (python/) is a front end like app/ and returns what its commands compute.
+may_use[python]="common models stats report planner physics validation experiments cbr match app"
+# The consumer projects of the installed package (tests/package/consumer/): planner and physics.
+may_use[package]="common models stats planner physics"
 
 # third-party include prefix -> the only folders allowed to include it (regex on the header path)
 declare -A private_to=(
@@ -35,6 +39,7 @@ declare -A private_to=(
   ['^(urdf_|urdf/|console_bridge/)']="models"
   ['^assimp/']="models"
   ['^CLI/']="app"
+  ['^pybind11/']="python"
 )
 
 failures=0

@@ -10,6 +10,8 @@ packages=(
   libbullet-dev libbullet-extras-dev liburdfdom-dev libassimp-dev
   librsvg2-bin
   clang libclang-rt-14-dev
+  python3 pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
+  parallel slurm-wlm munge
 )
 
 missing=()

@@ -186,22 +186,36 @@ void Aggregate(FidelityResult& r, double confidence) {
 
 }  // namespace
 
+int FidelityCoarseSamples(const FidelitySet& set, const FidelitySettings& settings) {
+  if (settings.coarse_samples > 0 || set.cases.empty()) return settings.coarse_samples;
+  return set.cases.front().situation.evaluation.samples;
+}
+
 FidelityResult RunFidelity(const FidelitySet& set, const std::filesystem::path& models_dir,
                            const FidelitySettings& settings) {
   FidelityResult result;
-  const int total = static_cast<int>(set.cases.size());
-  for (int i = 0; i < total; ++i) {
-    const FidelityCase& fc = set.cases[i];
+  result.coarse_samples = FidelityCoarseSamples(set, settings);
+  const Shard& shard = settings.shard;
+  const int owned = shard.OwnedCount(static_cast<int>(set.cases.size()));
+  for (int k = 0; k < owned; ++k) {
+    const FidelityCase& fc = set.cases[shard.Item(k)];
     const int n =
         settings.coarse_samples > 0 ? settings.coarse_samples : fc.situation.evaluation.samples;
-    if (i == 0) result.coarse_samples = n;
     result.situations.push_back(RunOne(fc, set.rotations_rad, models_dir, settings, n));
-    result.physics_trials_run += result.situations.back().physics_trials_run;
-    result.physics_status.Add(result.situations.back().physics_status);
-    if (settings.progress) settings.progress(i + 1, total);
+    if (settings.progress) settings.progress(k + 1, owned);
   }
-  Aggregate(result, settings.confidence);
+  if (shard.IsWhole()) FinishFidelity(result, settings.confidence);
   return result;
+}
+
+void FinishFidelity(FidelityResult& result, double confidence) {
+  result.physics_trials_run = 0;
+  result.physics_status = {};
+  for (const SituationFidelity& s : result.situations) {
+    result.physics_trials_run += s.physics_trials_run;
+    result.physics_status.Add(s.physics_status);
+  }
+  Aggregate(result, confidence);
 }
 
 std::vector<int> WorstFirst(const FidelityResult& result) {

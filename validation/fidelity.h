@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "common/shard.h"
 #include "planner/decision.h"
 #include "stats/statistics.h"
 #include "validation/fidelity_set.h"
@@ -36,6 +37,9 @@ struct FidelitySettings {
   double confidence = 0.95;
   std::filesystem::path physics_file;      // empty: MODELS/physics/<field>.json
   std::function<void(int, int)> progress;  // (situations done, total)
+  // Only situation i with shard.Owns(i) runs (issue 17); the result then holds those, in set
+  // order, without the aggregates: validation/fidelity_shard.h merges the shards.
+  Shard shard;
 };
 
 struct CandidateScore {
@@ -105,6 +109,13 @@ struct FidelityResult {
 
 FidelityResult RunFidelity(const FidelitySet& set, const std::filesystem::path& models_dir,
                            const FidelitySettings& settings);
+
+// The totals and aggregates of a result whose `situations` are complete (RunFidelity does this
+// for a whole run).
+void FinishFidelity(FidelityResult& result, double confidence);
+
+// The coarse samples N of a run: the setting, or the first situation's evaluation file's.
+int FidelityCoarseSamples(const FidelitySet& set, const FidelitySettings& settings);
 
 // The situations ordered from worst to best: largest coarse regret, then lowest tau.
 std::vector<int> WorstFirst(const FidelityResult& result);

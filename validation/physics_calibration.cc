@@ -45,23 +45,31 @@ PhysicsKickTrials PlayKick(const PhysicsSetup& setup, const PhysicsCalibrationSe
   request.seed = CalibrationSeed(settings.seed, kick.kick_index);
   request.threads = settings.threads;
   request.record_trace = true;  // the rolling samples of the deceleration fit
+  request.shard = settings.shard;
   if (settings.progress) request.progress = settings.progress(name);
   const double radius = setup.situation.field.ball.radius_m;
-  for (const TrialResult& trial : RunKickTrials(*setup.simulator, request)) {
+  const std::vector<TrialResult> results = RunKickTrials(*setup.simulator, request);
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const TrialResult& trial = results[k];
     if (!trial.touched) {
       ++kick.missed;
       continue;
     }
     kick.observations.push_back(ObservationOf(trial, radius));
     kick.draws.push_back(trial.draw);
+    kick.trials.push_back(settings.shard.Item(static_cast<int>(k)));
   }
   return kick;
 }
 
 }  // namespace
 
-PhysicsCalibration RunPhysicsCalibration(const PhysicsCalibrationSettings& settings,
-                                         const std::filesystem::path& models_dir) {
+namespace {
+
+// The set-up, the kicks to play and the result's files; `play` plays each kick.
+template <typename Play>
+PhysicsCalibration Calibration(const PhysicsCalibrationSettings& settings,
+                               const std::filesystem::path& models_dir, Play&& play) {
   PhysicsCalibration result;
   result.situation_file = settings.situation_file.empty()
                               ? DataFile(models_dir, DataFolder::kCalibration, settings.robot)
@@ -75,8 +83,27 @@ PhysicsCalibration RunPhysicsCalibration(const PhysicsCalibrationSettings& setti
   result.physics_file = setup->physics_file;
   result.carpet_deceleration_mps2 = setup->params.carpet.rolling_deceleration_mps2;
   result.model = setup->situation.kicks;
-  for (const std::string& name : kicks) result.kicks.push_back(PlayKick(*setup, settings, name));
+  for (const std::string& name : kicks) result.kicks.push_back(play(*setup, name));
   return result;
+}
+
+}  // namespace
+
+PhysicsCalibration RunPhysicsCalibration(const PhysicsCalibrationSettings& settings,
+                                         const std::filesystem::path& models_dir) {
+  return Calibration(settings, models_dir, [&](const PhysicsSetup& setup, const std::string& name) {
+    return PlayKick(setup, settings, name);
+  });
+}
+
+PhysicsCalibration PlanPhysicsCalibration(const PhysicsCalibrationSettings& settings,
+                                          const std::filesystem::path& models_dir) {
+  return Calibration(settings, models_dir, [](const PhysicsSetup& setup, const std::string& name) {
+    PhysicsKickTrials kick;
+    kick.kick = name;
+    kick.kick_index = *setup.situation.kicks.Find(name);
+    return kick;
+  });
 }
 
 std::vector<std::string> ChooseKicks(const std::string& wanted,

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "common/shard.h"
 #include "models/kick_model.h"
 #include "physics/trial.h"
 #include "validation/calibration.h"
@@ -29,6 +30,8 @@ struct PhysicsCalibrationSettings {
   std::optional<TrialVariation> variation;  // replaces robot.json's trial_variation
   // Called before each kick's trials with the kick's name; what it returns sees (done, total).
   std::function<std::function<void(int, int)>(const std::string& kick)> progress;
+  // Only trials i with shard.Owns(i) of every kick run (issue 17; validation/calibration_shard.h).
+  Shard shard;
 };
 
 // One kick's trials: an observation and the physical causes drawn for each trial that touched
@@ -38,6 +41,7 @@ struct PhysicsKickTrials {
   int kick_index = 0;  // into PhysicsCalibration::model
   std::vector<KickObservation> observations;
   std::vector<TrialDraw> draws;
+  std::vector<int> trials;  // the trial index of each observation
   int missed = 0;
 };
 
@@ -53,6 +57,11 @@ struct PhysicsCalibration {
 // motion.
 PhysicsCalibration RunPhysicsCalibration(const PhysicsCalibrationSettings& settings,
                                          const std::filesystem::path& models_dir);
+
+// The same checks and files without playing: the kicks named, their trials empty (a merge of
+// shards fills them in).
+PhysicsCalibration PlanPhysicsCalibration(const PhysicsCalibrationSettings& settings,
+                                          const std::filesystem::path& models_dir);
 
 // `wanted` from `available`, or all of them when `wanted` is empty; InputError
 // "FIELD: no kick 'X' in WHERE (one of: ...)" when it is not there.

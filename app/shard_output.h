@@ -1,0 +1,34 @@
+// `--shard I/N` on the long commands and what a shard writes (issue 17): instead of its report,
+// a sharded run writes DIR/shard.json (report/shard_file.h) into its --out folder, which is a
+// report folder like any other (written whole, only over a folder foresight made).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <optional>
+#include <string>
+
+#include "common/shard.h"
+#include "report/shard_file.h"
+
+namespace foresight {
+
+void AddShardOption(CLI::App& command, std::string& shard);
+
+// The parsed --shard, or nothing when the flag was not given.
+std::optional<Shard> ParseShardFlag(const std::string& text);
+
+// Writes `out_dir`/shard.json and prints what it holds and how to merge.
+void WriteShardFolder(const std::string& out_dir, ShardHeader header,
+                      const nlohmann::json& results, std::chrono::steady_clock::time_point start,
+                      const std::string& item_name);
+
+// The sum of the shards' run times: the merged report's run time (the computing time; the wall
+// time of a parallel run is shorter).
+double ShardsRunTime(const std::vector<ShardPart>& parts);
+
+// The settings of a shard as the flag values they were given as.
+std::string SettingString(const ShardPart& part, const std::string& flag);
+bool SettingFlag(const ShardPart& part, const std::string& flag);
+
+}  // namespace foresight

@@ -1,0 +1,175 @@
+#include "python/module.h"
+
+#include <pybind11/stl.h>
+
+#include "app/calibrate_command.h"
+#include "app/decide_command.h"
+#include "app/fidelity_command.h"
+#include "common/error.h"
+#include "common/json_reader.h"
+#include "models/model_paths.h"
+#include "models/situation.h"
+#include "python/json_to_python.h"
+
+namespace py = pybind11;
+
+namespace foresight::python {
+
+std::filesystem::path ModelsDir(const std::optional<std::string>& models) {
+  return models ? std::filesystem::path(*models) : DefaultModelsDir();
+}
+
+std::string FlagText(const py::object& value) {
+  if (value.is_none()) return "";
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "true" : "false";
+  return py::str(value).cast<std::string>();
+}
+
+namespace {
+
+// Sets `flag` from a keyword argument unless it is None (the command's default stays).
+void SetFlag(std::string& flag, const py::object& value) {
+  if (!value.is_none()) flag = FlagText(value);
+}
+
+py::object LoadDataFile(const std::string& file) {
+  return ToPython(JsonDocument::Load(file).Tree());
+}
+
+py::dict LoadSituationDict(const std::string& file, const std::optional<std::string>& kicks,
+                           const std::optional<std::string>& models) {
+  SituationOverrides overrides;
+  if (kicks) overrides.kicks_file = *kicks;
+  const Situation s = LoadSituation(file, ModelsDir(models), overrides);
+  py::list kick_names, obstacles;
+  for (const KickSpec& k : s.kicks.kicks) kick_names.append(k.name);
+  for (const Obstacle& o : s.obstacles) {
+    obstacles.append(py::dict(py::arg("x_m") = o.p_F.x(), py::arg("y_m") = o.p_F.y(),
+                              py::arg("radius_m") = o.radius_m));
+  }
+  const StateEstimate& e = s.state;
+  return py::dict(
+      py::arg("name") = s.name, py::arg("field_file") = s.field_file.string(),
+      py::arg("kicks_file") = s.kicks_file.string(),
+      py::arg("evaluation_file") = s.evaluation_file.string(), py::arg("kicks") = kick_names,
+      py::arg("samples") = s.evaluation.samples,
+      py::arg("robot") = py::dict(py::arg("x_m") = e.robot.p_F.x(), py::arg("y_m") = e.robot.p_F.y(),
+                                  py::arg("theta_rad") = e.robot.theta_rad,
+                                  py::arg("sigma_x_m") = e.sigma_robot_x_m,
+                                  py::arg("sigma_y_m") = e.sigma_robot_y_m,
+                                  py::arg("sigma_theta_rad") = e.sigma_robot_theta_rad),
+      py::arg("ball") = py::dict(py::arg("x_m") = e.p_R_ball.x(), py::arg("y_m") = e.p_R_ball.y(),
+                                 py::arg("sigma_x_m") = e.sigma_ball_x_m,
+                                 py::arg("sigma_y_m") = e.sigma_ball_y_m),
+      py::arg("obstacles") = obstacles);
+}
+
+py::object Decide(const std::string& situation, const py::object& strategy,
+                  const py::object& samples, const py::object& seed, const py::object& kicks,
+                  const std::optional<std::string>& models) {
+  DecideOptions options;
+  options.situation_file = situation;
+  SetFlag(options.strategy, strategy);
+  SetFlag(options.samples, samples);
+  SetFlag(options.seed, seed);
+  SetFlag(options.kicks_file, kicks);
+  nlohmann::ordered_json json;
+  {
+    py::gil_scoped_release release;
+    json = DecideJson(options, ModelsDir(models));
+  }
+  return ToPython(json);
+}
+
+py::object Calibrate(const std::string& robot, const py::object& kick, const py::object& trials,
+                     const py::object& seed, const py::object& threads,
+                     const py::object& situation, const py::object& kicks,
+                     const py::object& physics, const py::object& from_csv,
+                     const py::object& confidence, const py::object& resamples,
+                     const std::optional<std::string>& models) {
+  CalibrateOptions options;
+  options.robot = robot;
+  SetFlag(options.kick, kick);
+  options.all = kick.is_none();
+  SetFlag(options.trials, trials);
+  SetFlag(options.seed, seed);
+  SetFlag(options.threads, threads);
+  SetFlag(options.situation_file, situation);
+  SetFlag(options.kicks_file, kicks);
+  SetFlag(options.physics_file, physics);
+  SetFlag(options.from_csv, from_csv);
+  SetFlag(options.confidence, confidence);
+  SetFlag(options.resamples, resamples);
+  nlohmann::ordered_json json;
+  {
+    py::gil_scoped_release release;
+    json = CalibrationJson(CalibrateInMemory(options, ModelsDir(models)));
+  }
+  return ToPython(json);
+}
+
+py::object Fidelity(const py::object& situations, const py::object& trials,
+                    const py::object& samples, const py::object& converged, const py::object& seed,
+                    const py::object& threads, const py::object& kicks, const py::object& physics,
+                    const std::optional<std::string>& models) {
+  FidelityOptions options;
+  SetFlag(options.situations, situations);
+  SetFlag(options.trials, trials);
+  SetFlag(options.samples, samples);
+  SetFlag(options.converged, converged);
+  SetFlag(options.seed, seed);
+  SetFlag(options.threads, threads);
+  SetFlag(options.kicks_file, kicks);
+  SetFlag(options.physics_file, physics);
+  nlohmann::ordered_json json;
+  {
+    py::gil_scoped_release release;
+    json = FidelityJson(RunFidelityInMemory(options, ModelsDir(models)));
+  }
+  return ToPython(json);
+}
+
+}  // namespace
+
+}  // namespace foresight::python
+
+PYBIND11_MODULE(foresight, m) {
+  using namespace foresight::python;
+  m.doc() = "foresight: robot-soccer kick selection by forward simulation, checked against "
+            "Bullet physics. Each function returns what the command of the same name writes as "
+            "JSON; bad input raises foresight.InputError with the command's one-line message.";
+  m.attr("__version__") = FORESIGHT_VERSION;
+  py::register_exception<foresight::InputError>(m, "InputError", PyExc_ValueError);
+  m.def("models_dir", [](const std::optional<std::string>& models) {
+    return ModelsDir(models).string();
+  }, py::arg("models") = py::none(), "The data folder the functions read (models/).");
+  m.def("load_situation", &LoadSituationDict, py::arg("situation"), py::arg("kicks") = py::none(),
+        py::arg("models") = py::none(),
+        "Loads and checks a situation file: its name, files, kick names, belief and obstacles.");
+  m.def("load_kick_model", [](const std::string& file) {
+    foresight::LoadKickModel(file);  // checks it as every command does
+    return LoadDataFile(file);
+  }, py::arg("file"), "Loads and checks a kick-model file; returns its content.");
+  m.def("load_field", [](const std::string& file) {
+    foresight::LoadFieldSpec(file);
+    return LoadDataFile(file);
+  }, py::arg("file"), "Loads and checks a field file; returns its content.");
+  m.def("decide", &Decide, py::arg("situation"), py::arg("strategy") = py::none(),
+        py::arg("samples") = py::none(), py::arg("seed") = py::none(),
+        py::arg("kicks") = py::none(), py::arg("models") = py::none(),
+        "The coarse decision: what `foresight decide --json` prints, as a dict.");
+  m.def("calibrate", &Calibrate, py::arg("robot"), py::arg("kick") = py::none(),
+        py::arg("trials") = py::none(), py::arg("seed") = py::none(),
+        py::arg("threads") = py::none(), py::arg("situation") = py::none(),
+        py::arg("kicks") = py::none(), py::arg("physics") = py::none(),
+        py::arg("from_csv") = py::none(), py::arg("confidence") = py::none(),
+        py::arg("resamples") = py::none(), py::arg("models") = py::none(),
+        "Calibrates a robot's kicks (all, or `kick`): the report's calibration.json as a dict.");
+  m.def("fidelity", &Fidelity, py::arg("situations") = py::none(), py::arg("trials") = py::none(),
+        py::arg("samples") = py::none(), py::arg("converged") = py::none(),
+        py::arg("seed") = py::none(), py::arg("threads") = py::none(),
+        py::arg("kicks") = py::none(), py::arg("physics") = py::none(),
+        py::arg("models") = py::none(),
+        "Coarse model against physics on a situation set: the report's fidelity.json as a dict.");
+  AddPhysicsFunctions(m);
+}

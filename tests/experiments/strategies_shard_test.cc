@@ -1,0 +1,65 @@
+// The strategies experiment in shards (experiments/strategies_shard.h): shards written to JSON
+// text, read back and merged give exactly the unsharded runs, the example's steps included.
+#include "experiments/strategies_shard.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/experiments/strategies_test_params.h"
+#include "tests/support/test_situations.h"
+
+namespace foresight {
+namespace {
+
+void ExpectSameRun(const StrategyRun& a, const StrategyRun& b) {
+  EXPECT_EQ(a.end, b.end);
+  EXPECT_EQ(a.kicks, b.kicks);
+  EXPECT_EQ(a.steps, b.steps);
+  EXPECT_EQ(a.turn_s, b.turn_s);
+  EXPECT_EQ(a.walk_s, b.walk_s);
+  EXPECT_EQ(a.around_ball_s, b.around_ball_s);
+  EXPECT_EQ(a.last_contact, b.last_contact);
+  EXPECT_EQ(a.kick_status.missed, b.kick_status.missed);
+  EXPECT_EQ(a.rotations_rad, b.rotations_rad);
+  ASSERT_EQ(a.steps_taken.size(), b.steps_taken.size());
+  for (std::size_t i = 0; i < a.steps_taken.size(); ++i) {
+    const StrategyStep &x = a.steps_taken[i], &y = b.steps_taken[i];
+    EXPECT_EQ(x.robot_at_ball.p_F, y.robot_at_ball.p_F);
+    EXPECT_EQ(x.robot_at_ball.theta_rad, y.robot_at_ball.theta_rad);
+    EXPECT_EQ(x.p_F_ball, y.p_F_ball);
+    EXPECT_EQ(x.kick_index, y.kick_index);
+    EXPECT_EQ(x.rotation_rad, y.rotation_rad);
+    EXPECT_EQ(x.outcome.p_F_rest, y.outcome.p_F_rest);
+    EXPECT_EQ(x.outcome.time_s, y.outcome.time_s);
+  }
+}
+
+TEST(StrategiesShardTest, MergedShardsEqualTheWholeRun) {
+  StrategiesParams params = testing::TestStrategiesParams(testing::MakeSituation({}), 23);
+  params.example_start = 5;
+  const StrategiesResult whole = RunStrategies(params, nullptr, 3, 2);
+  ASSERT_FALSE(whole.strategies.front().example.steps_taken.empty());
+  std::vector<ShardPart> parts;
+  for (int i = 0; i < 4; ++i) {
+    const Shard shard{i, 4};
+    ShardPart part;
+    part.header.shard = shard;
+    part.results = nlohmann::json::parse(
+        StrategiesShardResults(params, RunStrategies(params, nullptr, 3, 1, {}, shard), shard)
+            .dump());
+    parts.push_back(part);
+  }
+  const StrategiesResult merged = MergeStrategiesShards(params, 3, parts);
+  ASSERT_EQ(merged.strategies.size(), whole.strategies.size());
+  for (std::size_t s = 0; s < whole.strategies.size(); ++s) {
+    EXPECT_EQ(merged.strategies[s].strategy, whole.strategies[s].strategy);
+    for (int start = 0; start < params.starts; ++start) {
+      SCOPED_TRACE("strategy " + std::to_string(s) + ", start " + std::to_string(start));
+      ExpectSameRun(merged.strategies[s].runs[start], whole.strategies[s].runs[start]);
+    }
+    ExpectSameRun(merged.strategies[s].example, whole.strategies[s].example);
+  }
+  EXPECT_EQ(merged.starts.size(), whole.starts.size());
+}
+
+}  // namespace
+}  // namespace foresight

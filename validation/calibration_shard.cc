@@ -1,0 +1,85 @@
+#include "validation/calibration_shard.h"
+
+namespace foresight {
+
+namespace {
+
+nlohmann::json TrialJson(const KickObservation& o, const TrialDraw& d) {
+  nlohmann::json rolling = nlohmann::json::array();
+  for (const SpeedSample& s : o.rolling) {
+    rolling.push_back(ExactJson(s.t_s));
+    rolling.push_back(ExactJson(s.speed_mps));
+  }
+  return {ExactJson(o.launch_speed_mps),
+          ExactJson(o.launch_direction_rad),
+          o.has_roll_distance ? ExactJson(o.roll_distance_m) : nlohmann::json(nullptr),
+          rolling,
+          {ExactJson(d.placement_dx_m), ExactJson(d.placement_dy_m),
+           ExactJson(d.placement_dtheta_rad), ExactJson(d.speed_factor),
+           ExactJson(d.carpet_factor)}};
+}
+
+void ReadTrial(const ShardValue& v, PhysicsKickTrials& kick, int trial) {
+  if (v.Size() != 5) v.Fail("must be [speed, direction, roll distance, rolling, draw] or null");
+  KickObservation o;
+  o.launch_speed_mps = v.At(0).Double();
+  o.launch_direction_rad = v.At(1).Double();
+  o.has_roll_distance = !v.At(2).IsNull();
+  if (o.has_roll_distance) o.roll_distance_m = v.At(2).Double();
+  const ShardValue rolling = v.At(3);
+  if (rolling.Size() % 2 != 0) rolling.Fail("must be pairs of time and speed");
+  for (std::size_t i = 0; i < rolling.Size(); i += 2)
+    o.rolling.push_back({rolling.At(i).Double(), rolling.At(i + 1).Double()});
+  const ShardValue draw = v.At(4);
+  if (draw.Size() != 5) draw.Fail("must be the 5 perturbations");
+  TrialDraw d{draw.At(0).Double(), draw.At(1).Double(), draw.At(2).Double(), draw.At(3).Double(),
+              draw.At(4).Double()};
+  kick.observations.push_back(std::move(o));
+  kick.draws.push_back(d);
+  kick.trials.push_back(trial);
+}
+
+}  // namespace
+
+nlohmann::json CalibrationShardResults(const PhysicsCalibration& calibration, const Shard& shard,
+                                       int trials) {
+  nlohmann::json items = nlohmann::json::array();
+  std::vector<std::size_t> next(calibration.kicks.size(), 0);  // per kick, its next observation
+  for (int k = 0; k < shard.OwnedCount(trials); ++k) {
+    const int trial = shard.Item(k);
+    nlohmann::json per_kick = nlohmann::json::array();
+    for (std::size_t j = 0; j < calibration.kicks.size(); ++j) {
+      const PhysicsKickTrials& kick = calibration.kicks[j];
+      const std::size_t n = next[j];
+      if (n < kick.trials.size() && kick.trials[n] == trial) {
+        per_kick.push_back(TrialJson(kick.observations[n], kick.draws[n]));
+        ++next[j];
+      } else {
+        per_kick.push_back(nullptr);  // missed the ball
+      }
+    }
+    items.push_back({{"trial", trial}, {"kicks", per_kick}});
+  }
+  return items;
+}
+
+void MergeCalibrationShards(PhysicsCalibration& plan, int trials,
+                            const std::vector<ShardPart>& parts) {
+  const int count = static_cast<int>(parts.size());
+  for (int trial = 0; trial < trials; ++trial) {
+    const ShardPart& part = parts[trial % count];  // ReadShardParts' order: shard i at i
+    const ShardValue item = ResultsOf(part).At(static_cast<std::size_t>(trial / count));
+    if (item["trial"].Int() != trial) item["trial"].Fail("must be " + std::to_string(trial));
+    const ShardValue kicks = item["kicks"];
+    if (kicks.Size() != plan.kicks.size()) kicks.Fail("must have one entry per kick");
+    for (std::size_t j = 0; j < plan.kicks.size(); ++j) {
+      if (kicks.At(j).IsNull()) {
+        ++plan.kicks[j].missed;
+      } else {
+        ReadTrial(kicks.At(j), plan.kicks[j], trial);
+      }
+    }
+  }
+}
+
+}  // namespace foresight

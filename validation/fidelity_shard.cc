@@ -1,0 +1,176 @@
+#include "validation/fidelity_shard.h"
+
+#include "planner/strategy_names.h"
+
+namespace foresight {
+
+namespace {
+
+nlohmann::json EvaluationJson(const ActionEvaluation& e) {
+  nlohmann::json counts = nlohmann::json::array();
+  for (int c : e.counts) counts.push_back(c);
+  return {{"samples", e.samples},
+          {"counts", counts},
+          {"p", {ExactJson(e.p_infield), ExactJson(e.p_opp_goal), ExactJson(e.p_own_goal),
+                 ExactJson(e.p_out)}},
+          {"value_avg", ExactJson(e.value_avg)},
+          {"potential_avg", ExactJson(e.potential_avg)},
+          {"potential_all_avg", ExactJson(e.potential_all_avg)},
+          {"utility", ExactJson(e.utility)},
+          {"trimmed_utility", ExactJson(e.trimmed_utility)},
+          {"too_risky", e.too_risky}};
+}
+
+ActionEvaluation ReadEvaluation(const ShardValue& v) {
+  ActionEvaluation e;
+  e.samples = v["samples"].Int();
+  const ShardValue counts = v["counts"], p = v["p"];
+  if (counts.Size() != e.counts.size()) counts.Fail("must have one count per category");
+  for (std::size_t c = 0; c < e.counts.size(); ++c) e.counts[c] = counts.At(c).Int();
+  if (p.Size() != 4) p.Fail("must be [p_infield, p_opp_goal, p_own_goal, p_out]");
+  e.p_infield = p.At(0).Double();
+  e.p_opp_goal = p.At(1).Double();
+  e.p_own_goal = p.At(2).Double();
+  e.p_out = p.At(3).Double();
+  e.value_avg = v["value_avg"].Double();
+  e.potential_avg = v["potential_avg"].Double();
+  e.potential_all_avg = v["potential_all_avg"].Double();
+  e.utility = v["utility"].Double();
+  e.trimmed_utility = v["trimmed_utility"].Double();
+  e.too_risky = v["too_risky"].Bool();
+  return e;
+}
+
+nlohmann::json StatusJson(const StatusCounts& s) { return {s.missed, s.not_settled}; }
+
+StatusCounts ReadStatus(const ShardValue& v) {
+  if (v.Size() != 2) v.Fail("must be [missed, not_settled]");
+  return {v.At(0).Int(), v.At(1).Int()};
+}
+
+nlohmann::json MetricsJson(const ChoiceMetrics& m) {
+  return {m.choice, ExactJson(m.tau_b), m.top1, ExactJson(m.regret)};
+}
+
+ChoiceMetrics ReadMetrics(const ShardValue& v, int candidates) {
+  if (v.Size() != 4) v.Fail("must be [choice, tau_b, top1, regret]");
+  ChoiceMetrics m{v.At(0).Int(), v.At(1).Double(), v.At(2).Bool(), v.At(3).Double()};
+  if (m.choice < 0 || m.choice >= candidates) v.At(0).Fail("not a candidate");
+  return m;
+}
+
+nlohmann::json SituationJson(const SituationFidelity& s) {
+  nlohmann::json candidates = nlohmann::json::array();
+  for (const CandidateScore& c : s.candidates) {
+    candidates.push_back({{"kick", c.kick_index},
+                          {"rotation_rad", ExactJson(c.rotation_rad)},
+                          {"coarse", EvaluationJson(c.coarse)},
+                          {"converged", EvaluationJson(c.converged)},
+                          {"physics", EvaluationJson(c.physics)},
+                          {"physics_ci", {ExactJson(c.physics_ci.low), ExactJson(c.physics_ci.high)}},
+                          {"physics_status", StatusJson(c.physics_status)}});
+  }
+  nlohmann::json decisions = nlohmann::json::array();
+  for (const StrategyAgreement& a : s.decisions) {
+    decisions.push_back({std::string(StrategyName(a.strategy)), a.coarse_kick, a.physics_kick,
+                         ExactJson(a.coarse_rotation_rad), ExactJson(a.physics_rotation_rad),
+                         a.agree, ExactJson(a.regret)});
+  }
+  return {{"file", std::filesystem::path(s.file).filename().string()},
+          {"candidates", candidates},
+          {"physics_best", s.physics_best},
+          {"coarse", MetricsJson(s.coarse)},
+          {"converged", MetricsJson(s.converged)},
+          {"decisions", decisions},
+          {"coarse_outcomes", OutcomesShardJson(s.coarse_outcomes)},
+          {"physics_outcomes", OutcomesShardJson(s.physics_outcomes)},
+          {"physics_trials_run", s.physics_trials_run},
+          {"physics_status", StatusJson(s.physics_status)}};
+}
+
+StrategyAgreement ReadAgreement(const ShardValue& v) {
+  if (v.Size() != 7) v.Fail("must be [strategy, kicks, rotations, agree, regret]");
+  StrategyAgreement a;
+  const std::optional<Strategy> strategy = ParseStrategy(v.At(0).String());
+  if (!strategy) v.At(0).Fail("not a strategy");
+  a.strategy = *strategy;
+  a.coarse_kick = v.At(1).Int();
+  a.physics_kick = v.At(2).Int();
+  a.coarse_rotation_rad = v.At(3).Double();
+  a.physics_rotation_rad = v.At(4).Double();
+  a.agree = v.At(5).Bool();
+  a.regret = v.At(6).Double();
+  return a;
+}
+
+// Situation `fc` of the set with the results of `v`.
+SituationFidelity ReadSituation(const ShardValue& v, const FidelityCase& fc) {
+  SituationFidelity s;
+  s.situation_class = fc.situation_class;
+  s.file = fc.file.string();
+  s.situation = fc.situation;
+  const std::string name = fc.file.filename().string();
+  if (v["file"].String() != name) v["file"].Fail("must be " + name + " (another set?)");
+  const int kicks = static_cast<int>(fc.situation.kicks.kicks.size());
+  const ShardValue candidates = v["candidates"];
+  for (std::size_t i = 0; i < candidates.Size(); ++i) {
+    const ShardValue c = candidates.At(i);
+    CandidateScore score;
+    score.kick_index = c["kick"].Int();
+    if (score.kick_index < 0 || score.kick_index >= kicks) c["kick"].Fail("not a kick");
+    score.rotation_rad = c["rotation_rad"].Double();
+    score.coarse = ReadEvaluation(c["coarse"]);
+    score.converged = ReadEvaluation(c["converged"]);
+    score.physics = ReadEvaluation(c["physics"]);
+    const ShardValue ci = c["physics_ci"];
+    if (ci.Size() != 2) ci.Fail("must be [low, high]");
+    score.physics_ci = {ci.At(0).Double(), ci.At(1).Double()};
+    score.physics_status = ReadStatus(c["physics_status"]);
+    s.candidates.push_back(score);
+  }
+  const int n = static_cast<int>(s.candidates.size());
+  if (n == 0) candidates.Fail("must not be empty");
+  s.physics_best = v["physics_best"].Int();
+  if (s.physics_best < 0 || s.physics_best >= n) v["physics_best"].Fail("not a candidate");
+  s.coarse = ReadMetrics(v["coarse"], n);
+  s.converged = ReadMetrics(v["converged"], n);
+  const ShardValue decisions = v["decisions"];
+  for (std::size_t i = 0; i < decisions.Size(); ++i)
+    s.decisions.push_back(ReadAgreement(decisions.At(i)));
+  if (s.decisions.size() != AllStrategies().size())
+    decisions.Fail("must have one decision per strategy");
+  s.coarse_outcomes = ReadShardOutcomes(v["coarse_outcomes"]);
+  s.physics_outcomes = ReadShardOutcomes(v["physics_outcomes"]);
+  s.physics_trials_run = v["physics_trials_run"].Integer();
+  s.physics_status = ReadStatus(v["physics_status"]);
+  return s;
+}
+
+}  // namespace
+
+nlohmann::json FidelityShardResults(const FidelityResult& result) {
+  nlohmann::json items = nlohmann::json::array();
+  for (const SituationFidelity& s : result.situations) items.push_back(SituationJson(s));
+  return items;
+}
+
+FidelityResult MergeFidelityShards(const FidelitySet& set, const FidelitySettings& settings,
+                                   const std::vector<ShardPart>& parts) {
+  const int total = static_cast<int>(set.cases.size());
+  std::vector<SituationFidelity> situations(static_cast<std::size_t>(total));
+  for (const ShardPart& part : parts) {
+    const Shard& shard = part.header.shard;
+    const ShardValue items = ResultsOf(part);
+    for (int k = 0; k < shard.OwnedCount(total); ++k) {
+      const int i = shard.Item(k);
+      situations[i] = ReadSituation(items.At(k), set.cases[i]);
+    }
+  }
+  FidelityResult result;
+  result.coarse_samples = FidelityCoarseSamples(set, settings);
+  result.situations = std::move(situations);
+  FinishFidelity(result, settings.confidence);
+  return result;
+}
+
+}  // namespace foresight
