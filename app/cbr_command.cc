@@ -40,7 +40,10 @@ void Print(const std::string& text) {
   if (!std::cout) throw InputError("cannot write to standard output");
 }
 
-int RunRetrieve(const CbrOptions& o, const fs::path& models) {
+// Loads the problem, the case base and the parameters `o` names, retrieves, and hands the run to
+// `use` (the run points into the case base, which lives only during the call).
+template <class Use>
+auto WithRetrieval(const CbrOptions& o, const fs::path& models, Use&& use) {
   CbrRetrieveRun run;
   run.problem_file = o.problem_file;
   run.case_base_path = CaseBasePath(o, models);
@@ -52,15 +55,23 @@ int RunRetrieve(const CbrOptions& o, const fs::path& models) {
   run.params = LoadRetrievalParams(run.params_file, base.rules.field);
   run.cases = base.cases.Defending(run.problem.defending);
   run.result = Retrieve(run.cases, run.problem, run.params);
-  // Everything is made before anything is written, so a failure leaves no file behind.
-  const std::string printed =
-      o.json ? CbrRetrieveJson(run).dump(2, ' ', false,
-                                         nlohmann::ordered_json::error_handler_t::replace) +
-                   "\n"
-             : CbrRetrieveText(run, o.verbose);
-  if (!o.svg_file.empty()) WriteFileAtomically(o.svg_file, CbrRetrieveSvg(run, base.rules.field));
-  Print(printed);
-  return 0;
+  return use(run, base);
+}
+
+int RunRetrieve(const CbrOptions& o, const fs::path& models) {
+  return WithRetrieval(o, models, [&](const CbrRetrieveRun& run, const LoadedCaseBase& base) {
+    // Everything is made before anything is written, so a failure leaves no file behind.
+    const std::string printed =
+        o.json ? CbrRetrieveJson(run).dump(2, ' ', false,
+                                           nlohmann::ordered_json::error_handler_t::replace) +
+                     "\n"
+               : CbrRetrieveText(run, o.verbose);
+    if (!o.svg_file.empty()) {
+      WriteFileAtomically(o.svg_file, CbrRetrieveSvg(run, base.rules.field));
+    }
+    Print(printed);
+    return 0;
+  });
 }
 
 int RunCheck(const CbrOptions& o, const fs::path& models) {
@@ -160,6 +171,13 @@ void AddCbrCommand(CLI::App& app, CbrOptions& options) {
   options.atlas->add_option("--params", options.params_file,
                             "Retrieval parameters for the ball paths (default: "
                             "MODELS/cbr/retrieval.json)");
+}
+
+nlohmann::ordered_json CbrRetrieveJsonFor(const CbrOptions& options,
+                                          const std::filesystem::path& models) {
+  return WithRetrieval(options, models, [](const CbrRetrieveRun& run, const LoadedCaseBase&) {
+    return CbrRetrieveJson(run);
+  });
 }
 
 int RunCbrCommand(const CbrOptions& options, const std::string& models_dir) {

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace foresight {
@@ -23,6 +25,11 @@ struct CbrOptions {
 };
 
 void AddCbrCommand(CLI::App& app, CbrOptions& options);
+
+// What `cbr retrieve --json` prints for options.problem_file (with options.case_base and
+// options.params_file), as JSON; bad input throws InputError (the Python module's cbr_retrieve).
+nlohmann::ordered_json CbrRetrieveJsonFor(const CbrOptions& options,
+                                          const std::filesystem::path& models);
 
 // Runs the chosen subcommand; bad input throws InputError. Returns the exit code.
 int RunCbrCommand(const CbrOptions& options, const std::string& models_dir);

@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "app/calibrate_command.h"
+#include "app/cbr_command.h"
 #include "app/decide_command.h"
 #include "app/fidelity_command.h"
 #include "common/error.h"
@@ -129,6 +130,20 @@ py::object Fidelity(const py::object& situations, const py::object& trials,
   return ToPython(json);
 }
 
+py::object CbrRetrieve(const std::string& problem, const py::object& case_base,
+                       const py::object& params, const std::optional<std::string>& models) {
+  CbrOptions options;
+  options.problem_file = problem;
+  SetFlag(options.case_base, case_base);
+  SetFlag(options.params_file, params);
+  nlohmann::ordered_json json;
+  {
+    py::gil_scoped_release release;
+    json = CbrRetrieveJsonFor(options, ModelsDir(models));
+  }
+  return ToPython(json);
+}
+
 }  // namespace
 
 }  // namespace foresight::python
@@ -136,7 +151,7 @@ py::object Fidelity(const py::object& situations, const py::object& trials,
 PYBIND11_MODULE(foresight, m) {
   using namespace foresight::python;
   m.doc() = "foresight: robot-soccer kick selection by forward simulation, checked against "
-            "Bullet physics. Each function returns what the command of the same name writes as "
+            "Bullet physics, and case-based coordinated action selection. Each function returns what the command of the same name writes as "
             "JSON; bad input raises foresight.InputError with the command's one-line message.";
   m.attr("__version__") = FORESIGHT_VERSION;
   py::register_exception<foresight::InputError>(m, "InputError", PyExc_ValueError);
@@ -171,5 +186,9 @@ PYBIND11_MODULE(foresight, m) {
         py::arg("kicks") = py::none(), py::arg("physics") = py::none(),
         py::arg("models") = py::none(),
         "Coarse model against physics on a situation set: the report's fidelity.json as a dict.");
+  m.def("cbr_retrieve", &CbrRetrieve, py::arg("problem"), py::arg("case_base") = py::none(),
+        py::arg("params") = py::none(), py::arg("models") = py::none(),
+        "Case retrieval (Ros et al. 2009) for a problem file: what `foresight cbr retrieve "
+        "--json` prints (the retrieved case, the ranking, every case's verdict), as a dict.");
   AddPhysicsFunctions(m);
 }

@@ -49,6 +49,23 @@ def test_decide_with_samples_and_kicks_equals_the_cli_json():
     assert foresight.decide(SITUATION, samples=12, kicks=kicks) == json.loads(out)
 
 
+@pytest.mark.parametrize("problem", ["open_pass", "blocked_pass", "nothing_retrieved"])
+def test_cbr_retrieve_equals_the_cli_json(problem):
+    path = str(MODELS / "cbr" / "problems" / f"{problem}.json")
+    code, out, _ = cli("cbr", "retrieve", "--problem", path, "--json")
+    assert code == 0
+    assert foresight.cbr_retrieve(path) == json.loads(out)
+
+
+def test_cbr_retrieve_bad_problem_raises_the_cli_message(tmp_path):
+    bad = tmp_path / "problem.json"
+    bad.write_text('{"defending": "cyan", "ball": {"x_m": 9.0, "y_m": 0.0}, '
+                   '"teammates": [{"id": 1, "x_m": 0.0, "y_m": 0.0, "theta_deg": 0}]}')
+    with pytest.raises(foresight.InputError) as raised:
+        foresight.cbr_retrieve(str(bad))
+    assert str(raised.value) == cli_error("cbr", "retrieve", "--problem", str(bad))
+
+
 def test_simulate_arrays_have_one_entry_per_trial_and_match_the_cli():
     trials = foresight.simulate(SITUATION, "forward", trials=6, seed=4)
     for name in ("rest_x_m", "rest_y_m", "time_s", "launch_speed_mps", "launch_direction_deg",
