@@ -10,19 +10,26 @@ namespace {
 const KickMirrors kMirrors{{"head_kick_left", "head_kick_right"},
                            {"head_kick_right", "head_kick_left"}};
 
+CaseAction Action(ActionType type, const std::string& kick = "") {
+  CaseAction a;
+  a.type = type;
+  a.kick = kick;
+  return a;
+}
+
 Case PassCase() {
   Case c;
   c.name = c.source = "pass";
   c.p_F_ball = Vec2(1.3, 0.2);
   c.ball_scope = {0.45, 0.25};
-  CaseAction get{ActionType::kGetBall};
-  CaseAction pass{ActionType::kPass, "head_kick_left"};
+  CaseAction get = Action(ActionType::kGetBall);
+  CaseAction pass = Action(ActionType::kPass, "head_kick_left");
   pass.teammate = 2;
-  CaseAction receive{ActionType::kReceive};
+  CaseAction receive = Action(ActionType::kReceive);
   receive.teammate = 1;
-  CaseAction turn{ActionType::kTurn};
+  CaseAction turn = Action(ActionType::kTurn);
   turn.heading_rad = 0.5;
-  CaseAction kick{ActionType::kKick, "forward"};
+  CaseAction kick = Action(ActionType::kKick, "forward");
   kick.target_F = Vec2(2.7, -0.3);
   c.teammates = {{1, Vec2(1.0, 0.2), {get, pass}}, {2, Vec2(1.4, 1.0), {receive, turn, kick}}};
   c.opponents = {{1, Vec2(1.8, 0.2), {0.35, 0.3}}};
