@@ -1,0 +1,112 @@
+// One robot's actions (cbr/case_actions.h): a pass with a head kick is aimed so that the kick's
+// own direction (about 89 deg to the side) points at the receiver; the kick goes once aimed; a
+// blocked trajectory aborts; a receiver waits until the pass is heard or seen.
+#include "cbr/case_actions.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cbr/case_base.h"
+#include "cbr/team_params.h"
+#include "tests/support/temp_files.h"
+
+namespace foresight {
+namespace {
+
+constexpr double kDt = 0.04;
+
+class CaseActionsTest : public ::testing::Test {
+ protected:
+  CaseActionsTest()
+      : base_(LoadCaseBase(DefaultCaseBasePath(testing::ModelsDir()), testing::ModelsDir())),
+        team_(LoadCbrTeamParams("team", testing::ModelsDir())) {
+    ctx_.team = &team_;
+    ctx_.retrieval = &retrieval_;
+    ctx_.kicks = &base_.rules.kicks;
+    ctx_.aim_tolerance_rad = 10.0 * kDegToRad;
+    ctx_.release_after_s = 2.7;
+    ctx_.control_step_s = kDt;
+    // Robot 0 passes with the left head kick to robot 1, 1 m to its left.
+    CaseAction get, pass, receive;
+    get.type = ActionType::kGetBall;
+    pass.type = ActionType::kPass;
+    pass.kick = "head_kick_left";
+    pass.teammate = 2;
+    receive.type = ActionType::kReceive;
+    receive.teammate = 1;
+    c_.name = c_.source = "pass_left";
+    c_.p_F_ball = Vec2(0.0, 0.0);
+    c_.ball_scope = {0.5, 0.5};
+    c_.teammates = {{1, Vec2(-0.2, 0.0), {get, pass}}, {2, Vec2(0.0, 1.0), {receive}}};
+    play_ = MakeCasePlay(c_, 0, 1, Vec2(0.0, 0.0), {0, 1, -1, -1}, retrieval_);
+  }
+
+  Perception Holding(double theta_rad) const {
+    Perception p;
+    p.time_s = 1.0;
+    p.self = 0;
+    p.pose = Pose2(Vec2(-0.16, 0.0), theta_rad);
+    p.holding_ball = true;
+    p.p_F_ball = Vec2(0.0, 0.0);
+    p.teammates = {p.pose, Pose2(Vec2(0.0, 1.0), 0.0)};
+    return p;
+  }
+
+  LoadedCaseBase base_;
+  CbrTeamParams team_;
+  RetrievalParams retrieval_;
+  ActionContext ctx_;
+  Case c_;
+  CasePlay play_;
+};
+
+TEST_F(CaseActionsTest, AHeadKickPassTurnsTheKicksDirectionOntoTheReceiver) {
+  const KickSpec& head = base_.rules.kicks.kicks[*base_.rules.kicks.Find("head_kick_left")];
+  ActionProgress progress;
+  progress.action = 1;  // holding the ball: the pass
+  progress.holding_since_s = 1.0;
+  progress.was_holding = true;
+  // Facing the receiver (+90 deg) is wrong for a kick that leaves 89 deg to the left: the robot
+  // must turn until heading + direction points at the receiver, i.e. to about 1 deg.
+  const ActionStep turn = StepActions(play_, 0, progress, Holding(0.5 * kPi), ctx_);
+  ASSERT_FALSE(turn.abort);
+  EXPECT_EQ(turn.command.kind, CommandKind::kWalk);
+  const double wanted = 0.5 * kPi - head.direction_rad;
+  EXPECT_NEAR(turn.command.turn_radps * kDt, WrapAngle(wanted - 0.5 * kPi), 1e-9);
+  // Aimed within the tolerance: it kicks the head kick.
+  const ActionStep kick = StepActions(play_, 0, progress, Holding(wanted + 0.05), ctx_);
+  EXPECT_EQ(kick.command.kind, CommandKind::kKick);
+  EXPECT_EQ(kick.command.kick_index, *base_.rules.kicks.Find("head_kick_left"));
+}
+
+TEST_F(CaseActionsTest, AnOpponentOnThePassLineAbortsThePass) {
+  ActionProgress progress;
+  progress.action = 1;
+  Perception p = Holding(0.0);
+  p.opponents = {Pose2(Vec2(0.0, 0.5), 0.0)};  // halfway to the receiver
+  EXPECT_EQ(StepActions(play_, 0, progress, p, ctx_).abort, AbortReason::kPathBlocked);
+  p.opponents = {Pose2(Vec2(0.0, -0.8), 0.0)};  // behind the passer's kick: free
+  EXPECT_FALSE(StepActions(play_, 0, progress, p, ctx_).abort);
+}
+
+TEST_F(CaseActionsTest, TheReceiverWaitsForThePassHeardOrSeen) {
+  Perception p;
+  p.time_s = 1.0;
+  p.self = 1;
+  p.pose = Pose2(Vec2(0.0, 1.0), -0.5 * kPi);
+  p.p_F_ball = Vec2(0.0, 0.0);
+  p.teammates = {Pose2(Vec2(-0.16, 0.0), 0.0), p.pose};
+  ActionProgress progress;
+  EXPECT_EQ(StepActions(play_, 1, progress, p, ctx_).command.kind, CommandKind::kWalk);  // waits
+  ++progress.passes_heard;
+  EXPECT_EQ(StepActions(play_, 1, progress, p, ctx_).command.kind, CommandKind::kGetBall);
+  // The message lost: the ball seen leaving the passer after it had it starts the receive too.
+  ActionProgress unheard;
+  StepActions(play_, 1, unheard, p, ctx_);  // the ball at the passer
+  p.p_F_ball = Vec2(0.0, 0.5);
+  EXPECT_EQ(StepActions(play_, 1, unheard, p, ctx_).command.kind, CommandKind::kGetBall);
+}
+
+}  // namespace
+}  // namespace foresight
