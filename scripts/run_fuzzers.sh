@@ -19,7 +19,7 @@ declare -A seeds=(
   [robot]="$m/robots/*/robot.json"
   [motion]="$m/robots/*/motions/*.json"
   [urdf]="$m/robots/*/*.urdf"
-  [mesh]="$m/robots/*/meshes/*.obj"
+  [mesh]="$m/robots/*/meshes/*.obj $root/fuzz/seeds/mesh_assimp_leak.obj"
   [fidelity_set]="$m/fidelity/*.json"
   [check_spec]="$m/check_specs/*.json"
   [stability]="$m/experiments/stability*.json"
@@ -39,6 +39,8 @@ declare -A seeds=(
   [cbr_variants]="$m/experiments/cbr_variants.json"
 )
 mkdir -p "$build/findings"
+# Leaks inside third-party libraries we cannot fix (each explained in the file).
+export LSAN_OPTIONS="suppressions=$root/fuzz/lsan_suppressions.txt${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 failed=0
 targets=${FUZZ_TARGETS:-$(printf '%s\n' "${!seeds[@]}" | sort)}
 for target in $targets; do
