@@ -38,11 +38,12 @@ ActionStep AimAndKick(const FuzzyTrajectory* trajectory, int kick_index, ActionP
     now.count = 1;
     now.trajectories[0] = MakeTrajectory(p.p_F_ball, trajectory->end_F,
                                          ctx.retrieval->TrajectoryFor(kick.name), *ctx.retrieval);
-    std::vector<Vec2> opponents;
-    for (const Pose2& o : p.opponents) opponents.push_back(o.p_F);
-    if (!CheckFreePath(now, opponents, ctx.retrieval->thr_trajectory).free) {
-      step.abort = AbortReason::kPathBlocked;
-      return step;
+    for (const Pose2& o : p.opponents) {  // one at a time: no copy of the positions per step
+      if (!CheckFreePath(now, std::span<const Vec2>(&o.p_F, 1), ctx.retrieval->thr_trajectory)
+               .free) {
+        step.abort = AbortReason::kPathBlocked;
+        return step;
+      }
     }
   }
   const double heading = HeadingTowards(p.p_F_ball, aim_at) - kick.direction_rad;

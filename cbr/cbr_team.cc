@@ -332,9 +332,9 @@ RobotCommand CbrTeam::Default(const Perception& p) {
   for (const TeamMessage& m : p.inbox) {
     if (m.kind < kCbrKindBase) default_inbox_.push_back(m);
   }
-  Perception own = p;
-  own.inbox = default_inbox_;
-  return default_->Decide(own);
+  default_perception_ = p;  // reuses the member's vectors: no allocation once warm
+  default_perception_.inbox = default_inbox_;
+  return default_->Decide(default_perception_);
 }
 
 std::string CbrTeam::MessageName(const TeamMessage& m) const {

@@ -111,7 +111,8 @@ class CbrTeam final : public TeamPolicy {
   DefendingGoal defending_ = DefendingGoal::kCyan;  // the goal the team defends (for names)
   std::vector<Robot> robots_;
   RetrievalResult scratch_;
-  std::vector<TeamMessage> default_inbox_;
+  std::vector<TeamMessage> default_inbox_;  // the default behaviour's messages this step
+  Perception default_perception_;            // what the default behaviour is shown
   CbrTeamCounters counters_;  // the experimenter's instruments (cbr/team_counters.h)
 };
 
