@@ -135,14 +135,6 @@ AblationRun SummariseAblations(const PassingSetup& base, std::vector<PassingVari
   return run;
 }
 
-AblationRun RunAblations(const PassingSetup& base, std::vector<PassingVariant> variants,
-                         const KickExecutor& executor, std::uint64_t seed, int threads,
-                         const std::function<void(int, int)>& progress) {
-  const std::vector<PassingResult> results =
-      PlayAblations(base, variants, executor, seed, threads, progress);
-  return SummariseAblations(base, std::move(variants), results);
-}
-
 Json AblationsJson(const AblationRun& run) {
   Json variants = Json::array();
   for (std::size_t v = 0; v < run.variants.size(); ++v) {

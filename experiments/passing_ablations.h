@@ -46,11 +46,6 @@ std::vector<PassingResult> PlayAblations(const PassingSetup& base,
 AblationRun SummariseAblations(const PassingSetup& base, std::vector<PassingVariant> variants,
                                const std::vector<PassingResult>& results);
 
-// PlayAblations of the whole run, summarised.
-AblationRun RunAblations(const PassingSetup& base, std::vector<PassingVariant> variants,
-                         const KickExecutor& executor, std::uint64_t seed, int threads,
-                         const std::function<void(int, int)>& progress = {});
-
 nlohmann::ordered_json AblationsJson(const AblationRun& run);
 std::string AblationsCsv(const AblationRun& run);
 std::string AblationsText(const AblationRun& run);
