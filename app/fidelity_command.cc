@@ -134,11 +134,7 @@ int MergeFidelityCommand(const std::vector<ShardPart>& parts, const std::string&
   options.physics_file = SettingString(first, "--physics");
   options.out_dir = out_dir;
   FidelityPlan plan = PlanFidelity(options, models);
-  if (first.header.items != static_cast<int>(plan.set.cases.size())) {
-    throw InputError(first.file.string() + ": items: " + std::to_string(first.header.items) +
-                     " situations, but the set has " + std::to_string(plan.set.cases.size()) +
-                     " here (other data files?)");
-  }
+  RequireShardItems(first, static_cast<int>(plan.set.cases.size()), "situations");
   plan.run.result = MergeFidelityShards(plan.set, plan.run.settings, parts);
   plan.run.provenance.run_time_s = ShardsRunTime(parts);
   return WriteFidelityReport(out_dir, plan.run);
