@@ -60,7 +60,8 @@ struct StepParams {
 
 // Joint motors follow the motion's targets as velocity constraints (Bullet's
 // btMultiBodyJointMotor): desired joint speed = position_gain * error / dt + velocity_gain *
-// (target speed - speed), limited by the URDF joint's effort.
+// (target speed - speed), its torque limited by the joint motor's torque-speed line
+// (models/motor_table.h).
 struct MotorParams {
   double position_gain = 0.0;
   double velocity_gain = 0.0;

@@ -151,7 +151,7 @@ RobotSpec LoadRobotSpec(const std::filesystem::path& file) {
   const JsonDocument doc = JsonDocument::Load(file);
   const JsonObject root = doc.Root();
   root.RejectUnknownKeys(
-      {"name", "urdf", "base_height_m", "standing_pose_deg", "kicks", "trial_variation"});
+      {"name", "urdf", "base_height_m", "standing_pose_deg", "kicks", "trial_variation", "motors"});
   const std::filesystem::path dir = file.parent_path();
   const std::string where = file.string();
   RobotSpec spec;
@@ -187,6 +187,7 @@ RobotSpec LoadRobotSpec(const std::filesystem::path& file) {
 
   spec.variation = ReadVariation(root.Object("trial_variation"));
   spec.variation.Validate(where);
+  spec.motors = ReadMotorTable(root.Object("motors"));
   return spec;
 }
 
@@ -233,6 +234,7 @@ Robot LoadRobot(const std::string& name, const std::filesystem::path& models_dir
   }
   robot.model = LoadRobotModel(robot.spec.urdf_file);
   CheckStandingPose(robot, spec_file.string());
+  robot.motors = JointMotors(robot.spec.motors, robot.model, spec_file.string());
   for (const auto& [kick_name, motion_file] : robot.spec.kick_motion_files) {
     robot.motions.push_back(LoadKickMotion(motion_file));
     const KickMotion& motion = robot.motions.back();

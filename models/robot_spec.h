@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "models/kick_motion.h"
+#include "models/motor_table.h"
 #include "models/robot_model.h"
 
 namespace foresight {
@@ -35,6 +36,7 @@ struct RobotSpec {
   std::vector<std::pair<std::string, double>> standing_pose_rad;  // joints not named: 0
   std::vector<std::pair<std::string, std::filesystem::path>> kick_motion_files;  // resolved
   TrialVariation variation;
+  MotorTable motors;  // joint name -> its motor's torque-speed line
 };
 
 RobotSpec LoadRobotSpec(const std::filesystem::path& file);
@@ -55,13 +57,15 @@ PeakJointSpeed FindPeakJointSpeed(const KickMotion& motion, const RobotModel& mo
 double FastestAllowedPlayback(const Robot& robot);
 
 // A robot ready for physics: its spec, body and kick motions, checked against each other
-// (every joint a motion or the standing pose names exists and is revolute; every target lies
+// (every joint a motion or the standing pose names exists and is revolute; every revolute joint
+// has a motor that can reach its velocity limit; every target lies
 // within the joint's limits; no motion, played at the fastest speed a trial draws, asks a joint
 // for more than its velocity limit).
 struct Robot {
   RobotSpec spec;
   RobotModel model;
   std::vector<KickMotion> motions;  // in the order of spec.kick_motion_files
+  std::vector<MotorLine> motors;    // model.joints order; fixed joints: an empty line
 
   std::optional<int> FindMotion(const std::string& kick_name) const;
   // The standing position of every joint of `model`, in model.joints order.

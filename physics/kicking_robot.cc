@@ -2,12 +2,12 @@
 
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
-#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 #include <cassert>
 
 #include "physics/bullet_convert.h"
+#include "physics/joint_motor.h"
 #include "physics/robot_shapes.h"
 
 namespace foresight {
@@ -84,8 +84,7 @@ std::vector<bool> MovingJoints(const RobotModel& model, std::span<const std::str
 
 KickingRobot::KickingRobot(BulletWorld& world, const Robot& robot,
                            const Eigen::Isometry3d& pose_F_root, std::span<const double> q_rad,
-                           const std::vector<bool>& moving, const PhysicsParams& params,
-                           double dt_s)
+                           const std::vector<bool>& moving, const PhysicsParams& params)
     : robot_(robot),
       motors_params_(params.motors),
       standing_q_(q_rad.begin(), q_rad.end()),
@@ -109,8 +108,7 @@ KickingRobot::KickingRobot(BulletWorld& world, const Robot& robot,
   motors_.assign(model.joints.size(), nullptr);
   for (int g = 1; g <= links; ++g) {
     const int j = groups_[g].joint;
-    auto motor = std::make_unique<btMultiBodyJointMotor>(body_, g - 1, 0.0,
-                                                         model.joints[j].effort_nm * dt_s);
+    auto motor = std::make_unique<LineLimitedJointMotor>(body_, g - 1, robot.motors[j]);
     motor->setPositionTarget(q_rad[j], params.motors.position_gain);
     motor->setVelocityTarget(0.0, params.motors.velocity_gain);
     // The motor never aims faster than the joint can turn, whatever its position error (the
@@ -131,7 +129,7 @@ void KickingRobot::FollowMotion(const KickMotion& motion, double t_s, double spe
   }
   motion.Sample(t_s * speed_factor, q_scratch_, qdot_scratch_);
   for (std::size_t k = 0; k < motion_joint_index_.size(); ++k) {
-    btMultiBodyJointMotor* motor = motors_[motion_joint_index_[k]];
+    LineLimitedJointMotor* motor = motors_[motion_joint_index_[k]];
     assert(motor != nullptr);  // the robot was built with the motion's joints moving
     motor->setPositionTarget(q_scratch_[k], motors_params_.position_gain);
     motor->setVelocityTarget(qdot_scratch_[k] * speed_factor, motors_params_.velocity_gain);

@@ -6,8 +6,9 @@
 // principal axes of its inertia. For a group L with parent P and joint J (URDF: L = J at q = 0):
 //   rot_parent_to_this = R_CL_CP,          joint axis in CL = R_CL_L * axis_J,
 //   parent COM to pivot = t(pose_CP_J),    pivot to this COM (in CL) = R_CL_L * t_L_CL.
-// Motors: one btMultiBodyJointMotor per moving joint, its impulse limited by the URDF effort
-// times the step and the speed it aims at by the URDF velocity limit.
+// Motors: one per moving joint (joint_motor.h), its torque bounded by the joint motor's
+// torque-speed line from the robot's motor table and the speed it aims at by the URDF velocity
+// limit.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -20,9 +21,10 @@
 #include "physics/rigid_groups.h"
 
 class btMultiBody;
-class btMultiBodyJointMotor;
 
 namespace foresight {
+
+class LineLimitedJointMotor;
 
 // Which model joints move: the named ones, or every revolute joint when `names` is empty.
 std::vector<bool> MovingJoints(const RobotModel& model, std::span<const std::string> names);
@@ -33,7 +35,7 @@ class KickingRobot {
   // the joints marked in `moving` get motors, the others are welded at q_rad.
   KickingRobot(BulletWorld& world, const Robot& robot, const Eigen::Isometry3d& pose_F_root,
                std::span<const double> q_rad, const std::vector<bool>& moving,
-               const PhysicsParams& params, double dt_s);
+               const PhysicsParams& params);
 
   // Motor targets for `motion` played at speed_factor (> 1: faster) at simulated time t_s.
   void FollowMotion(const KickMotion& motion, double t_s, double speed_factor);
@@ -41,6 +43,8 @@ class KickingRobot {
   // Current joint positions (model.joints order; welded joints read their standing position).
   std::vector<double> JointPositions() const;
   btMultiBody& body() { return *body_; }
+  // The motor of model joint j; null for a welded joint.
+  const LineLimitedJointMotor* motor(int j) const { return motors_[j]; }
 
  private:
   const Robot& robot_;
@@ -48,7 +52,7 @@ class KickingRobot {
   btMultiBody* body_ = nullptr;
   std::vector<double> standing_q_;
   std::vector<RigidGroup> groups_;              // groups_[g] is multibody link g - 1
-  std::vector<btMultiBodyJointMotor*> motors_;  // per model joint; null for welded joints
+  std::vector<LineLimitedJointMotor*> motors_;  // per model joint; null for welded joints
   std::vector<int> motion_joint_index_;         // scratch: motion joint -> model joint
   std::vector<double> q_scratch_, qdot_scratch_;
 };

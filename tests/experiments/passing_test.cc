@@ -43,8 +43,14 @@ TEST(PassingTest, MirroredGameGivesTheSameSharesWithinTheirIntervals) {
     const PassingSetup plain = LoadSetup(config, 150, false, {});
     const PassingSetup mirror = LoadSetup(config, 150, true, {});
     const CoarseKickExecutor executor(plain.field, plain.kicks.rolling_deceleration_mps2);
-    const auto a = SummarisePassing(RunPassing(plain, "reactive", executor, 21, 2), 0.95);
-    const auto b = SummarisePassing(RunPassing(mirror, "reactive", executor, 21, 2), 0.95);
+    // 99 % intervals: the loop compares about 50 pairs, and two 95 % intervals of the same share
+    // miss each other in about 0.6 % of independent pairs, so one pair in the loop would miss in
+    // about a quarter of the seeds (it did at seed 21 once the AIBO's kick model was recalibrated
+    // on the motor line: 14 % blocks against 4.7 % mirrored in dg scenario 3, 7.5 % against 7.5 %
+    // in 1000 trials each). At 99 % the family misses in about 1 % of seeds.
+    constexpr double kConfidence = 0.99;
+    const auto a = SummarisePassing(RunPassing(plain, "reactive", executor, 21, 2), kConfidence);
+    const auto b = SummarisePassing(RunPassing(mirror, "reactive", executor, 21, 2), kConfidence);
     ASSERT_EQ(a.size(), b.size());
     for (std::size_t s = 0; s < a.size(); ++s) {
       for (int k = 0; k < kTrialOutcomeCount; ++k) {

@@ -38,6 +38,10 @@ constexpr const char* kSpec = R"({
     "placement_sigma_y_m": 0.02,
     "placement_sigma_theta_deg": 2.0,
     "motion_speed_sigma_rel": 0.05
+  },
+  "motors": {
+    "types": {"leg": {"stall_torque_nm": 2.0, "no_load_speed_radps": 7.5, "source": "test"}},
+    "joints": {"HipPitch": "leg", "KneePitch": "leg"}
   }
 })";
 

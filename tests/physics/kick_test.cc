@@ -2,6 +2,8 @@
 // speed, and the same seed gives the same trials whatever the thread count.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "common/geometry.h"
@@ -87,9 +89,12 @@ INSTANTIATE_TEST_SUITE_P(
 // the contact while foot and ball still overlap after the bounce, without any force: the overlap
 // is not corrected, see MakeStriking. So the test times the speed, not the contact.) The AIBO's
 // `forward` catches the ball again after the first touch on purpose (its motion's notes), so its
-// pure strike, `forward_short`, is the one timed here.
+// pure strike, `forward_short`, is the one timed here: until the ball has 95 % of its top speed.
+// (With the motors on their torque-speed line the AIBO's paw, still touching, adds the last 1 %
+// about 15 ms later; a push would take tens of milliseconds for the first 95 %.)
 TEST(KickStrikeTest, ForwardStrikesGiveTheBallItsSpeedWithinAFewMilliseconds) {
   constexpr double kMaxStrikeS = 0.006;
+  constexpr double kStruckShare = 0.95;
   struct Strike {
     const char* robot;
     const char* field;
@@ -105,14 +110,20 @@ TEST(KickStrikeTest, ForwardStrikesGiveTheBallItsSpeedWithinAFewMilliseconds) {
     request.stream = 5;
     request.record_trace = true;
     const TrialResult r = RunKickTrial(testing::SceneOf(*data, {}, ball), request);
-    double first_touch_s = -1.0, peak_mps = 0.0, peak_s = 0.0;
+    double first_touch_s = -1.0, peak_mps = 0.0;
     for (const TracePoint& p : r.trace) {
       if (p.kicker_contact && first_touch_s < 0.0) first_touch_s = p.t_s;
-      const double speed = p.v_F.head<2>().norm();
-      if (speed > peak_mps) peak_mps = speed, peak_s = p.t_s;
+      peak_mps = std::max(peak_mps, p.v_F.head<2>().norm());
+    }
+    double struck_s = -1.0;
+    for (const TracePoint& p : r.trace) {
+      if (p.v_F.head<2>().norm() >= kStruckShare * peak_mps) {
+        struck_s = p.t_s;
+        break;
+      }
     }
     ASSERT_GE(first_touch_s, 0.0) << robot;
-    EXPECT_LE(peak_s - first_touch_s, kMaxStrikeS) << robot;
+    EXPECT_LE(struck_s - first_touch_s, kMaxStrikeS) << robot;
     EXPECT_GT(peak_mps, 0.3) << robot;
   }
 }

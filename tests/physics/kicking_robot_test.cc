@@ -15,11 +15,7 @@
 namespace foresight {
 namespace {
 
-Robot BodyOnly(const std::string& name) {
-  Robot robot;
-  robot.model = LoadRobotModel(testing::ModelsDir() / "robots" / name / (name + ".urdf"));
-  return robot;
-}
+Robot BodyOnly(const std::string& name) { return LoadRobot(name, testing::ModelsDir()); }
 
 // Random joint positions within each joint's limits.
 std::vector<double> RandomPose(const RobotModel& model, std::uint64_t seed) {
@@ -40,8 +36,7 @@ TEST_P(KickingRobotTest, LinkFramesMatchForwardKinematics) {
     const std::vector<double> q = RandomPose(robot.model, seed);
     const Eigen::Isometry3d pose_F_root = PlanarPose(0.5, -1.0, 0.4, 0.7);
     BulletWorld world(BulletWorld::Kind::kMultiBody, {10, 0.02});
-    KickingRobot kicker(world, robot, pose_F_root, q, MovingJoints(robot.model, {}), data->params,
-                        0.002);
+    KickingRobot kicker(world, robot, pose_F_root, q, MovingJoints(robot.model, {}), data->params);
     const std::vector<Eigen::Isometry3d> fk = LinkPoses(robot.model, q);
     for (std::size_t i = 1; i < robot.model.links.size(); ++i) {
       const btMultiBodyLinkCollider* collider =
@@ -67,7 +62,7 @@ TEST_P(KickingRobotTest, MotorsHoldTheStandingPoseAgainstGravity) {
                     {data->params.steps.solver_iterations, data->params.steps.restitution_threshold_mps});
   const double dt = data->params.steps.kick_time_step_s;
   KickingRobot kicker(world, robot, PlanarPose(0, 0, 0.6, 0), q, MovingJoints(robot.model, {}),
-                      data->params, dt);
+                      data->params);
   // Half a second hanging from the fixed base. Links without collision geometry are the trap
   // here: Bullet leaves their motors unsolved unless they get a collider (kicking_robot.cc).
   for (int step = 0; step < 250; ++step) world.world().stepSimulation(dt, 0, dt);
