@@ -116,6 +116,7 @@
 #include "physics/trial.h"
 #include "planner/action_evaluator.h"
 #include "planner/ball_roll.h"
+#include "planner/first_hit.h"
 #include "planner/coarse_action_evaluator.h"
 #include "planner/coarse_planner.h"
 #include "planner/coarse_simulator.h"
