@@ -29,8 +29,7 @@ JsonDocument LoadParamsFile(const std::filesystem::path& file) {
 }
 
 Situation LoadScene(const JsonObject& root, const std::filesystem::path& file,
-                    const std::filesystem::path& models_dir,
-                    const SituationOverrides& overrides) {
+                    const std::filesystem::path& models_dir, const SituationOverrides& overrides) {
   const std::filesystem::path situation_file = ResolveModelFile(
       root.String("situation"), DataFolder::kSituations, file.parent_path(), models_dir);
   std::error_code ec;

@@ -63,9 +63,8 @@ KickModel LoadKickModel(const std::filesystem::path& file) {
   model.robot = root.String("robot");
   model.rolling_deceleration_mps2 = root.Number("rolling_deceleration_mps2");
   for (const JsonObject& item : root.ObjectArray("kicks")) {
-    item.RejectUnknownKeys(
-        {"name", "speed_mps", "sigma_speed_mps", "direction_deg", "sigma_direction_deg",
-         "launch_offset_m"});
+    item.RejectUnknownKeys({"name", "speed_mps", "sigma_speed_mps", "direction_deg",
+                            "sigma_direction_deg", "launch_offset_m"});
     KickSpec kick;
     kick.name = item.String("name");
     kick.speed_mps = item.Number("speed_mps");

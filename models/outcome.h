@@ -53,8 +53,8 @@ struct DrawnState {
 // One concrete action. kick_index == kNoKick (models/kick_model.h) is the `none` action (the ball
 // stays). The robot first turns around the ball by rotation_rad (the ball stays put, the robot's
 // heading changes by it), then kicks. launch_* are the coarse model's drawn launch in the turned
-// robot frame (and the kick's launch offset, models/kick_model.h); a physics simulator ignores them and draws its physical perturbations from `stream`
-// instead.
+// robot frame (and the kick's launch offset, models/kick_model.h); a physics simulator ignores them
+// and draws its physical perturbations from `stream` instead.
 struct ConcreteAction {
   int kick_index = kNoKick;
   double rotation_rad = 0.0;

@@ -44,8 +44,8 @@ FirstHit FindFirstHit(const CoarseWorld& world, const Vec2& start, const Vec2& d
 Reflection Reflect(const FirstHit& hit, const Vec2& p_F_hit, const Vec2& dir_F, double e) {
   const double px = p_F_hit.x(), py = p_F_hit.y();
   const double dx = dir_F.x(), dy = dir_F.y();
-  const double along = std::clamp((px - hit.a.x()) * hit.u.x() + (py - hit.a.y()) * hit.u.y(),
-                                  0.0, hit.length_m);
+  const double along =
+      std::clamp((px - hit.a.x()) * hit.u.x() + (py - hit.a.y()) * hit.u.y(), 0.0, hit.length_m);
   const double qx = hit.a.x() + along * hit.u.x(), qy = hit.a.y() + along * hit.u.y();
   const double gx = px - qx, gy = py - qy;
   const double gap = std::sqrt(gx * gx + gy * gy);  // the contact distance (> 0)

@@ -158,9 +158,9 @@ RestLanes RollReboundingLanes(const CoarseWorld& world, const RollLanesInput& in
     const Lanes travelled = Min(hit.s, leg.stop_m);
     const Lanes end_x = leg.start_x + travelled * leg.dir_x;
     const Lanes end_y = leg.start_y + travelled * leg.dir_y;
-    const LaneMask category = Select(leg_start_category == infield,
-                                     PathCategory(world.lines, leg, travelled, end_x, end_y),
-                                     leg_start_category);
+    const LaneMask category =
+        Select(leg_start_category == infield,
+               PathCategory(world.lines, leg, travelled, end_x, end_y), leg_start_category);
     const LaneMask decides = rolling & ~decided & (category != infield);
     rest.category = Select(decides, category, rest.category);
     decided |= decides;
@@ -169,8 +169,8 @@ RestLanes RollReboundingLanes(const CoarseWorld& world, const RollLanesInput& in
     rolling &= hit.s <= leg.stop_m;
     if (!Any(rolling) || k == world.rebounds.max_contacts) break;
     // Reflect (planner/first_hit.cc).
-    const Lanes along = Clamp((end_x - hit.ax) * hit.ux + (end_y - hit.ay) * hit.uy,
-                              Broadcast(0.0), hit.length_m);
+    const Lanes along =
+        Clamp((end_x - hit.ax) * hit.ux + (end_y - hit.ay) * hit.uy, Broadcast(0.0), hit.length_m);
     const Lanes gx = end_x - (hit.ax + along * hit.ux), gy = end_y - (hit.ay + along * hit.uy);
     const Lanes gap = Sqrt(gx * gx + gy * gy);
     const Lanes nx = gx / gap, ny = gy / gap;

@@ -113,8 +113,8 @@ std::optional<LaunchOffsetFit> FitLaunchOffset(std::span<const KickObservation> 
   for (const KickObservation& k : kicks) {
     if (!k.has_launch_offset || !k.has_roll_distance) continue;
     const double rest_distance_m = k.launch_offset_m + k.roll_distance_m;
-    residuals.push_back(rest_distance_m - k.launch_speed_mps * k.launch_speed_mps /
-                                              (2.0 * deceleration_mps2));
+    residuals.push_back(rest_distance_m -
+                        k.launch_speed_mps * k.launch_speed_mps / (2.0 * deceleration_mps2));
     fit.launch_point_m += k.launch_offset_m;
     fit.rest_distance_m += rest_distance_m;
   }

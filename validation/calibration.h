@@ -55,11 +55,11 @@ struct KickObservation {
 // reading, equal to the fit when the calibrated deceleration is the one the balls rolled at.
 struct LaunchOffsetFit {
   int kicks = 0;
-  double offset_m = 0.0;           // what the kick model gets
+  double offset_m = 0.0;  // what the kick model gets
   double unclamped_offset_m = 0.0;
-  double standard_error_m = 0.0;   // of the mean
-  double launch_point_m = 0.0;     // mean measured distance to the launch point
-  double rest_distance_m = 0.0;    // mean D_i
+  double standard_error_m = 0.0;  // of the mean
+  double launch_point_m = 0.0;    // mean measured distance to the launch point
+  double rest_distance_m = 0.0;   // mean D_i
 };
 
 struct CalibrationSettings {
@@ -78,8 +78,8 @@ struct KickCalibration {
   CircularFit direction;
   std::vector<double> direction_unwrapped_rad;  // around the circular mean
   NormalityTest direction_normality;
-  std::vector<QqPoint> direction_qq;            // radians
-  std::optional<DecelerationFit> deceleration;  // this kick's balls alone
+  std::vector<QqPoint> direction_qq;             // radians
+  std::optional<DecelerationFit> deceleration;   // this kick's balls alone
   std::optional<LaunchOffsetFit> launch_offset;  // physics: with the pooled deceleration
 };
 

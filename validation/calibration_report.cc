@@ -98,8 +98,9 @@ std::vector<std::string> CalibrationWarnings(const CalibrationRun& run) {
                          " cm short of v0^2/2a on average; the launch offset is clamped at 0");
     }
     if (!c.launch_offset) {
-      warnings.push_back(c.kick + ": no launch points (a log has none, or no ball rested without "
-                                  "a contact); the kick keeps the base model's launch offset");
+      warnings.push_back(c.kick +
+                         ": no launch points (a log has none, or no ball rested without "
+                         "a contact); the kick keeps the base model's launch offset");
     }
     if (kick.missed > 0) {
       warnings.push_back(c.kick + ": the robot missed the ball in " + std::to_string(kick.missed) +

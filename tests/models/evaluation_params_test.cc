@@ -70,12 +70,14 @@ TEST(EvaluationParamsTest, ShippedFilesKeepThePapersInelasticContacts) {
 
 TEST(EvaluationParamsTest, ReboundsSwitchMustBeABoolean) {
   const auto file = BrokenSplEvaluation("rebounds", "\"enabled\": false", "\"enabled\": \"no\"");
-  EXPECT_EQ(LoadError(file), file.string() + ": rebounds.enabled: must be true or false, got \"no\"");
+  EXPECT_EQ(LoadError(file),
+            file.string() + ": rebounds.enabled: must be true or false, got \"no\"");
 }
 
 TEST(EvaluationParamsTest, ZeroMaxContactsIsRejected) {
   const auto file = BrokenSplEvaluation("contacts", "\"max_contacts\": 8", "\"max_contacts\": 0");
-  EXPECT_THAT(LoadError(file), StartsWith(file.string() + ": rebounds.max_contacts: must be in [1"));
+  EXPECT_THAT(LoadError(file),
+              StartsWith(file.string() + ": rebounds.max_contacts: must be in [1"));
 }
 
 TEST(EvaluationParamsTest, RotationSearchStepIsConvertedToRadians) {

@@ -161,8 +161,9 @@ TEST(KickModelTest, TheShippedPaperModelHasNoLaunchOffset) {
 }
 
 TEST(KickModelTest, NegativeLaunchOffsetIsRejected) {
-  const auto file = BrokenNaoKicks("offset", kForwardLine,
-                                   R"({"name": "forward", "speed_mps": 1.08, "sigma_speed_mps": 0.15, "direction_deg": 0.0, "sigma_direction_deg": 7.0, "launch_offset_m": -0.05})");
+  const auto file = BrokenNaoKicks(
+      "offset", kForwardLine,
+      R"({"name": "forward", "speed_mps": 1.08, "sigma_speed_mps": 0.15, "direction_deg": 0.0, "sigma_direction_deg": 7.0, "launch_offset_m": -0.05})");
   const std::string message = LoadError(file);
   EXPECT_THAT(message, StartsWith(file.string() + ": kicks[0].launch_offset_m: must be in [0"));
   EXPECT_THAT(message, HasSubstr("got -0.05"));

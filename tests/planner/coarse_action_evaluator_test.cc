@@ -19,8 +19,8 @@ enum class Variant { kPaper, kReboundsAndOffsets };
 
 Situation Configure(Situation s, Variant variant) {
   if (variant == Variant::kReboundsAndOffsets) {
-    const BallPairs e = LoadPhysicsParams(testing::ModelsDir() / "physics" / "spl.json")
-                            .materials.restitution;
+    const BallPairs e =
+        LoadPhysicsParams(testing::ModelsDir() / "physics" / "spl.json").materials.restitution;
     s.evaluation.rebounds = {true, 8, e.post, e.net, e.robot};
     s.kicks.kicks[0].launch_offset_m = 0.06;
     s.kicks.kicks[2].launch_offset_m = 0.02;
@@ -42,9 +42,9 @@ TEST_P(CoarseVariantTest, AgreesWithTheSeamEvaluator) {
       spec = testing::RandomPose(rng, 4.3, 2.9);
     } while ((Vec2(spec.x_m, spec.y_m) - Vec2(3.9, 0.3)).norm() < 0.6 ||
              (Vec2(spec.x_m, spec.y_m) - Vec2(-3.5, -0.5)).norm() < 0.6);
-    const Situation s = Configure(
-        testing::MakeSituation(spec, {{Vec2(3.9, 0.3), 0.15}, {Vec2(-3.5, -0.5), 0.2}}),
-        GetParam());
+    const Situation s =
+        Configure(testing::MakeSituation(spec, {{Vec2(3.9, 0.3), 0.15}, {Vec2(-3.5, -0.5), 0.2}}),
+                  GetParam());
     const CoarsePlanner planner(s);
     CoarseActionEvaluator fast = planner.MakeEvaluator(30, trial);
     SeamActionEvaluator seam = planner.MakeSeamEvaluator(30, trial);
@@ -76,10 +76,10 @@ TEST_P(CoarseVariantTest, LanesGiveTheScalarReferenceBits) {
   RandomStream rng(StreamKey(47, 0));
   int goals = 0, outs = 0;
   for (int trial = 0; trial < 60; ++trial) {
-    const Situation s = Configure(
-        testing::MakeSituation(testing::RandomPose(rng, 4.6, 3.1),
-                               {{Vec2(3.9, 0.3), 0.15}, {Vec2(-1.0, 1.0), 0.2}}),
-        GetParam());
+    const Situation s =
+        Configure(testing::MakeSituation(testing::RandomPose(rng, 4.6, 3.1),
+                                         {{Vec2(3.9, 0.3), 0.15}, {Vec2(-1.0, 1.0), 0.2}}),
+                  GetParam());
     const CoarsePlanner planner(s);
     const int samples = 1 + trial % 37;
     CoarseActionEvaluator evaluator = planner.MakeEvaluator(samples, trial);
@@ -110,7 +110,8 @@ TEST_P(CoarseVariantTest, LanesGiveTheScalarReferenceBitsNearThePosts) {
     testing::StateSpec spec = testing::RandomPose(rng, 0.6, 1.2);
     spec.x_m += (trial % 2 == 0 ? 3.7 : -3.7);
     spec.theta_deg = trial % 2 == 0 ? spec.theta_deg / 4.0 : 180.0 + spec.theta_deg / 4.0;
-    const Situation s = Configure(testing::MakeSituation(spec, {{Vec2(3.0, -1.0), 0.15}}), GetParam());
+    const Situation s =
+        Configure(testing::MakeSituation(spec, {{Vec2(3.0, -1.0), 0.15}}), GetParam());
     const CoarsePlanner planner(s);
     const int samples = 1 + trial % 23;
     CoarseActionEvaluator evaluator = planner.MakeEvaluator(samples, trial);

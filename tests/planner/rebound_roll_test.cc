@@ -17,8 +17,8 @@ class ReboundRollTest : public ::testing::Test {
  protected:
   ReboundRollTest() : situation_(testing::MakeSituation({})) {
     // The shipped materials: the coarse model's one source of its restitution.
-    const BallPairs e = LoadPhysicsParams(testing::ModelsDir() / "physics" / "spl.json")
-                            .materials.restitution;
+    const BallPairs e =
+        LoadPhysicsParams(testing::ModelsDir() / "physics" / "spl.json").materials.restitution;
     situation_.evaluation.rebounds = {true, 8, e.post, e.net, e.robot};
     world_ = CoarseWorld::Build(MakeScene(situation_));
   }
@@ -108,7 +108,8 @@ TEST_F(ReboundRollTest, TheContactAfterMaxContactsReboundsStopsTheBall) {
   EXPECT_EQ(o.first_contact, Contact::kObstacle);
   EXPECT_NEAR(o.p_F_rest.x(), -contact, 1e-12);  // stopped at the second robot
   s.evaluation.rebounds.max_contacts = 8;
-  const Outcome free = RollBall(CoarseWorld::Build(MakeScene(s)), Vec2(0.0, 0.0), Vec2(1.0, 0.0), 4.0);
+  const Outcome free =
+      RollBall(CoarseWorld::Build(MakeScene(s)), Vec2(0.0, 0.0), Vec2(1.0, 0.0), 4.0);
   EXPECT_GT(free.p_F_rest.x(), -contact + 1e-3);  // it rebounded off the second one too
 }
 

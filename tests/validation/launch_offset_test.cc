@@ -38,7 +38,8 @@ std::vector<KickObservation> SyntheticKicks(double offset_m, int n, std::uint64_
 
 TEST(LaunchOffsetTest, TheFitRecoversAKnownOffset) {
   for (double offset : {0.0, 0.05, 0.12}) {
-    const std::optional<LaunchOffsetFit> fit = FitLaunchOffset(SyntheticKicks(offset, 400, 7), 0.27);
+    const std::optional<LaunchOffsetFit> fit =
+        FitLaunchOffset(SyntheticKicks(offset, 400, 7), 0.27);
     ASSERT_TRUE(fit.has_value());
     EXPECT_EQ(fit->kicks, 400);
     // The standard error is 2 cm / sqrt(400) = 1 mm: within 3 of them.
@@ -84,8 +85,8 @@ double PhysicsMeanRestDistance(const PhysicsCalibration& run) {
 // The same for the coarse model: the calibration situation's ball rolled by `model`'s forward
 // kick, 20,000 samples through the planner's evaluator.
 double CoarseMeanRestDistance(const KickModel& model) {
-  Situation s = LoadSituation(testing::ModelsDir() / "calibration" / "nao.json",
-                              testing::ModelsDir());
+  Situation s =
+      LoadSituation(testing::ModelsDir() / "calibration" / "nao.json", testing::ModelsDir());
   s.kicks = model;
   const CoarsePlanner planner(s);
   const CoarseActionEvaluator evaluator = planner.MakeEvaluator(20000, 5);
