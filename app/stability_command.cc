@@ -14,7 +14,7 @@ namespace {
 
 // The flags that decide a stability run's results, as a shard records them.
 nlohmann::ordered_json StabilitySettings(const StabilityOptions& o) {
-  return {{"--params", o.params},   {"--quick", o.quick},     {"--kicks", o.kicks_file},
+  return {{"--params", o.params},     {"--quick", o.quick},     {"--kicks", o.kicks_file},
           {"--strategy", o.strategy}, {"--repeats", o.repeats}, {"--samples", o.samples},
           {"--seed", o.seed}};
 }
@@ -37,7 +37,9 @@ StabilityParams LoadStabilityRun(const StabilityOptions& o, const std::filesyste
   if (o.quick && !o.params.empty()) throw InputError("--quick and --params exclude each other");
   const std::string name =
       o.params.empty() ? (o.quick ? "stability_quick" : "stability") : o.params;
-  StabilityParams params = LoadStabilityParams(name, models, o.kicks_file);
+  SituationOverrides overrides;
+  overrides.kicks_file = o.kicks_file;
+  StabilityParams params = LoadStabilityParams(name, models, overrides);
   if (!o.strategy.empty()) {
     const std::optional<Strategy> s = ParseStrategy(o.strategy);
     if (!s) {
@@ -97,8 +99,8 @@ int RunStabilityCommand(const StabilityOptions& o, const std::filesystem::path& 
   const auto progress = TerminalProgress("stability:", "poses");
   if (shard) {
     const StabilityResult part = RunStability(params, seed, threads, progress, *shard);
-    const ShardHeader header{kStabilityCommand, FORESIGHT_VERSION,  *shard,
-                             StabilitySettings(o), StabilityItems(params)};
+    const ShardHeader header{kStabilityCommand, FORESIGHT_VERSION, *shard, StabilitySettings(o),
+                             StabilityItems(params)};
     WriteShardFolder(o.out_dir, header, StabilityShardResults(part, *shard), start, "poses");
     return 0;
   }
@@ -112,7 +114,7 @@ int RunStabilityCommand(const StabilityOptions& o, const std::filesystem::path& 
 }
 
 int MergeStabilityCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
-                   const std::filesystem::path& models) {
+                          const std::filesystem::path& models) {
   const StabilityOptions o = StabilityOptionsOf(parts.front(), out_dir);
   const std::uint64_t seed = ParseSeed(o.seed);
   const StabilityParams params = LoadStabilityRun(o, models);

@@ -18,8 +18,13 @@ namespace {
 
 // The flags that decide a strategies run's results, as a shard records them.
 nlohmann::ordered_json StrategiesSettings(const StrategiesOptions& o) {
-  return {{"--params", o.params}, {"--kicks", o.kicks_file},         {"--starts", o.starts},
-          {"--physics", o.physics}, {"--physics-file", o.physics_file}, {"--seed", o.seed}};
+  return {{"--params", o.params},
+          {"--kicks", o.kicks_file},
+          {"--starts", o.starts},
+          {"--physics", o.physics},
+          {"--physics-file", o.physics_file},
+          {"--coarse-rebounds", o.coarse_rebounds},
+          {"--seed", o.seed}};
 }
 
 StrategiesOptions StrategiesOptionsOf(const ShardPart& part, const std::string& out_dir) {
@@ -29,6 +34,7 @@ StrategiesOptions StrategiesOptionsOf(const ShardPart& part, const std::string& 
   o.starts = SettingString(part, "--starts");
   o.physics = SettingFlag(part, "--physics");
   o.physics_file = SettingString(part, "--physics-file");
+  o.coarse_rebounds = SettingString(part, "--coarse-rebounds");
   o.seed = SettingString(part, "--seed");
   o.out_dir = out_dir;
   return o;
@@ -48,13 +54,19 @@ std::unique_ptr<StrategiesPlan> PlanStrategies(const StrategiesOptions& o,
   const std::uint64_t seed = ParseSeed(o.seed);
   if (!o.physics && !o.physics_file.empty()) throw InputError("--physics-file needs --physics");
   StrategiesParams& params = plan->params;
-  params = LoadStrategiesParams(o.params, models, o.kicks_file);
+  SituationOverrides overrides;
+  overrides.kicks_file = o.kicks_file;
+  overrides.coarse_rebounds = ParseSwitch("--coarse-rebounds", o.coarse_rebounds);
+  overrides.physics_file = o.physics_file;
+  params = LoadStrategiesParams(o.params, models, overrides);
   if (!o.starts.empty()) {
     params.starts = ParseCount("--starts", o.starts, 1, 10000000);
     params.example_start = std::min(params.example_start, params.starts - 1);
   }
   StrategiesRun& run = plan->run;
   run.provenance = ExperimentProvenance(params.file, params.situation, seed, models);
+  run.provenance.SetInput("coarse_rebounds",
+                          params.situation.evaluation.rebounds.enabled ? "on" : "off");
   run.params = &params;
   if (o.physics) {
     plan->physics = LoadPhysicsSetup(params.situation, models, o.physics_file);
@@ -90,6 +102,9 @@ void AddStrategiesCommand(CLI::App& experiment, StrategiesOptions& o) {
   cmd->add_option("--kicks", o.kicks_file, "Kick model replacing the scene's");
   cmd->add_option("--starts", o.starts, "Random start positions (default: the params file's)");
   cmd->add_flag("--physics", o.physics, "Execute every kick in the Bullet scene");
+  cmd->add_option("--coarse-rebounds", o.coarse_rebounds,
+                  "on or off: the coarse roll rebounds off posts, nets and robots (default: the "
+                  "evaluation file's)");
   cmd->add_option("--physics-file", o.physics_file,
                   "Physics file (default: MODELS/physics/<field>.json)");
   cmd->add_option("--seed", o.seed, "Random seed")->capture_default_str();
@@ -109,8 +124,8 @@ int RunStrategiesCommand(const StrategiesOptions& o, const std::filesystem::path
   if (shard) {
     const StrategiesResult part =
         RunStrategies(plan->params, executor, seed, threads, progress, *shard);
-    const ShardHeader header{kStrategiesCommand, FORESIGHT_VERSION, *shard,
-                             StrategiesSettings(o), plan->params.starts};
+    const ShardHeader header{kStrategiesCommand, FORESIGHT_VERSION, *shard, StrategiesSettings(o),
+                             plan->params.starts};
     WriteShardFolder(o.out_dir, header, StrategiesShardResults(plan->params, part, *shard), start,
                      "starts");
     return 0;
@@ -123,7 +138,7 @@ int RunStrategiesCommand(const StrategiesOptions& o, const std::filesystem::path
 }
 
 int MergeStrategiesCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
-                    const std::filesystem::path& models) {
+                           const std::filesystem::path& models) {
   const StrategiesOptions o = StrategiesOptionsOf(parts.front(), out_dir);
   const std::unique_ptr<StrategiesPlan> plan = PlanStrategies(o, models);
   RequireShardItems(parts.front(), plan->params.starts, "starts");

@@ -131,6 +131,7 @@
 #include "planner/coarse_simulator.h"
 #include "planner/coarse_world.h"
 #include "planner/decision.h"
+#include "planner/first_hit.h"
 #include "planner/hypothesis.h"
 #include "planner/lanes.h"
 #include "planner/naoth_rule.h"
