@@ -95,6 +95,14 @@ void Fit(CalibrationRun& run) {
     all.insert(all.end(), kick.observations.begin(), kick.observations.end());
   }
   run.deceleration = FitPooledDeceleration(all, run.settings);
+  // The launch offsets with the deceleration the model gets (physics trials have launch
+  // points; a CSV log does not, and its kicks keep the base model's offsets).
+  const double a = run.deceleration ? run.deceleration->deceleration_mps2
+                                    : run.base.rolling_deceleration_mps2;
+  for (std::size_t i = 0; i < run.kicks.size(); ++i) {
+    run.kicks[i].fit.launch_offset = FitLaunchOffset(run.kicks[i].observations, a);
+    fits[i].launch_offset = run.kicks[i].fit.launch_offset;
+  }
   run.fitted = ApplyCalibration(run.base, fits, run.deceleration);
 }
 

@@ -84,4 +84,11 @@ std::string DefaultText(double value) {
   return text;
 }
 
+std::optional<bool> ParseSwitch(const std::string& flag, const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  if (text == "on") return true;
+  if (text == "off") return false;
+  throw InputError(flag + ": must be on or off, got '" + text + "'");
+}
+
 }  // namespace foresight

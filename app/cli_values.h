@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,6 +16,8 @@ namespace foresight {
 int ParseCount(const std::string& flag, const std::string& text, int lo, int hi);
 std::uint64_t ParseSeed(const std::string& text);  // for --seed: 0 .. 2^64 - 1
 double ParseNumber(const std::string& flag, const std::string& text, double lo, double hi);
+// "on" or "off" (empty: not given, nullopt); anything else is an InputError naming the flag.
+std::optional<bool> ParseSwitch(const std::string& flag, const std::string& text);
 
 // A library setting's default as the command line shows it, so the default lives in one place
 // (the settings struct): integers in full, numbers in the shortest form ("0.95", not "0.950000").

@@ -33,6 +33,11 @@ void AddFidelityCommand(CLI::App& app, FidelityOptions& options) {
   cmd->add_option("--kicks", options.kicks_file, "Kick model replacing every situation's");
   cmd->add_option("--physics", options.physics_file,
                   "Physics file (default: MODELS/physics/<field>.json)");
+  cmd->add_option("--class", options.situation_class,
+                  "Only the set's situations of this class (e.g. near_posts)");
+  cmd->add_option("--coarse-rebounds", options.coarse_rebounds,
+                  "on or off: the coarse roll rebounds off posts, nets and robots (default: the "
+                  "evaluation files')");
   cmd->add_option("--out", options.out_dir, "Folder for the report")->required();
   AddShardOption(*cmd, options.shard);
 }
@@ -44,7 +49,8 @@ nlohmann::ordered_json FidelitySettingsOf(const FidelityOptions& o) {
   return {{"--situations", o.situations}, {"--trials", o.trials},
           {"--samples", o.samples},       {"--converged", o.converged},
           {"--seed", o.seed},             {"--kicks", o.kicks_file},
-          {"--physics", o.physics_file}};
+          {"--physics", o.physics_file},  {"--class", o.situation_class},
+          {"--coarse-rebounds", o.coarse_rebounds}};
 }
 
 // The run's settings, its set and its provenance (run time aside), the report folder checked.
@@ -65,11 +71,20 @@ FidelityPlan PlanFidelity(const FidelityOptions& options, const std::filesystem:
   run.settings.physics_file = options.physics_file;
   run.settings.progress = TerminalProgress("fidelity:", "situations");
   if (!options.out_dir.empty()) CheckReportDir(options.out_dir, "--out");  // before the work
-  plan.set = LoadFidelitySet(options.situations, models, options.kicks_file);
+  SituationOverrides overrides;
+  overrides.kicks_file = options.kicks_file;
+  overrides.coarse_rebounds = ParseSwitch("--coarse-rebounds", options.coarse_rebounds);
+  overrides.physics_file = options.physics_file;
+  plan.set = LoadFidelitySet(options.situations, models, overrides, options.situation_class);
   run.provenance.inputs = {{"situations_set", plan.set.name},
                            {"set_file", DisplayPath(plan.set.file, models)},
                            {"physics_file", options.physics_file.empty() ? "physics/<field>.json"
-                                                                         : options.physics_file}};
+                                                                         : options.physics_file},
+                           {"class", options.situation_class.empty() ? "all"
+                                                                     : options.situation_class},
+                           {"coarse_rebounds", options.coarse_rebounds.empty()
+                                                   ? "as the evaluation files"
+                                                   : options.coarse_rebounds}};
   run.rotations_rad = plan.set.rotations_rad;
   return plan;
 }
@@ -132,13 +147,11 @@ int MergeFidelityCommand(const std::vector<ShardPart>& parts, const std::string&
   options.seed = SettingString(first, "--seed");
   options.kicks_file = SettingString(first, "--kicks");
   options.physics_file = SettingString(first, "--physics");
+  options.situation_class = SettingString(first, "--class");
+  options.coarse_rebounds = SettingString(first, "--coarse-rebounds");
   options.out_dir = out_dir;
   FidelityPlan plan = PlanFidelity(options, models);
-  if (first.header.items != static_cast<int>(plan.set.cases.size())) {
-    throw InputError(first.file.string() + ": items: " + std::to_string(first.header.items) +
-                     " situations, but the set has " + std::to_string(plan.set.cases.size()) +
-                     " here (other data files?)");
-  }
+  RequireShardItems(first, static_cast<int>(plan.set.cases.size()), "situations");
   plan.run.result = MergeFidelityShards(plan.set, plan.run.settings, parts);
   plan.run.provenance.run_time_s = ShardsRunTime(parts);
   return WriteFidelityReport(out_dir, plan.run);

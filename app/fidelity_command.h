@@ -26,6 +26,8 @@ struct FidelityOptions {
   std::string threads = std::to_string(FidelitySettings{}.threads);
   std::string kicks_file;
   std::string physics_file;
+  std::string situation_class;  // empty: every class of the set
+  std::string coarse_rebounds;  // "on", "off" or empty (the evaluation files')
   std::string out_dir;
   std::string shard;  // "I/N": only that shard (app/shard_output.h); empty: the whole run
 };

@@ -39,6 +39,13 @@ double ShardsRunTime(const std::vector<ShardPart>& parts) {
   return sum;
 }
 
+void RequireShardItems(const ShardPart& first, int items, const std::string& unit) {
+  if (first.header.items == items) return;
+  throw InputError(first.file.string() + ": items: " + std::to_string(first.header.items) + " " +
+                   unit + ", but the run has " + std::to_string(items) +
+                   " here (other data files?)");
+}
+
 std::string SettingString(const ShardPart& part, const std::string& flag) {
   const auto& settings = part.header.settings;
   if (!settings.contains(flag) || !settings[flag].is_string()) {

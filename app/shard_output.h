@@ -27,6 +27,10 @@ void WriteShardFolder(const std::string& out_dir, ShardHeader header,
 // time of a parallel run is shorter).
 double ShardsRunTime(const std::vector<ShardPart>& parts);
 
+// InputError unless the shards' run has `items` items (UNIT: "poses", "trials", ...) with the
+// data files the merge finds: the data changed between the shards and the merge otherwise.
+void RequireShardItems(const ShardPart& first, int items, const std::string& unit);
+
 // The settings of a shard as the flag values they were given as.
 std::string SettingString(const ShardPart& part, const std::string& flag);
 bool SettingFlag(const ShardPart& part, const std::string& flag);

@@ -6,27 +6,38 @@
 #include <benchmark/benchmark.h>
 
 #include "common/random.h"
+#include "models/physics_params.h"
 #include "planner/coarse_planner.h"
+#include "tests/support/temp_files.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {
 namespace {
 
+// The coarse model's contacts: the paper's inelastic stop, or rebounds (issue 12) with the
+// shipped SPL restitution.
+enum class Contacts { kPaper, kRebounds };
+
 // Positions all over the field so that rolls meet posts, nets, lines and open carpet.
-std::vector<Situation> Field(int count) {
+std::vector<Situation> Field(int count, Contacts contacts = Contacts::kPaper) {
   std::vector<Situation> situations;
   RandomStream rng(StreamKey(123, 0));
+  const BallPairs e =
+      LoadPhysicsParams(testing::ModelsDir() / "physics" / "spl.json").materials.restitution;
   for (int i = 0; i < count; ++i) {
     situations.push_back(
         testing::MakeSituation(testing::RandomPose(rng, 4.2, 2.8), {{Vec2(3.8, 0.4), 0.15}}));
+    if (contacts == Contacts::kRebounds) {
+      situations.back().evaluation.rebounds = {true, 8, e.post, e.net, e.robot};
+    }
   }
   return situations;
 }
 
 // Samples of the decision's hot path: one candidate (kick, rotation) over 30 drawn samples,
 // as the rotation search evaluates them (roll, first contact, classification, value).
-void BM_HypothesisSamples(benchmark::State& state) {
-  const std::vector<Situation> situations = Field(16);
+void BM_HypothesisSamples(benchmark::State& state, Contacts contacts) {
+  const std::vector<Situation> situations = Field(16, contacts);
   std::vector<CoarsePlanner> planners(situations.begin(), situations.end());
   std::vector<CoarseActionEvaluator> evaluators;
   for (const CoarsePlanner& p : planners) evaluators.push_back(p.MakeEvaluator(30, 1));
@@ -40,7 +51,8 @@ void BM_HypothesisSamples(benchmark::State& state) {
   benchmark::DoNotOptimize(sink);
   state.SetItemsProcessed(state.iterations() * 30);
 }
-BENCHMARK(BM_HypothesisSamples);
+BENCHMARK_CAPTURE(BM_HypothesisSamples, paper, Contacts::kPaper);
+BENCHMARK_CAPTURE(BM_HypothesisSamples, rebounds, Contacts::kRebounds);
 
 // One sample from scratch through the seam: draw the state and the kick noise (7 normals),
 // place the ball, roll, classify, value.
@@ -65,8 +77,8 @@ BENCHMARK(BM_FreshSample);
 
 // A whole decision as a robot's cycle makes it: the samples drawn for the pose and seed into
 // the evaluator's storage (kept between cycles), the strategy, the result into a kept Decision.
-void BM_Decision(benchmark::State& state, Strategy strategy) {
-  const std::vector<Situation> situations = Field(16);
+void BM_Decision(benchmark::State& state, Strategy strategy, Contacts contacts) {
+  const std::vector<Situation> situations = Field(16, contacts);
   std::vector<CoarsePlanner> planners(situations.begin(), situations.end());
   std::vector<CoarseActionEvaluator> evaluators;
   for (const CoarsePlanner& p : planners) evaluators.push_back(p.MakeEvaluator(30, 0));
@@ -85,10 +97,15 @@ void BM_Decision(benchmark::State& state, Strategy strategy) {
       benchmark::Counter(static_cast<double>(hypotheses), benchmark::Counter::kAvgIterations);
 }
 // naoth: the plain decision, 3 kicks + none at their current rotation, 30 samples each.
-BENCHMARK_CAPTURE(BM_Decision, plain_naoth, Strategy::kNaoth)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Decision, fast, Strategy::kFast)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Decision, optimal_all, Strategy::kOptimalAll)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Decision, optimal_value, Strategy::kOptimalValue)
+BENCHMARK_CAPTURE(BM_Decision, plain_naoth, Strategy::kNaoth, Contacts::kPaper)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Decision, fast, Strategy::kFast, Contacts::kPaper)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Decision, optimal_all, Strategy::kOptimalAll, Contacts::kPaper)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Decision, optimal_value, Strategy::kOptimalValue, Contacts::kPaper)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Decision, optimal_all_rebounds, Strategy::kOptimalAll, Contacts::kRebounds)
     ->Unit(benchmark::kMicrosecond);
 
 // The same through CoarsePlanner::Decide(strategy, samples, seed), which makes a fresh evaluator

@@ -80,6 +80,12 @@ std::string JsonObject::StringOr(std::string_view key, std::string fallback) con
   return Has(key) ? String(key) : fallback;
 }
 
+bool JsonObject::Bool(std::string_view key) const {
+  const nlohmann::json& v = Get(key);
+  if (!v.is_boolean()) Fail(key, "must be true or false, got " + QuoteJson(v));
+  return v.get<bool>();
+}
+
 bool JsonObject::BoolOr(std::string_view key, bool fallback) const {
   if (!Has(key)) return fallback;
   const nlohmann::json& v = Get(key);

@@ -37,7 +37,8 @@ class JsonObject {
   int Integer(std::string_view key) const;
   std::string String(std::string_view key) const;
   std::string StringOr(std::string_view key, std::string fallback) const;
-  bool BoolOr(std::string_view key, bool fallback) const;  // true or false, nothing else
+  bool Bool(std::string_view key) const;                   // true or false, nothing else
+  bool BoolOr(std::string_view key, bool fallback) const;  // ... or absent
   JsonObject Object(std::string_view key) const;
   std::vector<JsonObject> ObjectArray(std::string_view key) const;  // empty if the key is absent
   // Arrays of plain values; each item is checked ("FILE: PATH.key[2]: must be a number, ...").

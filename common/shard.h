@@ -20,6 +20,9 @@ struct Shard {
   // How many of items 0 .. items - 1 this shard owns, and the k-th of them.
   int OwnedCount(int items) const { return items > index ? (items - index - 1) / count + 1 : 0; }
   int Item(int k) const { return index + k * count; }
+  // This shard seen from item `first` on, for a run whose items come in blocks (a block of
+  // trials per team): the result owns j exactly when this shard owns first + j.
+  Shard From(int first) const { return {((index - first) % count + count) % count, count}; }
   std::string Text() const;  // "I/N"
 };
 

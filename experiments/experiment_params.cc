@@ -29,16 +29,13 @@ JsonDocument LoadParamsFile(const std::filesystem::path& file) {
 }
 
 Situation LoadScene(const JsonObject& root, const std::filesystem::path& file,
-                    const std::filesystem::path& models_dir,
-                    const std::filesystem::path& kicks_override) {
+                    const std::filesystem::path& models_dir, const SituationOverrides& overrides) {
   const std::filesystem::path situation_file = ResolveModelFile(
       root.String("situation"), DataFolder::kSituations, file.parent_path(), models_dir);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(situation_file, ec)) {
     root.Fail("situation", "refers to " + situation_file.string() + ", which does not exist");
   }
-  SituationOverrides overrides;
-  overrides.kicks_file = kicks_override;
   return LoadSituation(situation_file, models_dir, overrides);
 }
 
@@ -107,14 +104,14 @@ void StrategiesParams::Validate() const {
 
 StabilityParams LoadStabilityParams(const std::string& params,
                                     const std::filesystem::path& models_dir,
-                                    const std::filesystem::path& kicks_override) {
+                                    const SituationOverrides& overrides) {
   StabilityParams p;
   p.file = ParamsFile(params, models_dir);
   const JsonDocument doc = LoadParamsFile(p.file);
   const JsonObject root = doc.Root();
   root.RejectUnknownKeys({"situation", "strategy", "grid_step_m", "heading_step_deg", "repeats",
                           "sample_counts", "map_samples", "rotation_bin_deg"});
-  p.situation = LoadScene(root, p.file, models_dir, kicks_override);
+  p.situation = LoadScene(root, p.file, models_dir, overrides);
   p.strategy = StrategyOf(root, "strategy", root.String("strategy"));
   p.grid_step_m = root.Number("grid_step_m");
   p.heading_step_rad = root.Number("heading_step_deg") * kDegToRad;
@@ -130,7 +127,7 @@ StabilityParams LoadStabilityParams(const std::string& params,
 
 StrategiesParams LoadStrategiesParams(const std::string& params,
                                       const std::filesystem::path& models_dir,
-                                      const std::filesystem::path& kicks_override) {
+                                      const SituationOverrides& overrides) {
   StrategiesParams p;
   p.file = ParamsFile(params, models_dir);
   const JsonDocument doc = LoadParamsFile(p.file);
@@ -138,7 +135,7 @@ StrategiesParams LoadStrategiesParams(const std::string& params,
   root.RejectUnknownKeys({"situation", "strategies", "starts", "max_steps", "walk_speed_mps",
                           "turn_speed_deg_per_s", "turn_around_ball_speed_deg_per_s",
                           "example_start"});
-  p.situation = LoadScene(root, p.file, models_dir, kicks_override);
+  p.situation = LoadScene(root, p.file, models_dir, overrides);
   for (const std::string& name : root.StringArray("strategies")) {
     const Strategy s = StrategyOf(root, "strategies", name);
     if (std::ranges::find(p.strategies, s) != p.strategies.end()) {

@@ -53,14 +53,14 @@ struct StrategiesParams {
   void Validate() const;
 };
 
-// `params` is a file, or a bare name found as MODELS/experiments/<name>.json. `kicks_override`
-// (not empty) replaces the situation's kick model. Throws InputError on bad input.
+// `params` is a file, or a bare name found as MODELS/experiments/<name>.json. `overrides` apply to
+// the scene's situation (a kick model, the coarse rebounds). Throws InputError on bad input.
 StabilityParams LoadStabilityParams(const std::string& params,
                                     const std::filesystem::path& models_dir,
-                                    const std::filesystem::path& kicks_override = {});
+                                    const SituationOverrides& overrides = {});
 StrategiesParams LoadStrategiesParams(const std::string& params,
                                       const std::filesystem::path& models_dir,
-                                      const std::filesystem::path& kicks_override = {});
+                                      const SituationOverrides& overrides = {});
 
 // Parses "1-25,30-110/10" style lists: items separated by commas, each a number or a range
 // lo-hi with an optional /step (default 1). InputError naming `field` on bad text.

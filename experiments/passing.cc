@@ -144,9 +144,21 @@ std::uint64_t PassingTrialKey(std::uint64_t seed, int scenario, int trial) {
                    kPassingDomain);
 }
 
+PassingResult EmptyPassingResult(const PassingSetup& setup) {
+  PassingResult result;
+  for (int n : setup.scenarios) {
+    ScenarioTrials st;
+    st.scenario = n;
+    st.name = setup.config.scenarios[static_cast<std::size_t>(n - 1)].name;
+    st.trials.resize(static_cast<std::size_t>(setup.trials));
+    result.scenarios.push_back(std::move(st));
+  }
+  return result;
+}
+
 PassingResult RunPassing(const PassingSetup& setup, const std::string& team,
                          const KickExecutor& executor, std::uint64_t seed, int threads,
-                         const std::function<void(int, int)>& progress) {
+                         const std::function<void(int, int)>& progress, const Shard& shard) {
   MatchSetup match;
   match.field = &setup.field;
   match.kicks = &setup.kicks;
@@ -158,19 +170,13 @@ PassingResult RunPassing(const PassingSetup& setup, const std::string& team,
   MatchSetup example = match;
   example.trace_period_s = setup.params.trace_period_s;
 
-  PassingResult result;
-  for (int n : setup.scenarios) {
-    ScenarioTrials st;
-    st.scenario = n;
-    st.name = setup.config.scenarios[static_cast<std::size_t>(n - 1)].name;
-    st.trials.resize(static_cast<std::size_t>(setup.trials));
-    result.scenarios.push_back(std::move(st));
-  }
+  PassingResult result = EmptyPassingResult(setup);
   const int per = setup.trials;
   const int total = per * static_cast<int>(result.scenarios.size());
   ParallelFor(
-      total, threads,
-      [&](int job) {
+      shard.OwnedCount(total), threads,
+      [&](int owned) {
+        const int job = shard.Item(owned);
         ScenarioTrials& st = result.scenarios[static_cast<std::size_t>(job / per)];
         const int trial = job % per;
         const Scenario& scenario =

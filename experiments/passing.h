@@ -21,6 +21,7 @@
 #include "cbr/cbr_team.h"
 #include "cbr/retrieval_params.h"
 #include "cbr/team_params.h"
+#include "common/shard.h"
 #include "match/match.h"
 #include "match/reactive_team.h"
 #include "models/field_spec.h"
@@ -96,10 +97,17 @@ std::uint64_t PassingTrialKey(std::uint64_t seed, int scenario, int trial);
 // (its aim tolerance) and the match's (the ball-holding rule), as in the paper (sec. 5.3).
 CbrTeamSetup CbrSetup(const PassingSetup& setup);
 
+// The scenarios of `setup` with their names and setup.trials empty trials each.
+PassingResult EmptyPassingResult(const PassingSetup& setup);
+
 // Plays every trial with `team` (one of setup.teams) attacking and `executor` carrying out the
-// kicks; progress(done, total) counts trials.
+// kicks; progress(done, total) counts trials. With a shard other than the whole run (issue 17),
+// only the trials it owns are played, numbered scenario by scenario (trial i of the k-th
+// scenario is k * setup.trials + i); the others stay empty: experiments/passing_shard.h merges
+// the shards. A trial's random numbers and whether it is traced never depend on the shard.
 PassingResult RunPassing(const PassingSetup& setup, const std::string& team,
                          const KickExecutor& executor, std::uint64_t seed, int threads,
-                         const std::function<void(int, int)>& progress = {});
+                         const std::function<void(int, int)>& progress = {},
+                         const Shard& shard = {});
 
 }  // namespace foresight

@@ -67,36 +67,70 @@ Json ScenarioJson(const AblationRun& run, std::size_t v, std::size_t s) {
           {"difference_vs_reactive", vs_reactive}};
 }
 
+// The ablations read a trial's outcome and counters only: without its event log (hundreds of
+// messages per CBR trial) and trace, 16 teams' trials fit in memory and in shard files.
+void KeepCountsOnly(PassingResult& result) {
+  for (ScenarioTrials& st : result.scenarios) {
+    for (MatchTrialResult& t : st.trials) {
+      t.events = {};
+      t.trace = {};
+    }
+  }
+}
+
 }  // namespace
 
-AblationRun RunAblations(const PassingSetup& base, std::vector<PassingVariant> variants,
-                         const KickExecutor& executor, std::uint64_t seed, int threads,
-                         const std::function<void(int, int)>& progress) {
-  AblationRun run;
-  run.base = &base;
-  run.variants = std::move(variants);
+std::vector<std::string> AblationTeams(const std::vector<PassingVariant>& variants) {
+  std::vector<std::string> teams = {"reactive"};
+  for (const PassingVariant& v : variants) teams.push_back(v.name);
+  return teams;
+}
+
+std::vector<PassingResult> PlayAblations(const PassingSetup& base,
+                                         const std::vector<PassingVariant>& variants,
+                                         const KickExecutor& executor, std::uint64_t seed,
+                                         int threads,
+                                         const std::function<void(int, int)>& progress,
+                                         const Shard& shard) {
   const int per_team = base.trials * static_cast<int>(base.scenarios.size());
-  const int total = per_team * static_cast<int>(run.variants.size() + 1);
+  const int teams = static_cast<int>(variants.size()) + 1;
+  const int total = shard.OwnedCount(per_team * teams);
   int done_before = 0;
   const auto step = [&](int done, int) {
     if (progress) progress(done_before + done, total);
   };
-  const PassingResult reactive = RunPassing(base, "reactive", executor, seed, threads, step);
-  done_before += per_team;
-  run.reactive = SummarisePassing(reactive, base.params.confidence);
+  std::vector<PassingResult> results;
+  for (int t = 0; t < teams; ++t) {
+    const Shard mine = shard.From(t * per_team);
+    if (t == 0) {
+      results.push_back(RunPassing(base, "reactive", executor, seed, threads, step, mine));
+    } else {
+      const PassingSetup setup = variants[static_cast<std::size_t>(t - 1)].Apply(base);
+      results.push_back(RunPassing(setup, "cbr", executor, seed, threads, step, mine));
+    }
+    KeepCountsOnly(results.back());
+    done_before += mine.OwnedCount(per_team);
+  }
+  return results;
+}
+
+AblationRun SummariseAblations(const PassingSetup& base, std::vector<PassingVariant> variants,
+                               const std::vector<PassingResult>& results) {
+  AblationRun run;
+  run.base = &base;
+  run.variants = std::move(variants);
+  const double confidence = base.params.confidence;
+  const PassingResult& reactive = results.front();
+  run.reactive = SummarisePassing(reactive, confidence);
   const std::vector<std::string> opponents = OpponentNames(base);
-  PassingResult reference;
+  const std::string& reference_name = run.variants.front().name;
   for (std::size_t v = 0; v < run.variants.size(); ++v) {
-    const PassingSetup setup = run.variants[v].Apply(base);
-    PassingResult result = RunPassing(setup, "cbr", executor, seed, threads, step);
-    done_before += per_team;
-    if (v == 0) reference = result;
-    run.summaries.push_back(SummarisePassing(result, base.params.confidence));
-    run.vs_reference.push_back(ComparePassing(run.variants[v].name, result,
-                                              run.variants.front().name, reference, opponents,
-                                              base.params.confidence));
+    const PassingResult& result = results[v + 1];
+    run.summaries.push_back(SummarisePassing(result, confidence));
+    run.vs_reference.push_back(ComparePassing(run.variants[v].name, result, reference_name,
+                                              results[1], opponents, confidence));
     run.vs_reactive.push_back(ComparePassing(run.variants[v].name, result, "reactive", reactive,
-                                             opponents, base.params.confidence));
+                                             opponents, confidence));
   }
   return run;
 }

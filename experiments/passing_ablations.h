@@ -27,10 +27,24 @@ struct AblationRun {
   std::vector<PassingComparison> vs_reactive;           // per variant
 };
 
-// Plays the reactive team and every variant; progress(done, total) counts trials over all.
-AblationRun RunAblations(const PassingSetup& base, std::vector<PassingVariant> variants,
-                         const KickExecutor& executor, std::uint64_t seed, int threads,
-                         const std::function<void(int, int)>& progress = {});
+// The teams of an ablation run in play order, the reactive team first: "reactive" and the
+// variants' names. Their trials are the run's items team by team (experiments/passing_shard.h).
+std::vector<std::string> AblationTeams(const std::vector<PassingVariant>& variants);
+
+// Plays the reactive team and every variant, one result per AblationTeams entry; progress(done,
+// total) counts trials over all. The trials keep their outcome and counters, not their event
+// logs and traces, which no ablation output reads. With a shard other than the whole run (issue
+// 17) only its trials are played (the teams' trials numbered one team after the other).
+std::vector<PassingResult> PlayAblations(const PassingSetup& base,
+                                         const std::vector<PassingVariant>& variants,
+                                         const KickExecutor& executor, std::uint64_t seed,
+                                         int threads,
+                                         const std::function<void(int, int)>& progress = {},
+                                         const Shard& shard = {});
+
+// The summaries and paired comparisons of every team's results (PlayAblations' order).
+AblationRun SummariseAblations(const PassingSetup& base, std::vector<PassingVariant> variants,
+                               const std::vector<PassingResult>& results);
 
 nlohmann::ordered_json AblationsJson(const AblationRun& run);
 std::string AblationsCsv(const AblationRun& run);

@@ -13,6 +13,9 @@ namespace foresight {
 constexpr double kMinPotentialLengthM = 0.01;
 constexpr double kMaxPotentialLengthM = 1e3;
 constexpr double kMaxPotentialWeight = 1e3;
+// Plausibility bound of the coarse roll's contacts per kick (assumption): every rebound costs the
+// ball (1 - e) of its normal speed, so a roll that touches more than a hundred things is garbage.
+constexpr int kMaxCoarseContacts = 100;
 
 void EvaluationParams::Validate() const {
   RequirePositive("potential.linear_x_scale_m", potential.linear_x_scale_m);
@@ -39,13 +42,14 @@ void EvaluationParams::Validate() const {
                  90.0);
   RequireInRange("rotation_search.refine_levels", rotation_search.refine_levels, 0, 20);
   RequireInRange("rotation_search.refine_candidates", rotation_search.refine_candidates, 1, 100);
+  RequireInRange("rebounds.max_contacts", rebounds.max_contacts, 1, kMaxCoarseContacts);
 }
 
 EvaluationParams LoadEvaluationParams(const std::filesystem::path& file) {
   JsonDocument doc = JsonDocument::Load(file);
   JsonObject root = doc.Root();
   root.RejectUnknownKeys({"name", "potential", "goal_value", "max_out_share", "samples",
-                          "naoth_rule", "rotation_search"});
+                          "naoth_rule", "rotation_search", "rebounds"});
   EvaluationParams params;
   params.name = root.String("name");
   JsonObject potential = root.Object("potential");
@@ -71,6 +75,11 @@ EvaluationParams LoadEvaluationParams(const std::filesystem::path& file) {
   params.rotation_search.grid_step_rad = search.Number("grid_step_deg") * kDegToRad;
   params.rotation_search.refine_levels = search.Integer("refine_levels");
   params.rotation_search.refine_candidates = search.Integer("refine_candidates");
+
+  JsonObject rebounds = root.Object("rebounds");
+  rebounds.RejectUnknownKeys({"enabled", "max_contacts"});
+  params.rebounds.enabled = rebounds.Bool("enabled");
+  params.rebounds.max_contacts = rebounds.Integer("max_contacts");
 
   WithFile(file.string(), [&] { params.Validate(); });
   return params;

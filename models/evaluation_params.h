@@ -44,6 +44,21 @@ struct RotationSearchParams {
   int refine_candidates = 0;
 };
 
+// The coarse roll's contacts with posts, nets and robots (issue 12). Off, the paper's model: the
+// ball stops where it first touches one (fully inelastic). On: it rebounds, reflected about the
+// contact normal with its normal speed scaled by the pair's restitution (tangential speed kept),
+// and rolls on; after max_contacts rebounds the next contact stops it.
+struct CoarseRebounds {
+  bool enabled = false;
+  int max_contacts = 0;
+  // The restitution of each pair, from the field's physics file (models/physics/<field>.json,
+  // materials.restitution: ball_post, ball_net, ball_robot), read by LoadSituation when enabled,
+  // so physics and the coarse model share one source. Zero until then.
+  double post = 0.0;
+  double net = 0.0;
+  double robot = 0.0;
+};
+
 struct EvaluationParams {
   std::string name;
   PotentialParams potential;
@@ -52,6 +67,7 @@ struct EvaluationParams {
   int samples = 0;             // N, samples per hypothesis
   NaothRuleParams naoth_rule;
   RotationSearchParams rotation_search;
+  CoarseRebounds rebounds;  // enabled and max_contacts from the file
 
   void Validate() const;
 };

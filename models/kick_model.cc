@@ -11,6 +11,11 @@
 
 namespace foresight {
 
+// Plausibility bound of a launch offset (assumption): kicks slide a few centimetres before they
+// roll (physics: about 5 cm); half a metre is a unit error. It cannot be negative: free rolling
+// does not start behind where the ball lay.
+constexpr double kMaxLaunchOffsetM = 0.5;
+
 std::optional<int> KickModel::Find(const std::string& name) const {
   for (std::size_t i = 0; i < kicks.size(); ++i) {
     if (kicks[i].name == name) return static_cast<int>(i);
@@ -46,6 +51,7 @@ void KickModel::Validate() const {
     RequireInRange(at + "sigma_speed_mps", kick.sigma_speed_mps, 0.0, 50.0);
     RequireInRange(at + "direction_deg", kick.direction_rad * kRadToDeg, -180.0, 180.0);
     RequireInRange(at + "sigma_direction_deg", kick.sigma_direction_rad * kRadToDeg, 0.0, 180.0);
+    RequireInRange(at + "launch_offset_m", kick.launch_offset_m, 0.0, kMaxLaunchOffsetM);
   }
 }
 
@@ -57,14 +63,15 @@ KickModel LoadKickModel(const std::filesystem::path& file) {
   model.robot = root.String("robot");
   model.rolling_deceleration_mps2 = root.Number("rolling_deceleration_mps2");
   for (const JsonObject& item : root.ObjectArray("kicks")) {
-    item.RejectUnknownKeys(
-        {"name", "speed_mps", "sigma_speed_mps", "direction_deg", "sigma_direction_deg"});
+    item.RejectUnknownKeys({"name", "speed_mps", "sigma_speed_mps", "direction_deg",
+                            "sigma_direction_deg", "launch_offset_m"});
     KickSpec kick;
     kick.name = item.String("name");
     kick.speed_mps = item.Number("speed_mps");
     kick.sigma_speed_mps = item.Number("sigma_speed_mps");
     kick.direction_rad = item.Number("direction_deg") * kDegToRad;  // files say degrees
     kick.sigma_direction_rad = item.Number("sigma_direction_deg") * kDegToRad;
+    kick.launch_offset_m = item.NumberOr("launch_offset_m", 0.0);  // the paper's models: none
     model.kicks.push_back(kick);
   }
   WithFile(file.string(), [&] { model.Validate(); });
@@ -100,7 +107,10 @@ std::string KickModelJson(const KickModel& model, std::string_view notes) {
     out += "    {\"name\": " + Quoted(k.name) + ", \"speed_mps\": " + Rounded(k.speed_mps, 4) +
            ", \"sigma_speed_mps\": " + Rounded(k.sigma_speed_mps, 4) +
            ", \"direction_deg\": " + Rounded(k.direction_rad * kRadToDeg, 2) +
-           ", \"sigma_direction_deg\": " + Rounded(k.sigma_direction_rad * kRadToDeg, 2) + "}";
+           ", \"sigma_direction_deg\": " + Rounded(k.sigma_direction_rad * kRadToDeg, 2);
+    // Written only when there is one, so models without it keep their bytes (0.1 mm).
+    if (k.launch_offset_m != 0.0) out += ", \"launch_offset_m\": " + Rounded(k.launch_offset_m, 4);
+    out += "}";
     out += i + 1 < model.kicks.size() ? ",\n" : "\n";
   }
   return out + "  ]\n}\n";

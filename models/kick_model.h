@@ -2,6 +2,11 @@
 // a kick launches the ball with speed v0 ~ N(speed_mps, sigma_speed_mps^2) in direction
 // alpha ~ N(direction_rad, sigma_direction_rad^2), alpha in the robot frame R (0 = straight
 // ahead, +pi/2 = to the left). The ball then decelerates at rolling_deceleration_mps2.
+//
+// launch_offset_m (issue 12) is where free rolling starts, measured from where the ball lay along
+// the launch direction: a kicked ball first slides (physics: about 5 cm for the NAO's forward
+// kick) and only then rolls at v0. The coarse roll covers the offset before it decelerates.
+// Calibration fits it (foresight calibrate, physics mode); the paper's models leave it 0.
 #pragma once
 
 #include <filesystem>
@@ -18,6 +23,7 @@ struct KickSpec {
   double sigma_speed_mps = 0.0;
   double direction_rad = 0.0;
   double sigma_direction_rad = 0.0;
+  double launch_offset_m = 0.0;  // optional in the files: 0 when absent
 };
 
 // The kick index of the `none` action: no kick, the ball stays where it lies.

@@ -78,7 +78,8 @@ std::vector<MotorLine> JointMotors(const MotorTable& table, const RobotModel& mo
   }
   for (std::size_t j = 0; j < model.joints.size(); ++j) {
     if (model.joints[j].kind == RobotJoint::Kind::kRevolute && !named[j]) {
-      throw InputError(field + model.joints[j].name + ": missing (every revolute joint needs "
+      throw InputError(field + model.joints[j].name +
+                       ": missing (every revolute joint needs "
                        "its motor)");
     }
   }

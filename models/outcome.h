@@ -41,6 +41,7 @@ struct Scene {
   const FieldSpec* field = nullptr;
   std::span<const Obstacle> obstacles;
   double rolling_deceleration_mps2 = 0.0;
+  CoarseRebounds rebounds;  // the coarse model's contacts (physics has its own materials)
 };
 
 // One drawn state: where the kicking robot stands and where the ball lies, both in F.
@@ -52,13 +53,14 @@ struct DrawnState {
 // One concrete action. kick_index == kNoKick (models/kick_model.h) is the `none` action (the ball
 // stays). The robot first turns around the ball by rotation_rad (the ball stays put, the robot's
 // heading changes by it), then kicks. launch_* are the coarse model's drawn launch in the turned
-// robot frame; a physics simulator ignores them and draws its physical perturbations from `stream`
-// instead.
+// robot frame (and the kick's launch offset, models/kick_model.h); a physics simulator ignores them
+// and draws its physical perturbations from `stream` instead.
 struct ConcreteAction {
   int kick_index = kNoKick;
   double rotation_rad = 0.0;
   double launch_speed_mps = 0.0;
   double launch_direction_rad = 0.0;
+  double launch_offset_m = 0.0;  // the kick's: free rolling starts this far along the launch
   std::uint64_t stream = 0;
 };
 

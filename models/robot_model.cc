@@ -401,6 +401,14 @@ RobotModel LoadRobotModel(const std::filesystem::path& urdf_file) {
   RobotModel model;
   model.name = urdf->getName();
   model.source = urdf_file;
+  // urdfdom accepts a joint whose child is its own parent (found by fuzzing); name it here,
+  // before the tree walk reports the link only as unreached.
+  for (const auto& [name, joint] : urdf->joints_) {
+    if (joint->parent_link_name == joint->child_link_name) {
+      Fail(urdf_file, "urdf: joint " + name + ": parent and child are the same link " +
+                          joint->child_link_name);
+    }
+  }
   AppendSubtree(*urdf, *urdf->getRoot(), -1, urdf_file, &model);
   if (model.links.size() != urdf->links_.size()) {
     std::string unreached;

@@ -6,6 +6,7 @@
 #include "common/error.h"
 #include "common/json_reader.h"
 #include "models/model_paths.h"
+#include "models/physics_params.h"
 
 namespace foresight {
 
@@ -91,6 +92,27 @@ void RequireBallOutOfGoals(const FieldSpec& field, const Vec2& p_F) {
   }
 }
 
+// The coarse rebounds' restitution from the physics file of the field (the one source of the
+// figures: physics realises the same pairs).
+void LoadReboundRestitution(const SituationOverrides& overrides,
+                            const std::filesystem::path& models_dir, Situation& situation) {
+  const std::filesystem::path file =
+      overrides.physics_file.empty()
+          ? DataFile(models_dir, DataFolder::kPhysics, situation.field.name)
+          : overrides.physics_file;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) {
+    throw InputError(situation.evaluation_file.string() +
+                     ": rebounds.enabled: the coarse rebounds read their restitution from " +
+                     file.string() + ", which does not exist");
+  }
+  const BallPairs e = LoadPhysicsParams(file).materials.restitution;
+  CoarseRebounds& rebounds = situation.evaluation.rebounds;
+  rebounds.post = e.post;
+  rebounds.net = e.net;
+  rebounds.robot = e.robot;
+}
+
 }  // namespace
 
 void Situation::Validate() const {
@@ -169,6 +191,10 @@ Situation LoadSituation(const std::filesystem::path& file, const std::filesystem
   }
   situation.evaluation =
       LoadReferenced(root, "evaluation", situation.evaluation_file, LoadEvaluationParams);
+  if (overrides.coarse_rebounds) situation.evaluation.rebounds.enabled = *overrides.coarse_rebounds;
+  if (situation.evaluation.rebounds.enabled) {
+    LoadReboundRestitution(overrides, models_dir, situation);
+  }
   situation.state = ReadState(root);
 
   for (const JsonObject& item : root.ObjectArray("obstacles")) {

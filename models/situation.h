@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,11 @@ struct Situation {
 
 struct SituationOverrides {
   std::filesystem::path kicks_file;  // replaces the situation's kick model when not empty
+  // Replaces the evaluation file's rebounds.enabled when set (--coarse-rebounds).
+  std::optional<bool> coarse_rebounds;
+  // Where the coarse rebounds' restitution is read when not empty (the run's --physics file);
+  // otherwise MODELS/physics/<field>.json, as physics reads it.
+  std::filesystem::path physics_file;
 };
 
 Situation LoadSituation(const std::filesystem::path& file, const std::filesystem::path& models_dir,

@@ -63,8 +63,10 @@ void CoarseActionEvaluator::Redraw(const StateEstimate& state, int samples, std:
       Store(cos_heading, &direction_x_[slot]);
       Store(sin_heading, &direction_y_[slot]);
       Store(speed, &speed_mps_[slot]);
-      Store(Select(moving, speed * speed / (2.0 * world_.deceleration_mps2), Broadcast(0.0)),
-            &stop_m_[slot]);  // StopDistance
+      // StopDistance plus the launch offset, as RollBall adds them.
+      Store(Select(moving, speed * speed / (2.0 * world_.deceleration_mps2) + kick.launch_offset_m,
+                   Broadcast(0.0)),
+            &stop_m_[slot]);
       StoreMask(moving, &moving_[slot]);
     }
   }
@@ -77,7 +79,8 @@ Outcome CoarseActionEvaluator::SimulateOne(int kick_index, std::size_t sample, d
   const std::size_t slot = LaunchSlot(kick_index, sample);
   const double ux = direction_x_[slot], uy = direction_y_[slot];
   const Vec2 direction(cos_rho * ux - sin_rho * uy, sin_rho * ux + cos_rho * uy);
-  return RollBall(world_, p, direction, speed_mps_[slot]);
+  return RollBall(world_, p, direction, speed_mps_[slot],
+                  situation_.kicks.kicks[static_cast<std::size_t>(kick_index)].launch_offset_m);
 }
 
 ActionEvaluation CoarseActionEvaluator::EvaluateReference(int kick_index,
@@ -104,6 +107,9 @@ RollLanesInput CoarseActionEvaluator::Launch(int kick_index, std::size_t first, 
   in.stop_m = Load(&stop_m_[slot]);
   in.moving = LoadMask(&moving_[slot]);
   in.start_category = LoadMask(&start_category_[first]);
+  in.speed_mps = Load(&speed_mps_[slot]);
+  in.offset_m =
+      Broadcast(situation_.kicks.kicks[static_cast<std::size_t>(kick_index)].launch_offset_m);
   return in;
 }
 

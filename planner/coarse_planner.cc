@@ -3,7 +3,8 @@
 namespace foresight {
 
 Scene MakeScene(const Situation& situation) {
-  return Scene{&situation.field, situation.obstacles, situation.kicks.rolling_deceleration_mps2};
+  return Scene{&situation.field, situation.obstacles, situation.kicks.rolling_deceleration_mps2,
+               situation.evaluation.rebounds};
 }
 
 CoarsePlanner::CoarsePlanner(const Situation& situation)

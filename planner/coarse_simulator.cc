@@ -8,7 +8,8 @@ Outcome CoarseSimulator::Simulate(const DrawnState& state, const ConcreteAction&
   if (action.kick_index == kNoKick) return RollBall(world_, state.p_F_ball, Vec2(1.0, 0.0), 0.0);
   const double heading_F =
       state.robot.theta_rad + action.rotation_rad + action.launch_direction_rad;
-  return RollBall(world_, state.p_F_ball, UnitVector(heading_F), action.launch_speed_mps);
+  return RollBall(world_, state.p_F_ball, UnitVector(heading_F), action.launch_speed_mps,
+                  action.launch_offset_m);
 }
 
 }  // namespace foresight

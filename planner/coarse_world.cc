@@ -48,6 +48,7 @@ CoarseWorld CoarseWorld::Build(const Scene& scene) {
   world.ball_radius_m = field.ball.radius_m;
   world.deceleration_mps2 = scene.rolling_deceleration_mps2;
   world.lines = FieldLines::Of(field);
+  world.rebounds = scene.rebounds;
   world.goals[0] = MakeGoal(field, +1.0);
   world.goals[1] = MakeGoal(field, -1.0);
   for (const Obstacle& o : scene.obstacles) {

@@ -44,6 +44,13 @@ struct CoarseWorld {
   FieldLines lines;
   std::array<GoalShapes, 2> goals;  // [0] opponent (+x), [1] own (-x)
   std::vector<CircleShape> obstacles;
+  CoarseRebounds rebounds;  // off: the paper's inelastic stop (planner/ball_roll.h)
+
+  // The restitution of a contact of this kind (rebounds on).
+  double RestitutionOf(Contact kind) const {
+    return kind == Contact::kPost ? rebounds.post
+                                  : (kind == Contact::kNet ? rebounds.net : rebounds.robot);
+  }
 
   static CoarseWorld Build(const Scene& scene);
 };

@@ -53,9 +53,12 @@ inline bool Any(LaneMask m) {
   return any != 0;
 }
 
-// std::min and std::clamp's definitions lane by lane (the same lane wins on ties).
+// std::min, std::max and std::clamp's definitions lane by lane (the same lane wins on ties).
 inline Lanes Min(Lanes a, Lanes b) {
   return Select(b < a, b, a);
+}
+inline Lanes Max(Lanes a, Lanes b) {
+  return Select(a < b, b, a);
 }
 inline Lanes Clamp(Lanes v, Lanes lo, Lanes hi) {
   return Select(v < lo, lo, Select(hi < v, hi, v));

@@ -39,6 +39,7 @@ ConcreteAction MakeAction(const KickModel& kicks, int kick_index, double rotatio
     const KickSpec& kick = kicks.kicks[static_cast<std::size_t>(kick_index)];
     action.launch_speed_mps = LaunchSpeed(kick, sample.z_speed);
     action.launch_direction_rad = LaunchDirection(kick, sample.z_direction);
+    action.launch_offset_m = kick.launch_offset_m;
   }
   return action;
 }

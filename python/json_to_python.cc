@@ -13,12 +13,12 @@ pybind11::object Convert(const Json& value) {
     case nlohmann::json::value_t::object: {
       pybind11::dict dict;
       for (auto it = value.begin(); it != value.end(); ++it) dict[pybind11::str(it.key())] = Convert(*it);
-      return std::move(dict);
+      return dict;  // moved implicitly (C++20)
     }
     case nlohmann::json::value_t::array: {
       pybind11::list list;
       for (const auto& item : value) list.append(Convert(item));
-      return std::move(list);
+      return list;  // moved implicitly (C++20)
     }
     case nlohmann::json::value_t::string:
       return pybind11::str(value.template get_ref<const std::string&>());

@@ -106,6 +106,30 @@ std::optional<DecelerationFit> FitPooledDeceleration(std::span<const KickObserva
   return std::nullopt;
 }
 
+std::optional<LaunchOffsetFit> FitLaunchOffset(std::span<const KickObservation> kicks,
+                                               double deceleration_mps2) {
+  std::vector<double> residuals;
+  LaunchOffsetFit fit;
+  for (const KickObservation& k : kicks) {
+    if (!k.has_launch_offset || !k.has_roll_distance) continue;
+    const double rest_distance_m = k.launch_offset_m + k.roll_distance_m;
+    residuals.push_back(rest_distance_m -
+                        k.launch_speed_mps * k.launch_speed_mps / (2.0 * deceleration_mps2));
+    fit.launch_point_m += k.launch_offset_m;
+    fit.rest_distance_m += rest_distance_m;
+  }
+  if (residuals.size() < 2) return std::nullopt;
+  const double n = static_cast<double>(residuals.size());
+  fit.kicks = static_cast<int>(residuals.size());
+  fit.launch_point_m /= n;
+  fit.rest_distance_m /= n;
+  const MeanSd summary = SampleMeanSd(residuals);
+  fit.unclamped_offset_m = summary.mean;
+  fit.standard_error_m = summary.sd / std::sqrt(n);
+  fit.offset_m = std::max(0.0, fit.unclamped_offset_m);
+  return fit;
+}
+
 KickObservation ObservationOf(const TrialResult& trial, double ball_radius_m,
                               double min_speed_mps) {
   KickObservation k;
@@ -135,6 +159,7 @@ KickModel ApplyCalibration(const KickModel& base, std::span<const KickCalibratio
     spec.sigma_speed_mps = c.speed.sd;
     spec.direction_rad = WrapAngle(c.direction.mean_rad);
     spec.sigma_direction_rad = c.direction.sd_rad;
+    if (c.launch_offset) spec.launch_offset_m = c.launch_offset->offset_m;
   }
   if (deceleration) model.rolling_deceleration_mps2 = deceleration->deceleration_mps2;
   return model;

@@ -40,6 +40,26 @@ struct KickObservation {
   std::vector<SpeedSample> rolling;
   double roll_distance_m = 0.0;
   bool has_roll_distance = false;
+  // Physics only, with a roll distance: how far from where the ball lay free rolling started
+  // (the trial's launch point).
+  double launch_offset_m = 0.0;
+  bool has_launch_offset = false;
+};
+
+// Where the coarse roll's free rolling starts for one kick (models/kick_model.h, issue 12),
+// fitted so that the coarse model's mean rest distance matches the observed one with the
+// calibrated deceleration a: offset = mean(D_i - v_i^2 / 2a) over the kicks that rested without
+// touching anything, D_i the distance from where the ball lay to where it rested (the launch
+// offset plus the roll from the launch point). Clamped at 0 (free rolling cannot start behind
+// the ball). launch_point_m is the launch points' own mean distance: the offset's physical
+// reading, equal to the fit when the calibrated deceleration is the one the balls rolled at.
+struct LaunchOffsetFit {
+  int kicks = 0;
+  double offset_m = 0.0;  // what the kick model gets
+  double unclamped_offset_m = 0.0;
+  double standard_error_m = 0.0;  // of the mean
+  double launch_point_m = 0.0;    // mean measured distance to the launch point
+  double rest_distance_m = 0.0;   // mean D_i
 };
 
 struct CalibrationSettings {
@@ -58,8 +78,9 @@ struct KickCalibration {
   CircularFit direction;
   std::vector<double> direction_unwrapped_rad;  // around the circular mean
   NormalityTest direction_normality;
-  std::vector<QqPoint> direction_qq;            // radians
-  std::optional<DecelerationFit> deceleration;  // this kick's balls alone
+  std::vector<QqPoint> direction_qq;             // radians
+  std::optional<DecelerationFit> deceleration;   // this kick's balls alone
+  std::optional<LaunchOffsetFit> launch_offset;  // physics: with the pooled deceleration
 };
 
 // Throws InputError when there are fewer than 8 observations (too few for the test).
@@ -72,6 +93,12 @@ KickCalibration CalibrateKick(const std::string& kick, std::span<const KickObser
 std::optional<DecelerationFit> FitPooledDeceleration(std::span<const KickObservation> kicks,
                                                      const CalibrationSettings& settings);
 
+// The launch offset of one kick's observations for the deceleration a; nothing when fewer than 2
+// of them have a launch offset and a roll distance (e.g. a real robot's log: its rows hold no
+// launch point).
+std::optional<LaunchOffsetFit> FitLaunchOffset(std::span<const KickObservation> kicks,
+                                               double deceleration_mps2);
+
 // What a physics trial shows of its kick. The rolling samples run from the launch until the ball
 // leaves the carpet (bounces), slows below min_speed_mps (below about 0.2 m/s the
 // contact jitters and the rest tail begins; both bias the slope low) or the
@@ -79,8 +106,9 @@ std::optional<DecelerationFit> FitPooledDeceleration(std::span<const KickObserva
 KickObservation ObservationOf(const TrialResult& trial, double ball_radius_m,
                               double min_speed_mps = 0.2);
 
-// `base` with the calibrated kicks' speed, direction and sigmas replaced, and the deceleration
-// when one is given. Kicks not in `calibrated` keep their values.
+// `base` with the calibrated kicks' speed, direction and sigmas replaced (and the launch offset
+// where one was fitted), and the deceleration when one is given. Kicks not in `calibrated` keep
+// their values.
 KickModel ApplyCalibration(const KickModel& base, std::span<const KickCalibration> calibrated,
                            const std::optional<DecelerationFit>& deceleration);
 

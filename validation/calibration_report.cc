@@ -36,7 +36,17 @@ Json KickSpecJson(const KickSpec& k) {
   return Json{{"speed_mps", k.speed_mps},
               {"sigma_speed_mps", k.sigma_speed_mps},
               {"direction_deg", k.direction_rad * kRadToDeg},
-              {"sigma_direction_deg", k.sigma_direction_rad * kRadToDeg}};
+              {"sigma_direction_deg", k.sigma_direction_rad * kRadToDeg},
+              {"launch_offset_m", k.launch_offset_m}};
+}
+
+Json LaunchOffsetJson(const LaunchOffsetFit& fit) {
+  return Json{{"offset_m", fit.offset_m},
+              {"unclamped_offset_m", fit.unclamped_offset_m},
+              {"standard_error_m", fit.standard_error_m},
+              {"kicks", fit.kicks},
+              {"launch_point_m", fit.launch_point_m},
+              {"rest_distance_m", fit.rest_distance_m}};
 }
 
 Json KickJson(const CalibrationRun& run, const CalibratedKick& kick) {
@@ -58,6 +68,7 @@ Json KickJson(const CalibrationRun& run, const CalibratedKick& kick) {
                         {"resultant_length", c.direction.resultant_length},
                         {"normality", NormalityJson(c.direction_normality, level)}};
   j["deceleration"] = c.deceleration ? DecelerationJson(*c.deceleration) : Json(nullptr);
+  j["launch_offset"] = c.launch_offset ? LaunchOffsetJson(*c.launch_offset) : Json(nullptr);
   return j;
 }
 
@@ -80,6 +91,16 @@ std::vector<std::string> CalibrationWarnings(const CalibrationRun& run) {
       warnings.push_back(
           c.kick + ": the normal model does not fit the launch directions (Anderson-Darling p = " +
           Fixed(c.direction_normality.anderson_darling_p, 4) + ")");
+    }
+    if (c.launch_offset && c.launch_offset->unclamped_offset_m < 0.0) {
+      warnings.push_back(c.kick + ": the balls rested " +
+                         Fixed(-100.0 * c.launch_offset->unclamped_offset_m, 1) +
+                         " cm short of v0^2/2a on average; the launch offset is clamped at 0");
+    }
+    if (!c.launch_offset) {
+      warnings.push_back(c.kick +
+                         ": no launch points (a log has none, or no ball rested without "
+                         "a contact); the kick keeps the base model's launch offset");
     }
     if (kick.missed > 0) {
       warnings.push_back(c.kick + ": the robot missed the ball in " + std::to_string(kick.missed) +
@@ -123,8 +144,13 @@ std::string CalibrationText(const CalibrationRun& run) {
            Fixed(c.direction.sd_rad * kRadToDeg, 1) + " deg [" +
            Fixed(c.direction.sd_ci_rad.low * kRadToDeg, 1) + ", " +
            Fixed(c.direction.sd_ci_rad.high * kRadToDeg, 1) +
-           "]; normal speeds: " + NormalityText(c.speed_normality, run.settings.normality_level) +
-           "\n";
+           "]; normal speeds: " + NormalityText(c.speed_normality, run.settings.normality_level);
+    if (c.launch_offset) {
+      out += "; launch offset " + Fixed(c.launch_offset->offset_m, 3) + " m (+- " +
+             Fixed(c.launch_offset->standard_error_m, 3) + ", launch point at " +
+             Fixed(c.launch_offset->launch_point_m, 3) + " m)";
+    }
+    out += "\n";
   }
   if (run.deceleration) {
     out += "  rolling deceleration " + Fixed(run.deceleration->deceleration_mps2, 4) + " m/s^2 [" +
@@ -198,7 +224,7 @@ std::string CalibrationSummaryCsv(const CalibrationRun& run) {
   std::string out =
       "kick,observations,speed_mps,speed_ci_low,speed_ci_high,sigma_speed_mps,sigma_ci_low,"
       "sigma_ci_high,direction_deg,direction_ci_low,direction_ci_high,sigma_direction_deg,"
-      "sigma_direction_ci_low,sigma_direction_ci_high,speed_ad_p,direction_ad_p\n";
+      "sigma_direction_ci_low,sigma_direction_ci_high,speed_ad_p,direction_ad_p,launch_offset_m\n";
   for (const CalibratedKick& kick : run.kicks) {
     const KickCalibration& c = kick.fit;
     const double d = kRadToDeg;
@@ -211,7 +237,8 @@ std::string CalibrationSummaryCsv(const CalibrationRun& run) {
            "," + Fixed(c.direction.sd_ci_rad.low * d, 4) + "," +
            Fixed(c.direction.sd_ci_rad.high * d, 4) + "," +
            Fixed(c.speed_normality.anderson_darling_p, 6) + "," +
-           Fixed(c.direction_normality.anderson_darling_p, 6) + "\n";
+           Fixed(c.direction_normality.anderson_darling_p, 6) + "," +
+           (c.launch_offset ? Fixed(c.launch_offset->offset_m, 6) : "") + "\n";
   }
   return out;
 }

@@ -16,11 +16,14 @@ nlohmann::json TrialJson(const KickObservation& o, const TrialDraw& d) {
           rolling,
           {ExactJson(d.placement_dx_m), ExactJson(d.placement_dy_m),
            ExactJson(d.placement_dtheta_rad), ExactJson(d.speed_factor),
-           ExactJson(d.carpet_factor)}};
+           ExactJson(d.carpet_factor)},
+          o.has_launch_offset ? ExactJson(o.launch_offset_m) : nlohmann::json(nullptr)};
 }
 
 void ReadTrial(const ShardValue& v, PhysicsKickTrials& kick, int trial) {
-  if (v.Size() != 5) v.Fail("must be [speed, direction, roll distance, rolling, draw] or null");
+  if (v.Size() != 6) {
+    v.Fail("must be [speed, direction, roll distance, rolling, draw, launch offset] or null");
+  }
   KickObservation o;
   o.launch_speed_mps = v.At(0).Double();
   o.launch_direction_rad = v.At(1).Double();
@@ -34,6 +37,8 @@ void ReadTrial(const ShardValue& v, PhysicsKickTrials& kick, int trial) {
   if (draw.Size() != 5) draw.Fail("must be the 5 perturbations");
   TrialDraw d{draw.At(0).Double(), draw.At(1).Double(), draw.At(2).Double(), draw.At(3).Double(),
               draw.At(4).Double()};
+  o.has_launch_offset = !v.At(5).IsNull();
+  if (o.has_launch_offset) o.launch_offset_m = v.At(5).Double();
   kick.observations.push_back(std::move(o));
   kick.draws.push_back(d);
   kick.trials.push_back(trial);

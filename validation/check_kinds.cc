@@ -201,7 +201,9 @@ CheckResult Run(const FidelityFloorCheck& c, const CheckSpec& spec,
                 const std::filesystem::path& models, int threads) {
   const std::filesystem::path kicks =
       ResolveModelFile(c.kicks, DataFolder::kKicks, spec.dir, models);
-  const FidelitySet set = LoadFidelitySet(c.situations, models, kicks);
+  SituationOverrides overrides;
+  overrides.kicks_file = kicks;
+  const FidelitySet set = LoadFidelitySet(c.situations, models, overrides);
   FidelitySettings settings;
   settings.physics_trials = c.trials;
   settings.converged_samples = 500;

@@ -18,8 +18,29 @@ std::filesystem::path SetFile(const std::string& set, const std::filesystem::pat
 
 }  // namespace
 
+namespace {
+
+void KeepClass(const std::string& situation_class, FidelitySet& set) {
+  std::vector<FidelityCase> kept;
+  std::string classes;
+  for (FidelityCase& c : set.cases) {
+    if (classes.find("'" + c.situation_class + "'") == std::string::npos) {
+      classes += (classes.empty() ? "'" : ", '") + c.situation_class + "'";
+    }
+    if (c.situation_class == situation_class) kept.push_back(std::move(c));
+  }
+  if (kept.empty()) {
+    throw InputError("--class: no situation of class '" + situation_class + "' in " +
+                     set.file.string() + " (classes: " + classes + ")");
+  }
+  set.cases = std::move(kept);
+}
+
+}  // namespace
+
 FidelitySet LoadFidelitySet(const std::string& set, const std::filesystem::path& models_dir,
-                            const std::filesystem::path& kicks_override) {
+                            const SituationOverrides& overrides,
+                            const std::string& situation_class) {
   FidelitySet result;
   result.file = SetFile(set, models_dir);
   std::error_code ec;
@@ -42,8 +63,6 @@ FidelitySet LoadFidelitySet(const std::string& set, const std::filesystem::path&
     result.rotations_rad.push_back(deg * kDegToRad);
   }
   if (result.rotations_rad.empty()) root.Fail("rotations_deg", "must list at least one rotation");
-  SituationOverrides overrides;
-  overrides.kicks_file = kicks_override;
   for (const JsonObject& item : root.ObjectArray("situations")) {
     item.RejectUnknownKeys({"file", "class"});
     FidelityCase c;
@@ -56,6 +75,7 @@ FidelitySet LoadFidelitySet(const std::string& set, const std::filesystem::path&
     result.cases.push_back(std::move(c));
   }
   if (result.cases.empty()) root.Fail("situations", "must list at least one situation");
+  if (!situation_class.empty()) KeepClass(situation_class, result);
   return result;
 }
 

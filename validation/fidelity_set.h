@@ -29,9 +29,11 @@ struct FidelitySet {
   std::vector<FidelityCase> cases;
 };
 
-// `set` is a file, or a bare name found as MODELS/fidelity/<name>.json. `kicks_override`, when
-// not empty, replaces every situation's kick model. Throws InputError on bad input.
+// `set` is a file, or a bare name found as MODELS/fidelity/<name>.json. `overrides` apply to every
+// situation (a kick model, the coarse rebounds). Only the cases of `situation_class` are kept
+// when it is not empty. Throws InputError on bad input (also a class no case has).
 FidelitySet LoadFidelitySet(const std::string& set, const std::filesystem::path& models_dir,
-                            const std::filesystem::path& kicks_override = {});
+                            const SituationOverrides& overrides = {},
+                            const std::string& situation_class = {});
 
 }  // namespace foresight

@@ -55,7 +55,12 @@ PhysicsKickTrials PlayKick(const PhysicsSetup& setup, const PhysicsCalibrationSe
       ++kick.missed;
       continue;
     }
-    kick.observations.push_back(ObservationOf(trial, radius));
+    KickObservation observation = ObservationOf(trial, radius);
+    if (observation.has_roll_distance) {  // the ball lay at the situation's spot in every trial
+      observation.launch_offset_m = (trial.p_F_launch - setup.state.p_F_ball).norm();
+      observation.has_launch_offset = true;
+    }
+    kick.observations.push_back(std::move(observation));
     kick.draws.push_back(trial.draw);
     kick.trials.push_back(settings.shard.Item(static_cast<int>(k)));
   }

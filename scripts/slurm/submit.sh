@@ -5,6 +5,8 @@
 #   scripts/slurm/submit.sh 40 runs/fidelity fidelity --situations default --trials 30
 #   scripts/slurm/submit.sh 100 runs/stability experiment stability --params stability_parametric
 #   scripts/slurm/submit.sh 20 runs/strategies experiment strategies --physics --starts 2000
+#   scripts/slurm/submit.sh 40 runs/passing-dg experiment passing --config dg --team both
+#   (scripts/slurm/passing.sh and ablations.sh submit the passing runs for both configurations)
 #
 # The array job (shard.sbatch, one task per shard) and the merge job (merge.sbatch, started only
 # when every task succeeded: --dependency=afterok) are submitted; the report appears in
@@ -12,7 +14,7 @@
 # time limit, CPUs per task) go in SBATCH_ARGS, e.g. SBATCH_ARGS="--partition=long
 # --cpus-per-task=8". Prints the two job ids.
 set -euo pipefail
-[ $# -ge 3 ] || { sed -n '2,16p' "$0"; exit 2; }
+[ $# -ge 3 ] || { sed -n '2,18p' "$0"; exit 2; }
 count=$1 out=$2
 shift 2
 here=$(cd "$(dirname "$0")" && pwd)

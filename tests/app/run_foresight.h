@@ -123,6 +123,35 @@ class ForesightRun : public ::testing::Test {
   fs::path root_;
 };
 
+// The files of two report folders compared as tests/shard/same_report.sh does: the same names
+// and bytes, except the lines with the run time (JSON "run_time_s", an HTML page's "run time"
+// row), which differ between two runs. Empty when they are the same, else what differs.
+inline std::string ReportDifference(const fs::path& a, const fs::path& b) {
+  const auto files = [](const fs::path& dir) {
+    std::set<std::string> names;
+    for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+      if (entry.is_regular_file()) names.insert(fs::relative(entry.path(), dir).string());
+    }
+    return names;
+  };
+  const auto without_run_time = [](const std::string& text) {
+    std::istringstream in(text);
+    std::string kept, line;
+    while (std::getline(in, line)) {
+      if (line.find("\"run_time_s\"") == std::string::npos &&
+          line.find(">run time<") == std::string::npos)
+        kept += line + "\n";
+    }
+    return kept;
+  };
+  if (files(a) != files(b)) return a.string() + " and " + b.string() + " hold different files";
+  if (files(a).empty()) return a.string() + " is empty";
+  for (const std::string& f : files(a)) {
+    if (without_run_time(ReadFile(a / f)) != without_run_time(ReadFile(b / f))) return f + " differs";
+  }
+  return "";
+}
+
 inline int CountOf(const std::string& text, const std::string& part) {
   int count = 0;
   for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) {

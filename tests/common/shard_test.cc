@@ -30,6 +30,19 @@ TEST(ShardTest, EveryItemBelongsToExactlyOneShard) {
   }
 }
 
+TEST(ShardTest, FromAnItemOnOwnsTheSameItems) {
+  for (int count : {1, 2, 3, 7}) {
+    for (int index = 0; index < count; ++index) {
+      const Shard shard{index, count};
+      for (int first : {0, 1, 5, 12, 100}) {
+        const Shard from = shard.From(first);
+        EXPECT_EQ(from.count, count);
+        for (int j = 0; j < 30; ++j) EXPECT_EQ(from.Owns(j), shard.Owns(first + j)) << first + j;
+      }
+    }
+  }
+}
+
 TEST(ShardTest, ParsesIndexOverCount) {
   const Shard s = ParseShard("--shard", "3/4");
   EXPECT_EQ(s.index, 3);

@@ -73,7 +73,9 @@ TEST(ExperimentParamsTest, ShippedStrategiesAreThePapersSetting) {
 
 TEST(ExperimentParamsTest, KicksOverrideReplacesTheScenesKickModel) {
   const auto kicks = Models() / "kicks" / "nao_calibrated.json";
-  const StrategiesParams p = LoadStrategiesParams("strategies", Models(), kicks);
+  SituationOverrides overrides;
+  overrides.kicks_file = kicks;
+  const StrategiesParams p = LoadStrategiesParams("strategies", Models(), overrides);
   EXPECT_EQ(p.situation.kicks_file, kicks);
   // The calibrated model's forward kick, not the paper's 1.08 m/s of the scene's own model.
   EXPECT_EQ(p.situation.kicks.kicks[0].speed_mps, LoadKickModel(kicks).kicks[0].speed_mps);

@@ -59,6 +59,27 @@ TEST(EvaluationParamsTest, ShippedSplPotentialIsTheNaothStrategy) {
   EXPECT_DOUBLE_EQ(repel.sigma_y_m, 1.2);
 }
 
+TEST(EvaluationParamsTest, ShippedFilesKeepThePapersInelasticContacts) {
+  for (const char* name : {"spl.json", "four_legged.json"}) {
+    const EvaluationParams p = LoadEvaluationParams(ModelsDir() / "evaluation" / name);
+    EXPECT_FALSE(p.rebounds.enabled) << name;
+    EXPECT_EQ(p.rebounds.max_contacts, 8) << name;
+    EXPECT_EQ(p.rebounds.post, 0.0) << name;  // read from the physics file only when enabled
+  }
+}
+
+TEST(EvaluationParamsTest, ReboundsSwitchMustBeABoolean) {
+  const auto file = BrokenSplEvaluation("rebounds", "\"enabled\": false", "\"enabled\": \"no\"");
+  EXPECT_EQ(LoadError(file),
+            file.string() + ": rebounds.enabled: must be true or false, got \"no\"");
+}
+
+TEST(EvaluationParamsTest, ZeroMaxContactsIsRejected) {
+  const auto file = BrokenSplEvaluation("contacts", "\"max_contacts\": 8", "\"max_contacts\": 0");
+  EXPECT_THAT(LoadError(file),
+              StartsWith(file.string() + ": rebounds.max_contacts: must be in [1"));
+}
+
 TEST(EvaluationParamsTest, RotationSearchStepIsConvertedToRadians) {
   const EvaluationParams p = LoadEvaluationParams(ModelsDir() / "evaluation" / "spl.json");
   EXPECT_NEAR(p.rotation_search.grid_step_rad, 20.0 * kDegToRad, 1e-15);

@@ -156,6 +156,29 @@ TEST(KickModelTest, InfiniteSigmaCannotEnter) {
   EXPECT_THAT(message, HasSubstr("sigma_speed_mps"));
 }
 
+TEST(KickModelTest, TheShippedPaperModelHasNoLaunchOffset) {
+  for (const KickSpec& k : ShippedNao().kicks) EXPECT_EQ(k.launch_offset_m, 0.0) << k.name;
+}
+
+TEST(KickModelTest, NegativeLaunchOffsetIsRejected) {
+  const auto file = BrokenNaoKicks(
+      "offset", kForwardLine,
+      R"({"name": "forward", "speed_mps": 1.08, "sigma_speed_mps": 0.15, "direction_deg": 0.0, "sigma_direction_deg": 7.0, "launch_offset_m": -0.05})");
+  const std::string message = LoadError(file);
+  EXPECT_THAT(message, StartsWith(file.string() + ": kicks[0].launch_offset_m: must be in [0"));
+  EXPECT_THAT(message, HasSubstr("got -0.05"));
+}
+
+TEST(KickModelJsonTest, ALaunchOffsetIsWrittenOnlyWhenThereIsOne) {
+  KickModel model = ShippedNao();
+  EXPECT_EQ(KickModelJson(model, "").find("launch_offset_m"), std::string::npos);
+  model.kicks[0].launch_offset_m = 0.07321;
+  const std::string text = KickModelJson(model, "");
+  const KickModel back = LoadKickModel(testing::WriteTempFile("kick_model_offset.json", text));
+  EXPECT_DOUBLE_EQ(back.kicks[0].launch_offset_m, 0.0732);  // 0.1 mm
+  EXPECT_EQ(back.kicks[1].launch_offset_m, 0.0);
+}
+
 TEST(KickModelJsonTest, WrittenModelLoadsBackWithRoundedNumbers) {
   KickModel model;
   model.robot = "nao";

@@ -21,8 +21,8 @@ TEST(MotorLineTest, DrivingTorqueFallsOnTheLineAndBrakingIsCappedAtStall) {
   const auto at = [](double speed) { return kLine.TorqueRangeNm(speed); };
   EXPECT_DOUBLE_EQ(at(0.0).max_nm, 8.0);
   EXPECT_DOUBLE_EQ(at(0.0).min_nm, -8.0);
-  EXPECT_DOUBLE_EQ(at(1.0).max_nm, 6.0);   // 8 (1 - 1/4)
-  EXPECT_DOUBLE_EQ(at(1.0).min_nm, -8.0);  // braking a forward turn
+  EXPECT_DOUBLE_EQ(at(1.0).max_nm, 6.0);    // 8 (1 - 1/4)
+  EXPECT_DOUBLE_EQ(at(1.0).min_nm, -8.0);   // braking a forward turn
   EXPECT_DOUBLE_EQ(at(-3.0).min_nm, -2.0);  // 8 (1 - 3/4) backwards
   EXPECT_DOUBLE_EQ(at(-3.0).max_nm, 8.0);
   EXPECT_DOUBLE_EQ(at(4.0).max_nm, 0.0);  // no-load speed: nothing left to drive with
@@ -35,17 +35,16 @@ TEST(MotorLineTest, DrivingTorqueFallsOnTheLineAndBrakingIsCappedAtStall) {
 TEST(MotorTableTest, ShippedNaoMotorsAreTheTablesAndReachTheUrdfSpeeds) {
   const Robot nao = LoadRobot("nao", ModelsDir());
   const auto motor = [&](const char* joint) { return nao.motors[*nao.model.FindJoint(joint)]; };
-  EXPECT_NEAR(motor("RHipPitch").stall_torque_nm, 7.78, 0.01);       // type B, 7.78 Nm
+  EXPECT_NEAR(motor("RHipPitch").stall_torque_nm, 7.78, 0.01);  // type B, 7.78 Nm
   EXPECT_NEAR(motor("RKneePitch").no_load_speed_radps * 180 / 3.14159265358979, 366.83, 0.01);
-  EXPECT_NEAR(motor("LHipRoll").stall_torque_nm, 11.97, 0.01);       // type A, 11.97 Nm
+  EXPECT_NEAR(motor("LHipRoll").stall_torque_nm, 11.97, 0.01);  // type A, 11.97 Nm
   EXPECT_NEAR(motor("LAnkleRoll").no_load_speed_radps * 180 / 3.14159265358979, 238.45, 0.01);
   EXPECT_NEAR(motor("LShoulderPitch").stall_torque_nm, 2.27, 0.01);  // RE-Max 17, type A
   EXPECT_NEAR(motor("HeadPitch").stall_torque_nm, 2.61, 0.01);       // RE-Max 17, type B
   for (std::size_t j = 0; j < nao.model.joints.size(); ++j) {
     const RobotJoint& joint = nao.model.joints[j];
     if (joint.kind != RobotJoint::Kind::kRevolute) continue;
-    EXPECT_NEAR(nao.motors[j].no_load_speed_radps / joint.velocity_radps, 1.0, 1e-4)
-        << joint.name;
+    EXPECT_NEAR(nao.motors[j].no_load_speed_radps / joint.velocity_radps, 1.0, 1e-4) << joint.name;
   }
 }
 
@@ -83,8 +82,7 @@ TEST(MotorTableTest, BadFiguresAreNamedWithTheirValue) {
   const auto error = [](const std::string& from, const std::string& to) {
     return InputErrorMessage([&] { Read(testing::ReplaceOnce(kTable, from, to)); });
   };
-  EXPECT_EQ(error("7.78", "0"),
-            "robot.json: motors.types.B.stall_torque_nm: must be > 0, got 0");
+  EXPECT_EQ(error("7.78", "0"), "robot.json: motors.types.B.stall_torque_nm: must be > 0, got 0");
   EXPECT_EQ(error("6.4025", "-1"),
             "robot.json: motors.types.B.no_load_speed_radps: must be > 0, got -1");
   EXPECT_EQ(error("\"table\"", "\"\""),
@@ -96,15 +94,16 @@ TEST(MotorTableTest, BadFiguresAreNamedWithTheirValue) {
 TEST(MotorTableTest, JointsWithoutMotorsOrTooSlowMotorsAreRejected) {
   const RobotModel nao = LoadRobotModel(ModelsDir() / "robots/nao/nao.urdf");
   const std::string missing = InputErrorMessage([&] { JointMotors(Read(kTable), nao, "f.json"); });
-  EXPECT_EQ(missing, "f.json: motors.joints.HeadYaw: missing (every revolute joint needs its motor)");
-  const std::string slow = InputErrorMessage([&] {
-    JointMotors(Read(testing::ReplaceOnce(kTable, "6.4025", "6.3")), nao, "f.json");
-  });
-  EXPECT_EQ(slow, "f.json: motors.joints.RHipPitch: the motor's no-load speed 6.3 rad/s lies "
-                  "below the joint's velocity limit 6.40239 rad/s");
+  EXPECT_EQ(missing,
+            "f.json: motors.joints.HeadYaw: missing (every revolute joint needs its motor)");
+  const std::string slow = InputErrorMessage(
+      [&] { JointMotors(Read(testing::ReplaceOnce(kTable, "6.4025", "6.3")), nao, "f.json"); });
+  EXPECT_EQ(slow,
+            "f.json: motors.joints.RHipPitch: the motor's no-load speed 6.3 rad/s lies "
+            "below the joint's velocity limit 6.40239 rad/s");
   const std::string unknown = InputErrorMessage([&] {
-    JointMotors(Read(testing::ReplaceOnce(kTable, "\"RHipPitch\": \"B\"", "\"Tail\": \"B\"")),
-                nao, "f.json");
+    JointMotors(Read(testing::ReplaceOnce(kTable, "\"RHipPitch\": \"B\"", "\"Tail\": \"B\"")), nao,
+                "f.json");
   });
   EXPECT_EQ(unknown, "f.json: motors.joints.Tail: not a revolute joint of " +
                          (ModelsDir() / "robots/nao/nao.urdf").string());

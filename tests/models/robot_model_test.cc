@@ -451,6 +451,19 @@ TEST(RobotModelTest, TwoRootsAreRejected) {
   EXPECT_THAT(message, HasSubstr("[head]"));
 }
 
+TEST(RobotModelTest, JointWhoseParentIsItsChildIsRejected) {
+  // The long urdf fuzz run found this input (fuzz/seeds/urdf_self_loop_leak.urdf): urdfdom
+  // accepts the joint's link as its own parent, and must not reach the tree walk.
+  const auto file = TesterUrdf("self_loop", R"(<parent link="torso"/>
+    <child link="head"/>)",
+                               R"(<parent link="head"/>
+    <child link="head"/>)");
+  const std::string message = LoadError(file);
+  EXPECT_THAT(message, StartsWith(file.string() + ": urdf: "));
+  EXPECT_EQ(message, file.string() + ": urdf: joint NeckYaw: parent and child are the same link head");
+  EXPECT_THAT(message, Not(HasSubstr("\n")));
+}
+
 TEST(RobotModelTest, RobotWithoutLinksIsRejected) {
   const auto file = WriteTempFile("robot_model_no_links.urdf", R"(<robot name="empty"></robot>)");
   const std::string message = LoadError(file);

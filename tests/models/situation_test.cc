@@ -7,6 +7,7 @@
 #include <string>
 
 #include "common/geometry.h"
+#include "models/physics_params.h"
 #include "tests/support/model_test_util.h"
 #include "tests/support/test_situations.h"
 
@@ -104,10 +105,40 @@ TEST(SituationTest, KicksOverrideReplacesTheSituationsModel) {
                                    R"({"robot": "test", "rolling_deceleration_mps2": 0.3,
           "kicks": [{"name": "chip", "speed_mps": 2.0, "sigma_speed_mps": 0.1,
                      "direction_deg": 0.0, "sigma_direction_deg": 2.0}]})");
-  const Situation s = LoadSituation(Shipped("open_goal"), ModelsDir(), {kicks});
+  SituationOverrides overrides;
+  overrides.kicks_file = kicks;
+  const Situation s = LoadSituation(Shipped("open_goal"), ModelsDir(), overrides);
   EXPECT_EQ(s.kicks_file, kicks);
   ASSERT_EQ(s.kicks.kicks.size(), 1u);
   EXPECT_EQ(s.kicks.kicks[0].name, "chip");
+}
+
+TEST(SituationTest, CoarseReboundsReadTheirRestitutionFromThePhysicsFile) {
+  SituationOverrides overrides;
+  const Situation off = LoadSituation(Shipped("open_goal"), ModelsDir(), overrides);
+  EXPECT_FALSE(off.evaluation.rebounds.enabled);
+  overrides.coarse_rebounds = true;
+  const Situation on = LoadSituation(Shipped("open_goal"), ModelsDir(), overrides);
+  const BallPairs e = LoadPhysicsParams(ModelsDir() / "physics" / "spl.json").materials.restitution;
+  EXPECT_TRUE(on.evaluation.rebounds.enabled);
+  EXPECT_EQ(on.evaluation.rebounds.post, e.post);
+  EXPECT_EQ(on.evaluation.rebounds.net, e.net);
+  EXPECT_EQ(on.evaluation.rebounds.robot, e.robot);
+  // Another physics file (a run's --physics) is the one read.
+  overrides.physics_file = WriteTempFile(
+      "situation_rebound_physics.json",
+      ReplaceOnce(ShippedText("physics/spl.json"), "\"ball_post\": 0.3", "\"ball_post\": 0.5"));
+  EXPECT_EQ(LoadSituation(Shipped("open_goal"), ModelsDir(), overrides).evaluation.rebounds.post,
+            0.5);
+}
+
+TEST(SituationTest, CoarseReboundsWithoutAPhysicsFileNameIt) {
+  SituationOverrides overrides;
+  overrides.coarse_rebounds = true;
+  overrides.physics_file = ModelsDir() / "physics" / "no_such_field.json";
+  EXPECT_THAT(InputErrorMessage([&] { LoadSituation(Shipped("open_goal"), ModelsDir(), overrides); }),
+              HasSubstr("rebounds.enabled: the coarse rebounds read their restitution from " +
+                        overrides.physics_file.string() + ", which does not exist"));
 }
 
 TEST(SituationTest, BallOutsideTheCarpetNamesFilePositionAndCarpet) {
@@ -181,8 +212,9 @@ TEST(SituationTest, FieldThatDoesNotExistIsReportedAgainstTheFieldKey) {
 }
 
 TEST(SituationTest, MissingOverrideKicksFileIsNamed) {
-  const std::string message =
-      LoadError(Shipped("open_goal"), {std::filesystem::path("/nonexistent/kicks.json")});
+  SituationOverrides overrides;
+  overrides.kicks_file = "/nonexistent/kicks.json";
+  const std::string message = LoadError(Shipped("open_goal"), overrides);
   EXPECT_THAT(message, HasSubstr("/nonexistent/kicks.json"));
   EXPECT_THAT(message, HasSubstr("does not exist"));
 }

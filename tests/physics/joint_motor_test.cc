@@ -10,9 +10,9 @@
 #include <cmath>
 #include <memory>
 
+#include "physics/bullet_convert.h"
 #include "physics/bullet_world.h"
 #include "physics/kicking_robot.h"
-#include "physics/bullet_convert.h"
 #include "tests/support/physics_test_scenes.h"
 #include "tests/support/test_situations.h"
 
@@ -20,8 +20,8 @@ namespace foresight {
 namespace {
 
 constexpr double kDt = 0.002;
-constexpr double kInertiaKgm2 = 0.002;   // the flywheel about its (vertical) axis
-constexpr MotorLine kLine{1.5, 6.0};     // stall 1.5 N m, no load 6 rad/s
+constexpr double kInertiaKgm2 = 0.002;  // the flywheel about its (vertical) axis
+constexpr MotorLine kLine{1.5, 6.0};    // stall 1.5 N m, no load 6 rad/s
 
 // A flywheel on a vertical axis (gravity exerts no torque), driven by one line-limited motor
 // that aims far beyond the no-load speed, so the line alone limits it.
@@ -63,7 +63,8 @@ struct Flywheel {
 TEST(JointMotorTest, AFreeJointSpinsUpAlongTheLineAndTopsOutAtTheNoLoadSpeed) {
   Flywheel wheel;
   // Each step adds dt * tau_stall (1 - w / w0) / I: w_n = w0 (1 - (1 - dt tau_s / (I w0))^n).
-  const double ratio = 1.0 - kDt * kLine.stall_torque_nm / (kInertiaKgm2 * kLine.no_load_speed_radps);
+  const double ratio =
+      1.0 - kDt * kLine.stall_torque_nm / (kInertiaKgm2 * kLine.no_load_speed_radps);
   double top = 0.0;
   for (int n = 1; n <= 500; ++n) {
     wheel.Step(0.0);
@@ -99,9 +100,8 @@ TEST(JointMotorTest, AgainstALoadTheTorqueStaysOnOrBelowTheLineAndMeetsItAtTheLo
 class ShippedMotorsTest : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ShippedMotorsTest, KicksNeverAskMoreThanTheLine) {
-  const auto data = testing::LoadPhysicsFixture(GetParam() == std::string("nao") ? "spl"
-                                                                                  : "four_legged",
-                                                true, GetParam());
+  const auto data = testing::LoadPhysicsFixture(
+      GetParam() == std::string("nao") ? "spl" : "four_legged", true, GetParam());
   const Robot& robot = *data->robot;
   const double dt = data->params.steps.kick_time_step_s;
   const double fastest = robot.spec.variation.MaxSpeedFactor();
@@ -122,8 +122,8 @@ TEST_P(ShippedMotorsTest, KicksNeverAskMoreThanTheLine) {
         const MotorLine::Range range = motor->line().TorqueRangeNm(motor->BoundSpeedRadps());
         ASSERT_LE(motor->AppliedTorqueNm(), range.max_nm + 1e-9) << motion.name << " t " << t;
         ASSERT_GE(motor->AppliedTorqueNm(), range.min_nm - 1e-9) << motion.name << " t " << t;
-        worst_share = std::max(worst_share, std::abs(motor->BoundSpeedRadps()) /
-                                                motor->line().no_load_speed_radps);
+        worst_share = std::max(
+            worst_share, std::abs(motor->BoundSpeedRadps()) / motor->line().no_load_speed_radps);
       }
     }
     EXPECT_LE(worst_share, 1.0) << motion.name;

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sharded runs on one machine with GNU parallel (issue 17): scripts/slurm/parallel.sh runs 4
-# shards of a small calibrate, fidelity, stability and strategies run, 2 at a time, and merges them; the
-# report must have the bytes of the unsharded run (run time aside).
+# shards of a small calibrate, fidelity, stability, strategies, passing (both teams) and ablations
+# run, 2 at a time, and merges them; the report must have the bytes of the unsharded run (run
+# time aside).
 #
 # Usage: parallel_test.sh FORESIGHT_BINARY
 set -euo pipefail
@@ -36,4 +37,6 @@ cmp calibrate-whole.txt calibrate-merged.txt
 check fidelity fidelity --situations quick --trials 4 --converged 200
 check stability experiment stability --quick --repeats 10
 check strategies experiment strategies --starts 200
-echo "parallel_test: calibrate, fidelity, stability and strategies: 4 shards merged = the unsharded bytes"
+check passing experiment passing --config dg --team both --scenarios 1,4 --trials 6
+check ablations experiment ablations --config 2d --scenarios 3 --trials 4
+echo "parallel_test: calibrate, fidelity, stability, strategies, passing and ablations: 4 shards merged = the unsharded bytes"

@@ -2,8 +2,9 @@
 # A real single-node Slurm cluster on this machine (issue 17): starts munged, slurmctld and slurmd
 # (Debian's munge and slurm-wlm) with their configuration, state and sockets in a temporary
 # folder and their own ports, submits a sharded stability run with scripts/slurm/submit.sh (a
-# job array of 4 shards and the merge job after it, --dependency=afterok), waits for the merge
-# and compares the report with the unsharded run's bytes. Stops the daemons it started.
+# job array of 4 shards and the merge job after it, --dependency=afterok) and a small passing run
+# with scripts/slurm/passing.sh (3 shards), waits for the merges and compares the reports with
+# the unsharded runs' bytes. Stops the daemons it started.
 #
 # The daemons need root (slurmd runs jobs as their users): without root, or without the
 # packages, the test is skipped (exit 77). By hand, as root: tests/shard/slurm_test.sh build/app/foresight
@@ -101,4 +102,23 @@ if [ ! -f "$work/sharded/report/stability.json" ]; then
   exit 1
 fi
 bash "$here/same_report.sh" "$work/whole" "$work/sharded/report"
-echo "slurm_test: 4 array tasks and the merge job on a one-node Slurm cluster: the unsharded bytes"
+
+# The passing experiment through its own script (scripts/slurm/passing.sh): 3 shards of both teams
+# against DG and the merge job.
+passing=(--scenarios 1,4 --trials 4)
+"$foresight" experiment passing --config dg --team both "${passing[@]}" --threads 1 \
+  --out "$work/passing-whole" >/dev/null
+FORESIGHT=$foresight SBATCH_ARGS="--cpus-per-task=1" CONFIGS=dg \
+  bash "$root/scripts/slurm/passing.sh" 3 "$work/passing" "${passing[@]}" | tee "$work/passing.txt"
+merge_job=$(sed -n 's/.*merge job \([0-9]*\).*/\1/p' "$work/passing.txt")
+for _ in $(seq 300); do
+  squeue -h -j "$merge_job" 2>/dev/null | grep -q . || break
+  sleep 1
+done
+if [ ! -f "$work/passing/dg/report/passing_comparison.json" ]; then
+  echo "slurm_test: the passing merge job wrote no report"
+  tail -n 3 "$work"/passing/dg/slurm-*.out 2>/dev/null
+  exit 1
+fi
+bash "$here/same_report.sh" "$work/passing-whole" "$work/passing/dg/report"
+echo "slurm_test: stability (4 array tasks) and passing (3) with their merge jobs on a one-node Slurm cluster: the unsharded bytes"

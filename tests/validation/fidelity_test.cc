@@ -326,5 +326,25 @@ TEST(FidelitySetTest, ShippedSetsLoad) {
   EXPECT_EQ(by_file.cases.size(), 6u);
 }
 
+TEST(FidelitySetTest, AClassKeepsItsSituationsAndTheOverridesApply) {
+  SituationOverrides overrides;
+  overrides.coarse_rebounds = true;
+  const FidelitySet posts =
+      LoadFidelitySet("default", testing::ModelsDir(), overrides, "near_posts");
+  ASSERT_EQ(posts.cases.size(), 4u);
+  for (const FidelityCase& c : posts.cases) {
+    EXPECT_EQ(c.situation_class, "near_posts");
+    EXPECT_TRUE(c.situation.evaluation.rebounds.enabled);
+    EXPECT_EQ(c.situation.evaluation.rebounds.post, 0.3);  // models/physics/spl.json
+  }
+  try {
+    LoadFidelitySet("default", testing::ModelsDir(), {}, "near_post");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("--class: no situation of class 'near_post' in "));
+    EXPECT_THAT(e.what(), HasSubstr("'open_field', 'near_opp_goal'"));
+  }
+}
+
 }  // namespace
 }  // namespace foresight

@@ -1,0 +1,144 @@
+#include "app/passing_command.h"
+
+#include <chrono>
+
+#include "app/cli_values.h"
+#include "app/experiment_output.h"
+#include "app/report_text.h"
+#include "app/shard_output.h"
+#include "experiments/passing_comparison.h"
+#include "experiments/passing_example.h"
+#include "experiments/passing_figures.h"
+#include "experiments/passing_replay.h"
+#include "experiments/passing_report.h"
+#include "experiments/passing_shard.h"
+
+namespace foresight {
+
+namespace {
+
+// One team's report files, named PREFIX.json, PREFIX_trials.csv, ...
+void AddPassingFiles(const std::filesystem::path& dir, const std::string& prefix,
+                     const PassingRun& run, ReportFiles& files) {
+  files.push_back({dir / (prefix + ".json"), PassingJson(run).dump(2) + "\n"});
+  files.push_back({dir / (prefix + "_trials.csv"), PassingTrialsCsv(run)});
+  files.push_back({dir / (prefix + "_events.csv"), PassingEventsCsv(run)});
+  files.push_back({dir / (prefix + "_outcomes.svg"), PassingOutcomesSvg(run)});
+  files.push_back({dir / (prefix + "_possession.svg"), PassingPossessionSvg(run)});
+  files.push_back({dir / (prefix + "_time.svg"), PassingTimeSvg(run)});
+  for (std::size_t i = 0; i < run.result.scenarios.size(); ++i) {
+    const std::string& name = run.result.scenarios[i].name;
+    files.push_back({dir / (prefix + "_example_" + name + ".svg"), PassingExampleSvg(run, i)});
+    files.push_back({dir / (prefix + "_replay_" + name + ".html"), PassingReplayHtml(run, i)});
+  }
+}
+
+// The played trials of every team of the run (setup.teams' order) and each team's run time.
+struct PassingTrials {
+  std::vector<PassingResult> results;
+  std::vector<double> run_times_s;
+};
+
+// Every team's report and, for two teams, their paired comparison, written to --out.
+void WritePassingReport(const PassingOptions& o, const PassingInputs& in, PassingTrials trials,
+                        const std::filesystem::path& models) {
+  const PassingSetup& setup = in.setup;
+  const std::uint64_t seed = ParseSeed(o.seed);
+  const std::filesystem::path dir(o.out_dir);
+  const bool both = setup.teams.size() > 1;
+  ReportFiles files;
+  std::string text;
+  std::vector<PassingRun> runs;
+  for (std::size_t t = 0; t < setup.teams.size(); ++t) {
+    const std::string& team = setup.teams[t];
+    PassingRun run;
+    run.provenance = PassingProvenance(
+        o, in, team,
+        DisplayPath(team == "cbr" ? setup.cbr.file : setup.reactive.file, models), seed, models);
+    run.setup = &setup;
+    run.team = team;
+    run.result = std::move(trials.results[t]);
+    run.summaries = SummarisePassing(run.result, setup.params.confidence);
+    run.provenance.run_time_s = trials.run_times_s[t];
+    AddPassingFiles(dir, both ? "passing_" + team : "passing", run, files);
+    text += PassingText(run);
+    runs.push_back(std::move(run));
+  }
+  if (both) {
+    std::vector<std::string> opponents;
+    for (const OpponentSpec& spec : setup.config.opponents) opponents.push_back(spec.name);
+    const PassingComparison comparison =
+        ComparePassing(setup.teams[0], runs[0].result, setup.teams[1], runs[1].result, opponents,
+                       setup.params.confidence);
+    files.push_back({dir / "passing_teams.svg", PassingTeamsSvg(runs[0], runs[1])});
+    files.push_back({dir / "passing_comparison.json",
+                     PassingComparisonJson(comparison).dump(2) + "\n"});
+    text += PassingComparisonText(comparison);
+  }
+  WriteReport(o.out_dir, files, text,
+              both ? "passing_" + setup.teams[0] + "_outcomes.svg" : "passing_outcomes.svg");
+}
+
+// The flags that decide a passing run's results, as a shard records them.
+nlohmann::ordered_json Settings(const PassingOptions& o) {
+  nlohmann::ordered_json settings = PassingSettings(o);
+  settings["--team"] = o.team;
+  return settings;
+}
+
+}  // namespace
+
+void AddPassingCommand(CLI::App& experiment, PassingOptions& o) {
+  CLI::App* cmd = experiment.add_subcommand(
+      "passing", "2-vs-2 attacks against DG or 2D opponents (Ros et al. 2009, sec. 5.2)");
+  AddPassingRunOptions(*cmd, o);
+  cmd->add_option("--team", o.team, "Attacking team: " + PassingTeamNames())
+      ->capture_default_str();
+}
+
+int RunPassingCommand(const PassingOptions& o, const std::filesystem::path& models) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::uint64_t seed = ParseSeed(o.seed);
+  const int threads = ParseCount("--threads", o.threads, 0, 1024);
+  const std::optional<Shard> shard = ParseShardFlag(o.shard);
+  const PassingInputs in = LoadPassingInputs(o, o.team, models);
+  const PassingSetup& setup = in.setup;
+  CheckReportDir(o.out_dir, "--out");  // before the work, not after
+  PassingTrials trials;
+  for (std::size_t t = 0; t < setup.teams.size(); ++t) {
+    const std::string& team = setup.teams[t];
+    trials.results.push_back(
+        RunPassing(setup, team, *in.executor, seed, threads,
+                   TerminalProgress("passing " + team + ":", "trials"),
+                   TeamShard(setup, static_cast<int>(t), shard.value_or(Shard{}))));
+    trials.run_times_s.push_back(SecondsSince(start));
+  }
+  if (shard) {
+    const ShardHeader header{kPassingCommand, FORESIGHT_VERSION, *shard, Settings(o),
+                             PassingItems(setup, static_cast<int>(setup.teams.size()))};
+    WriteShardFolder(o.out_dir, header,
+                     PassingShardResults(setup, setup.teams, trials.results, *shard), start,
+                     "trials");
+    return 0;
+  }
+  WritePassingReport(o, in, std::move(trials), models);
+  return 0;
+}
+
+int MergePassingCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
+                        const std::filesystem::path& models) {
+  PassingOptions o = PassingOptionsOf(parts.front(), out_dir);
+  o.team = SettingString(parts.front(), "--team");
+  const PassingInputs in = LoadPassingInputs(o, o.team, models);
+  const PassingSetup& setup = in.setup;
+  RequireShardItems(parts.front(), PassingItems(setup, static_cast<int>(setup.teams.size())),
+                    "trials");
+  CheckReportDir(out_dir, "--out");
+  PassingTrials trials;
+  trials.results = MergePassingShards(setup, setup.teams, parts);
+  trials.run_times_s.assign(setup.teams.size(), ShardsRunTime(parts));
+  WritePassingReport(o, in, std::move(trials), models);
+  return 0;
+}
+
+}  // namespace foresight

@@ -1,0 +1,28 @@
+// One trial of the match simulator (match/trial_result.h) in a shard file (report/shard_file.h,
+// issue 17): everything the passing reports read from a trial (outcome, counters, the team's
+// own counters, events and the trace of the recorded trial), doubles written exactly, so that a
+// trial read back is the trial that was played, bit for bit.
+//
+//   {"outcome": 3,
+//    "counters": {"opponent_touches": [..], "opponent_kicks": [..], "attacker_backups": [..],
+//                 "attacker_kicks": [..], "grabs_failed": 0, "kicks_missed": 0,
+//                 "kicks_not_settled": 0, "time_s": 12.5},
+//    "team_counters": [["cases_retrieved", 2], ...],
+//    "events": [[time_s, kind, side, robot, ball x, ball y, "detail"], ...],
+//    "trace": [[time_s, ball x, ball y, [[x, y, theta], ...]], ...]}
+//
+// The enums are stored by their numbers (checked on reading), like the outcomes of the seam.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "match/trial_result.h"
+#include "report/shard_file.h"
+
+namespace foresight {
+
+nlohmann::json TrialShardJson(const MatchTrialResult& trial);
+// InputError naming the file and the place in it when `value` is not such a trial.
+MatchTrialResult ReadShardTrial(const ShardValue& value);
+
+}  // namespace foresight
