@@ -73,7 +73,7 @@ INSTANTIATE_TEST_SUITE_P(
         KickCase{"nao", "spl", "nao", "forward", 0.0, 10.0, 0.5, 3.0},
         KickCase{"nao", "spl", "nao", "side_kick_left", 90.0, 30.0, 0.2, 3.0},
         KickCase{"nao", "spl", "nao", "side_kick_right", -90.0, 30.0, 0.2, 3.0},
-        // The swing-through launches about 0.85 m/s on Tekkotsu's legs (issue 12); the short
+        // The swing-through launches about 0.87 m/s on Tekkotsu's legs (issue 12); the short
         // strike about 0.24 (its lever, the 65.4 mm lower leg at 4.6 rad/s, moves the paw at
         // about 0.30 m/s; see its motion's notes).
         KickCase{"aibo_ers7", "four_legged", "aibo_ers7", "forward", 0.0, 15.0, 0.7, 3.0},
