@@ -1,7 +1,7 @@
 // foresight_mesh_tool OUT_DIR: writes the convex collision meshes of models/robots/ as Wavefront
 // OBJ files (v and f lines, triangles wound counter-clockwise seen from outside, metres, in the
 // link's frame):
-//   OUT_DIR/nao/meshes/{l_foot,r_foot}.obj   OUT_DIR/aibo_ers7/meshes/{paw,head}.obj
+//   OUT_DIR/nao/meshes/{l_foot,r_foot}.obj   OUT_DIR/aibo_ers7/meshes/{paw_front,paw_hind,head}.obj
 // Run it with OUT_DIR = models/robots to regenerate the shipped files.
 //
 // Every part is an asymmetric superellipsoid (Barr 1981): with the signed power
@@ -164,16 +164,23 @@ SuperellipsoidParams NaoFoot(bool left) {
   return p;
 }
 
-// AIBO ERS-7 lower leg with its paw, in the lower-leg frame (the knee axis): the paw's centre
-// lies 0.076 m below the knee, the rubber paw is about 0.034 m across, the shin narrows towards
-// the knee. Shared by all four legs (symmetric in y).
-SuperellipsoidParams AiboPaw() {
+// AIBO ERS-7 lower leg with its paw along the lower leg's line, in a frame at the knee axis
+// turned by the foot's angle (the URDF's collision origin turns it back): Tekkotsu's ERS-7.kin
+// puts the paw's centre 65.434 mm (front legs) or 67.647 mm (hind legs) from the knee and gives
+// the ball of the foot 26 mm across; the shin narrows towards the knee. Symmetric in y, so one
+// mesh serves the left and the right leg.
+SuperellipsoidParams AiboPaw(bool front) {
+  const double knee_to_paw_m = front ? 0.065434 : 0.067647;
+  const double paw_radius_m = 0.013;
   SuperellipsoidParams p;
-  p.file = "aibo_ers7/meshes/paw.obj";
-  p.description = "AIBO ERS-7 lower leg and paw collision hull (paw centre 0.076 m below the knee)";
-  p.centre_m = {0.0, 0.0, -0.076};
-  p.semi_pos_m = {0.017, 0.016, 0.066};
-  p.semi_neg_m = {0.017, 0.016, 0.018};
+  p.file = front ? "aibo_ers7/meshes/paw_front.obj" : "aibo_ers7/meshes/paw_hind.obj";
+  p.description = front ? "AIBO ERS-7 front lower leg and paw collision hull (paw centre 65.434 mm "
+                          "from the knee, ball of the foot 26 mm across)"
+                        : "AIBO ERS-7 hind lower leg and paw collision hull (paw centre 67.647 mm "
+                          "from the knee, ball of the foot 26 mm across)";
+  p.centre_m = {0.0, 0.0, -knee_to_paw_m};
+  p.semi_pos_m = {paw_radius_m, paw_radius_m, knee_to_paw_m - 0.010};
+  p.semi_neg_m = {paw_radius_m, paw_radius_m, paw_radius_m};
   p.e_vertical = 0.6;
   p.e_plan = 0.7;
   p.rings = 16;
@@ -205,8 +212,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::filesystem::path out_dir = argv[1];
-  const std::vector<SuperellipsoidParams> parts = {NaoFoot(true), NaoFoot(false), AiboPaw(),
-                                                   AiboHead()};
+  const std::vector<SuperellipsoidParams> parts = {NaoFoot(true), NaoFoot(false), AiboPaw(true),
+                                                   AiboPaw(false), AiboHead()};
   try {
     for (const SuperellipsoidParams& part : parts) {
       const Mesh mesh = Superellipsoid(part);

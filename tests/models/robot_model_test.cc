@@ -541,5 +541,43 @@ TEST(RobotModelTest, ShippedAiboHas16LinksAnd15JointsAndWeighsAbout16Kg) {
   EXPECT_NEAR(model.TotalMassKg(), 1.6, 0.05 * 1.6);
 }
 
+// The AIBO's legs against Tekkotsu's ERS-7.kin (project/ms/config/ERS-7.kin, as quoted in issue
+// 12's note): upper leg 69.5 mm; knee 9 mm off the upper leg's line; paw centre 65.434 mm from
+// the knee at 4.41 deg to the lower leg's line (front legs), 67.647 mm at 11.54 deg (hind legs),
+// 4.7 mm outwards; ball of the foot 26 mm across. The simulated figures are read back from the
+// URDF and the paw meshes (the mesh's deepest point lies one paw radius beyond the paw centre).
+TEST(RobotModelTest, ShippedAiboLegsHaveTekkotsusFigures) {
+  const RobotModel model = LoadRobotModel(ModelsDir() / "robots" / "aibo_ers7" / "aibo_ers7.urdf");
+  struct Leg {
+    const char* name;
+    double knee_offset_m, knee_to_paw_m, paw_angle_deg, lateral_m;
+  };
+  constexpr double kUpperLegM = 0.0695, kPawAcrossM = 0.026;
+  for (const Leg& leg : {Leg{"lf", 0.009, 0.065434, 4.41, 0.0047},
+                         Leg{"rf", 0.009, 0.065434, 4.41, -0.0047},
+                         Leg{"lh", -0.009, 0.067647, -11.54, 0.0047},
+                         Leg{"rh", -0.009, 0.067647, -11.54, -0.0047}}) {
+    const RobotJoint& knee = model.joints[*model.FindJoint(std::string(leg.name) + "_j3")];
+    EXPECT_NEAR(-knee.pose_P_J.translation().z(), kUpperLegM, 1e-9) << leg.name;
+    EXPECT_NEAR(knee.pose_P_J.translation().x(), leg.knee_offset_m, 1e-9) << leg.name;
+    const RobotLink& lower = model.links[knee.child_link];
+    ASSERT_EQ(lower.collisions.size(), 1u) << leg.name;
+    const RobotShape& paw = lower.collisions[0];
+    EXPECT_NEAR(paw.pose_L_S.translation().y(), leg.lateral_m, 1e-9) << leg.name;
+    // The paw's line is the mesh's -z axis turned about y by the paw angle.
+    const Eigen::Vector3d line_L = paw.pose_L_S.linear() * -Eigen::Vector3d::UnitZ();
+    EXPECT_NEAR(std::atan2(-line_L.x(), -line_L.z()) * 180 / 3.14159265358979, leg.paw_angle_deg,
+                1e-4)
+        << leg.name;
+    double deepest_m = 0.0, x_min = 0.0, x_max = 0.0;
+    for (const Eigen::Vector3d& v : paw.mesh_vertices_S_m) {
+      deepest_m = std::max(deepest_m, -v.z());
+      if (-v.z() > leg.knee_to_paw_m) x_min = std::min(x_min, v.x()), x_max = std::max(x_max, v.x());
+    }
+    EXPECT_NEAR(deepest_m - kPawAcrossM / 2, leg.knee_to_paw_m, 1e-4) << leg.name;
+    EXPECT_NEAR(x_max - x_min, kPawAcrossM, 5e-4) << leg.name;
+  }
+}
+
 }  // namespace
 }  // namespace foresight

@@ -73,9 +73,11 @@ INSTANTIATE_TEST_SUITE_P(
         KickCase{"nao", "spl", "nao", "forward", 0.0, 10.0, 0.5, 3.0},
         KickCase{"nao", "spl", "nao", "side_kick_left", 90.0, 30.0, 0.2, 3.0},
         KickCase{"nao", "spl", "nao", "side_kick_right", -90.0, 30.0, 0.2, 3.0},
-        // The swing-through launches about 0.95 m/s (issue 12); the short strike about 0.42.
+        // The swing-through launches about 0.87 m/s on Tekkotsu's legs (issue 12); the short
+        // strike about 0.24 (its lever, the 65.4 mm lower leg at 4.6 rad/s, moves the paw at
+        // about 0.30 m/s; see its motion's notes).
         KickCase{"aibo_ers7", "four_legged", "aibo_ers7", "forward", 0.0, 15.0, 0.7, 3.0},
-        KickCase{"aibo_ers7", "four_legged", "aibo_ers7", "forward_short", 0.0, 15.0, 0.3, 3.0},
+        KickCase{"aibo_ers7", "four_legged", "aibo_ers7", "forward_short", 0.0, 15.0, 0.15, 3.0},
         KickCase{"aibo_ers7", "four_legged", "aibo_ers7", "head_kick_left", 90.0, 35.0, 0.2, 3.0},
         KickCase{"aibo_ers7", "four_legged", "aibo_ers7", "head_kick_right", -90.0, 35.0, 0.2,
                  3.0}),
@@ -95,6 +97,7 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(KickStrikeTest, ForwardStrikesGiveTheBallItsSpeedWithinAFewMilliseconds) {
   constexpr double kMaxStrikeS = 0.006;
   constexpr double kStruckShare = 0.95;
+  constexpr double kMovingShare = 0.05;
   struct Strike {
     const char* robot;
     const char* field;
@@ -110,20 +113,25 @@ TEST(KickStrikeTest, ForwardStrikesGiveTheBallItsSpeedWithinAFewMilliseconds) {
     request.stream = 5;
     request.record_trace = true;
     const TrialResult r = RunKickTrial(testing::SceneOf(*data, {}, ball), request);
-    double first_touch_s = -1.0, peak_mps = 0.0;
+    double peak_mps = 0.0;
+    for (const TracePoint& p : r.trace) peak_mps = std::max(peak_mps, p.v_F.head<2>().norm());
+    // The strike starts where the contact that sets the ball moving (5 % of its top speed)
+    // begins; a touch earlier in the motion that leaves the ball at rest (the AIBO's knee
+    // brushes it while the leg winds up) is not the strike.
+    double touch_start_s = -1.0, strike_start_s = -1.0, struck_s = -1.0;
+    bool touching = false;
     for (const TracePoint& p : r.trace) {
-      if (p.kicker_contact && first_touch_s < 0.0) first_touch_s = p.t_s;
-      peak_mps = std::max(peak_mps, p.v_F.head<2>().norm());
-    }
-    double struck_s = -1.0;
-    for (const TracePoint& p : r.trace) {
-      if (p.v_F.head<2>().norm() >= kStruckShare * peak_mps) {
+      if (p.kicker_contact && !touching) touch_start_s = p.t_s;
+      touching = p.kicker_contact;
+      const double speed = p.v_F.head<2>().norm();
+      if (strike_start_s < 0.0 && speed >= kMovingShare * peak_mps) strike_start_s = touch_start_s;
+      if (speed >= kStruckShare * peak_mps) {
         struck_s = p.t_s;
         break;
       }
     }
-    ASSERT_GE(first_touch_s, 0.0) << robot;
-    EXPECT_LE(struck_s - first_touch_s, kMaxStrikeS) << robot;
+    ASSERT_GE(strike_start_s, 0.0) << robot;
+    EXPECT_LE(struck_s - strike_start_s, kMaxStrikeS) << robot;
     EXPECT_GT(peak_mps, 0.3) << robot;
   }
 }
