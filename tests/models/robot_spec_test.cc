@@ -355,11 +355,13 @@ TEST(RobotSpecTest, MissingMotionFileIsNamed) {
       (models / "robots" / "tester" / "motions" / "no_such.json").string() + ": cannot open file");
 }
 
-// The shipped robots: each loads with its body and three kick motions that fit its joints.
-TEST(RobotSpecTest, ShippedNaoLoadsWithThreeKicks) {
+// The shipped robots: each loads with its body and kick motions that fit its joints (the NAO's
+// fourth, `forward_long`, is the strong kick of issue 12).
+TEST(RobotSpecTest, ShippedNaoLoadsWithFourKicks) {
   const Robot nao = LoadRobot("nao", ModelsDir());
   EXPECT_EQ(nao.model.links.size(), 25u);
-  EXPECT_EQ(nao.motions.size(), 3u);
+  EXPECT_EQ(nao.motions.size(), 4u);
+  EXPECT_TRUE(nao.FindMotion("forward_long").has_value());
   EXPECT_EQ(nao.StandingPositions().size(), nao.model.joints.size());
   for (const auto& [kick, file] : nao.spec.kick_motion_files) {
     EXPECT_TRUE(nao.FindMotion(kick).has_value()) << kick;

@@ -73,6 +73,9 @@ INSTANTIATE_TEST_SUITE_P(
         KickCase{"nao", "spl", "nao", "forward", 0.0, 10.0, 0.5, 3.0},
         KickCase{"nao", "spl", "nao", "side_kick_left", 90.0, 30.0, 0.2, 3.0},
         KickCase{"nao", "spl", "nao", "side_kick_right", -90.0, 30.0, 0.2, 3.0},
+        // The strong kick (issue 12: at least 1.5 m/s) is only in the calibrated model; the
+        // paper's model keeps the paper's three kicks. It launches about 1.58 m/s.
+        KickCase{"nao", "spl", "nao_calibrated", "forward_long", 0.0, 10.0, 1.5, 3.0},
         // The swing-through launches about 0.87 m/s on Tekkotsu's legs (issue 12); the short
         // strike about 0.24 (its lever, the 65.4 mm lower leg at 4.6 rad/s, moves the paw at
         // about 0.30 m/s; see its motion's notes).
@@ -104,6 +107,7 @@ TEST(KickStrikeTest, ForwardStrikesGiveTheBallItsSpeedWithinAFewMilliseconds) {
     const char* kick;
   };
   for (const auto& [robot, field, kick] : {Strike{"nao", "spl", "forward"},
+                                           Strike{"nao", "spl", "forward_long"},
                                            Strike{"aibo_ers7", "four_legged", "forward_short"}}) {
     const auto data = testing::LoadPhysicsFixture(field, true, robot);
     const Vec2 ball(-0.3, 0.2);
@@ -130,9 +134,9 @@ TEST(KickStrikeTest, ForwardStrikesGiveTheBallItsSpeedWithinAFewMilliseconds) {
         break;
       }
     }
-    ASSERT_GE(strike_start_s, 0.0) << robot;
-    EXPECT_LE(struck_s - strike_start_s, kMaxStrikeS) << robot;
-    EXPECT_GT(peak_mps, 0.3) << robot;
+    ASSERT_GE(strike_start_s, 0.0) << robot << " " << kick;
+    EXPECT_LE(struck_s - strike_start_s, kMaxStrikeS) << robot << " " << kick;
+    EXPECT_GT(peak_mps, 0.3) << robot << " " << kick;
   }
 }
 
