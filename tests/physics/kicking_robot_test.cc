@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "common/random.h"
+#include "physics/motion_clearance.h"
 #include "physics/bullet_convert.h"
 #include "physics/robot_kinematics.h"
 #include "tests/support/physics_test_scenes.h"
@@ -84,12 +85,8 @@ TEST(KickingRobotStanceTest, ShippedAiboStandsOnAllFourPaws) {
   const Eigen::Isometry3d pose_F_root = PlanarPose(0, 0, robot.spec.base_height_m, 0);
   for (const char* leg : {"lf_lower", "rf_lower", "lh_lower", "rh_lower"}) {
     const int link = *robot.model.FindLink(leg);
-    const RobotShape& paw = robot.model.links[link].collisions.at(0);
-    double lowest_m = 1.0;
-    for (const Eigen::Vector3d& v : paw.mesh_vertices_S_m) {
-      lowest_m = std::min(lowest_m, (pose_F_root * poses[link] * paw.pose_L_S * v).z());
-    }
-    EXPECT_NEAR(lowest_m, 0.0, 5e-4) << leg;
+    EXPECT_NEAR(LowestPointZ(robot.model.links[link], pose_F_root * poses[link]), 0.0, 5e-4)
+        << leg;
   }
 }
 
