@@ -50,10 +50,10 @@ double LowestPointZ(const RobotLink& link, const Eigen::Isometry3d& pose_F_L) {
 MotionClearance FindMotionClearance(const Robot& robot, const KickMotion& motion, double step_s) {
   std::vector<int> joint_of;
   for (const std::string& name : motion.joints) joint_of.push_back(*robot.model.FindJoint(name));
-  std::vector<double> q = robot.StandingPositions();
+  std::vector<double> q = robot.StandingPositions(motion);
   std::vector<double> target(motion.joints.size()), speed(motion.joints.size());
   const Eigen::Isometry3d pose_F_root(
-      Eigen::Translation3d(0.0, 0.0, robot.spec.base_height_m));
+      Eigen::Translation3d(0.0, 0.0, robot.BaseHeightM(motion)));
   MotionClearance clearance{std::numeric_limits<double>::infinity(), 0.0, -1};
   const int steps = static_cast<int>(std::ceil(motion.DurationS() / step_s));
   for (int i = 0; i <= steps; ++i) {

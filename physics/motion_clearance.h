@@ -3,7 +3,7 @@
 // the motors), so nothing in a trial stops a foot or paw that a motion drives below the carpet:
 // it passes through it, and a swing that a real robot could not make can launch the ball. This
 // measures it by forward kinematics of the motion's targets (the motors track them closely,
-// tests/physics/joint_motor_test.cc), with the base at robot.json's base_height_m.
+// tests/physics/joint_motor_test.cc), with the base at the kick's stance's height.
 // Clearance is the height of the lowest point of any collision shape over the carpet (z = 0):
 // negative means that much below it.
 #pragma once
@@ -26,7 +26,7 @@ struct MotionClearance {
 };
 
 // The motion's targets sampled every step_s from start to end (every other joint at the
-// standing pose), the base level at spec.base_height_m.
+// kick's stance), the base level at the stance's height (Robot::BaseHeightM).
 MotionClearance FindMotionClearance(const Robot& robot, const KickMotion& motion,
                                     double step_s = 0.001);
 
