@@ -90,7 +90,7 @@ TEST(MotionClearanceTest, ShippedMotions) {
         Expected{"nao", "side_kick_right", 0.0}, Expected{"nao", "forward_long", -0.0193},
         Expected{"aibo_ers7", "forward", -0.0582}, Expected{"aibo_ers7", "head_kick_left", 0.0},
         Expected{"aibo_ers7", "head_kick_right", 0.0},
-        Expected{"aibo_ers7", "forward_short", 0.0}}) {
+        Expected{"aibo_ers7", "forward_short", 0.0}, Expected{"aibo_ers7", "pass", 0.0}}) {
     const Robot robot = LoadRobot(robot_name, testing::ModelsDir());
     const MotionClearance clearance =
         FindMotionClearance(robot, robot.motions[*robot.FindMotion(kick)]);
