@@ -33,6 +33,24 @@ std::string KeyframeField(std::size_t k, const std::string& field) {
   return "keyframes[" + std::to_string(k) + "]." + field;
 }
 
+// The stance's height must be positive (checked here); its joints are checked against the
+// robot's body when the robot loads (models/robot_spec.cc).
+KickStance ReadStance(const JsonObject& object) {
+  object.RejectUnknownKeys({"base_height_m", "pose_deg"});
+  KickStance stance;
+  stance.base_height_m = object.Number("base_height_m");
+  if (!(stance.base_height_m > 0.0)) {
+    object.Fail("base_height_m", "must be > 0, got " + FormatNumber(stance.base_height_m));
+  }
+  const JsonObject pose = object.Object("pose_deg");
+  for (const std::string& joint : pose.Keys()) {
+    if (joint == "notes") continue;  // allowed everywhere (json_reader.h)
+    if (joint.empty()) pose.Fail(joint, "joint names must not be empty");
+    stance.pose_rad.emplace_back(joint, pose.Number(joint) * kDegToRad);  // files: degrees
+  }
+  return stance;
+}
+
 }  // namespace
 
 void KickMotion::Sample(double t_s, std::span<double> q_rad, std::span<double> qdot_radps) const {
@@ -108,9 +126,10 @@ void KickMotion::Validate(const std::string& file) const {
 KickMotion LoadKickMotion(const std::filesystem::path& file) {
   const JsonDocument doc = JsonDocument::Load(file);
   const JsonObject root = doc.Root();
-  root.RejectUnknownKeys({"name", "ball_x_m", "ball_y_m", "joints", "keyframes"});
+  root.RejectUnknownKeys({"name", "stance", "ball_x_m", "ball_y_m", "joints", "keyframes"});
   KickMotion motion;
   motion.name = root.String("name");
+  if (root.Has("stance")) motion.stance = ReadStance(root.Object("stance"));
   motion.p_R_ball = Vec2(root.Number("ball_x_m"), root.Number("ball_y_m"));
   motion.joints = root.StringArray("joints");
   if (!root.Has("keyframes")) root.Fail("keyframes", "missing");

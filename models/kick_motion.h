@@ -3,11 +3,16 @@
 // not name hold the robot's standing pose. Between keyframes the targets follow a cubic Hermite
 // spline with Catmull-Rom tangents (zero velocity at the first and the last keyframe), so the
 // motors get smooth position and velocity targets.
+// A motion may start from its own stance ("stance": {"base_height_m", "pose_deg"}): a real robot
+// stands up for a leg kick and lowers its chest for a head kick, while the base stays fixed in
+// physics for the whole kick. The stance's joints replace robot.json's standing pose, its
+// height robot.json's base_height_m; without one the kick starts from robot.json's stance.
 #pragma once
 
 #include <filesystem>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/geometry.h"
@@ -19,8 +24,15 @@ struct KickKeyframe {
   std::vector<double> positions_rad;  // one per KickMotion::joints
 };
 
+struct KickStance {
+  double base_height_m = 0.0;  // root link frame above the carpet; 0: robot.json's stance
+  std::vector<std::pair<std::string, double>> pose_rad;  // joints set unlike robot.json's
+  bool IsOwn() const { return base_height_m > 0.0; }
+};
+
 struct KickMotion {
   std::string name;
+  KickStance stance;
   Vec2 p_R_ball{0.0, 0.0};  // nominal ball centre in the robot frame R at the motion's start
   std::vector<std::string> joints;
   std::vector<KickKeyframe> keyframes;  // time_s strictly increasing, the first at 0

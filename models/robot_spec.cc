@@ -94,6 +94,10 @@ void CheckJointSpeeds(const KickMotion& motion, const RobotModel& model, double 
 
 void CheckMotion(const KickMotion& motion, const RobotModel& model, double max_factor,
                  const std::string& file) {
+  for (const auto& [joint_name, position_rad] : motion.stance.pose_rad) {
+    const std::string field = "stance.pose_deg." + joint_name;
+    RequireWithinLimits(RevoluteJoint(model, joint_name, file, field), position_rad, file, field);
+  }
   for (std::size_t j = 0; j < motion.joints.size(); ++j) {
     const std::string joint_field = "joints[" + std::to_string(j) + "]";
     const RobotJoint& joint = RevoluteJoint(model, motion.joints[j], file, joint_field);
@@ -206,6 +210,20 @@ std::vector<double> Robot::StandingPositions() const {
     }
   }
   return positions;
+}
+
+std::vector<double> Robot::StandingPositions(const KickMotion& motion) const {
+  std::vector<double> positions = StandingPositions();
+  for (const auto& [joint_name, position_rad] : motion.stance.pose_rad) {
+    if (const std::optional<int> index = model.FindJoint(joint_name)) {
+      positions[*index] = position_rad;
+    }
+  }
+  return positions;
+}
+
+double Robot::BaseHeightM(const KickMotion& motion) const {
+  return motion.stance.IsOwn() ? motion.stance.base_height_m : spec.base_height_m;
 }
 
 Robot LoadRobot(const std::string& name, const std::filesystem::path& models_dir) {

@@ -59,7 +59,7 @@ double FastestAllowedPlayback(const Robot& robot);
 // A robot ready for physics: its spec, body and kick motions, checked against each other
 // (every joint a motion or the standing pose names exists and is revolute; every revolute joint
 // has a motor that can reach its velocity limit; every target lies
-// within the joint's limits; no motion, played at the fastest speed a trial draws, asks a joint
+// within the joint's limits, a motion's stance included; no motion, played at the fastest speed a trial draws, asks a joint
 // for more than its velocity limit).
 struct Robot {
   RobotSpec spec;
@@ -70,6 +70,10 @@ struct Robot {
   std::optional<int> FindMotion(const std::string& kick_name) const;
   // The standing position of every joint of `model`, in model.joints order.
   std::vector<double> StandingPositions() const;
+  // Where a kick starts: the standing pose with the motion's own stance, if it has one, and
+  // the height of the root link's frame above the carpet.
+  std::vector<double> StandingPositions(const KickMotion& motion) const;
+  double BaseHeightM(const KickMotion& motion) const;
 };
 
 // Loads models_dir/robots/<name>/robot.json and everything it names.

@@ -48,7 +48,7 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
   BulletWorld world(BulletWorld::Kind::kMultiBody, SolverOf(steps));
   AddStatics(world, scene);
   btRigidBody* ball = AddBall(world, scene, ball_start);
-  KickingRobot robot(world, *scene.robot, pose_F_root, scene.standing_q_rad,
+  KickingRobot robot(world, *scene.robot, pose_F_root, scene.robot->StandingPositions(motion),
                      MovingJoints(scene.robot->model, motion.joints), scene.params);
   const double motion_end_s = motion.DurationS() / speed_factor;
   const double deceleration = scene.params.carpet.rolling_deceleration_mps2;

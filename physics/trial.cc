@@ -59,7 +59,7 @@ TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request) 
   const Vec2 p_F_ball = request.state.p_F_ball;
   const Vec2 p_F_root = p_F_ball - Eigen::Rotation2Dd(heading) * p_R_ball;
   const Eigen::Isometry3d pose_F_root =
-      PlanarPose(p_F_root.x(), p_F_root.y(), robot.spec.base_height_m, heading);
+      PlanarPose(p_F_root.x(), p_F_root.y(), robot.BaseHeightM(motion), heading);
 
   const double radius = scene.field->ball.radius_m;
   BallMonitor monitor(scene.lines, p_F_ball, request.record_trace);

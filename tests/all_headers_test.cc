@@ -115,6 +115,7 @@
 #include "physics/impact_probe.h"
 #include "physics/joint_motor.h"
 #include "physics/kicking_robot.h"
+#include "physics/motion_clearance.h"
 #include "physics/phases.h"
 #include "physics/physics_runs.h"
 #include "physics/physics_scene.h"

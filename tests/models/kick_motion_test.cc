@@ -194,6 +194,30 @@ TEST(KickMotionTest, TwoKeyframesGiveASmoothStep) {
   EXPECT_NEAR(SampleOne(step, 0.5).q, 1.0 + 2.0 * (3.0 / 16.0 - 2.0 / 64.0), 1e-15);
 }
 
+TEST(KickMotionTest, LoadsItsOwnStance) {
+  const KickMotion plain = LoadKickMotion(MotionFile("no_stance"));
+  EXPECT_FALSE(plain.stance.IsOwn());
+  const KickMotion motion = LoadKickMotion(MotionFile(
+      "stance", R"("ball_x_m": 0.17,)",
+      R"("stance": {"base_height_m": 0.12, "pose_deg": {"notes": "up", "LKneePitch": 30.0}},
+         "ball_x_m": 0.17,)"));
+  EXPECT_TRUE(motion.stance.IsOwn());
+  EXPECT_EQ(motion.stance.base_height_m, 0.12);
+  ASSERT_EQ(motion.stance.pose_rad.size(), 1u);
+  EXPECT_EQ(motion.stance.pose_rad[0].first, "LKneePitch");
+  EXPECT_DOUBLE_EQ(motion.stance.pose_rad[0].second, 30.0 * kDegToRad);
+}
+
+TEST(KickMotionTest, AStanceNeedsAPositiveHeightAndOnlyItsFields) {
+  const auto low = MotionFile("stance_height", R"("ball_x_m": 0.17,)",
+                              R"("stance": {"base_height_m": 0, "pose_deg": {}}, "ball_x_m": 0.17,)");
+  EXPECT_EQ(LoadError(low), low.string() + ": stance.base_height_m: must be > 0, got 0");
+  const auto extra =
+      MotionFile("stance_extra", R"("ball_x_m": 0.17,)",
+                 R"("stance": {"base_height_m": 0.1, "pose_deg": {}, "tilt": 1}, "ball_x_m": 0.17,)");
+  EXPECT_THAT(LoadError(extra), StartsWith(extra.string() + ": stance.tilt: "));
+}
+
 TEST(KickMotionTest, SingleKeyframeIsRejected) {
   const auto file = WriteTempFile("kick_motion_single.json", R"({
     "name": "x", "ball_x_m": 0.1, "ball_y_m": 0.0, "joints": ["A"],

@@ -265,6 +265,39 @@ TEST(RobotSpecTest, StandingPositionsFollowTheModelsJointOrder) {
   EXPECT_EQ(robot.StandingPositions(), expected);
 }
 
+// A kick with its own stance starts from it: its joints replace the standing pose, its height
+// the robot's; a kick without one starts from robot.json's stance.
+TEST(RobotSpecTest, AKicksOwnStanceReplacesTheStandingPoseAndHeight) {
+  const Robot robot = LoadRobot(
+      "tester", TesterModels("own_stance", {"motions/side.json", R"("name": "side",)",
+                                            R"("name": "side", "stance": {"base_height_m": 0.41,
+                                               "pose_deg": {"KneePitch": 10.0}},)"}));
+  const KickMotion& side = robot.motions[*robot.FindMotion("side")];
+  const KickMotion& forward = robot.motions[*robot.FindMotion("forward")];
+  const std::vector<double> expected = {-20.0 * kDegToRad, 10.0 * kDegToRad, 0.0};
+  EXPECT_EQ(robot.StandingPositions(side), expected);
+  EXPECT_EQ(robot.BaseHeightM(side), 0.41);
+  EXPECT_EQ(robot.StandingPositions(forward), robot.StandingPositions());
+  EXPECT_EQ(robot.BaseHeightM(forward), 0.3);
+}
+
+TEST(RobotSpecTest, AStanceJointMustExistAndLieWithinItsLimits) {
+  const std::filesystem::path unknown = TesterModels(
+      "stance_unknown_joint",
+      {"motions/side.json", R"("name": "side",)",
+       R"("name": "side", "stance": {"base_height_m": 0.3, "pose_deg": {"Tail": 1.0}},)"});
+  const std::filesystem::path motion = unknown / "robots" / "tester" / "motions" / "side.json";
+  EXPECT_THAT(RobotError(unknown),
+              StartsWith(motion.string() + ": stance.pose_deg.Tail: 'Tail' is not a joint of "));
+  const std::filesystem::path beyond = TesterModels(
+      "stance_beyond_limit",
+      {"motions/side.json", R"("name": "side",)",
+       R"("name": "side", "stance": {"base_height_m": 0.3, "pose_deg": {"KneePitch": 130.0}},)"});
+  EXPECT_THAT(RobotError(beyond),
+              StartsWith((beyond / "robots" / "tester" / "motions" / "side.json").string() +
+                         ": stance.pose_deg.KneePitch: 130 deg is outside the joint's limits"));
+}
+
 TEST(RobotSpecTest, UnknownRobotListsTheAvailableOnes) {
   const std::filesystem::path models = TesterModels("unknown_robot");
   EXPECT_EQ(InputErrorMessage([&] { LoadRobot("robonova", models); }),
@@ -368,11 +401,14 @@ TEST(RobotSpecTest, ShippedNaoLoadsWithFourKicks) {
   }
 }
 
-TEST(RobotSpecTest, ShippedAiboLoadsWithFourKicks) {
+TEST(RobotSpecTest, ShippedAiboLoadsWithFiveKicks) {
   const Robot aibo = LoadRobot("aibo_ers7", ModelsDir());
   EXPECT_EQ(aibo.model.links.size(), 16u);
-  EXPECT_EQ(aibo.motions.size(), 4u);
+  EXPECT_EQ(aibo.motions.size(), 5u);
   EXPECT_TRUE(aibo.FindMotion("forward_short").has_value());
+  // The pass, appended last so no other kick's random streams move, stands up for its kick.
+  EXPECT_EQ(aibo.FindMotion("pass"), 4);
+  EXPECT_TRUE(aibo.motions[4].stance.IsOwn());
   EXPECT_EQ(aibo.StandingPositions().size(), aibo.model.joints.size());
 }
 

@@ -109,8 +109,8 @@ TEST_P(ShippedMotorsTest, KicksNeverAskMoreThanTheLine) {
     const SolverSettings solver{data->params.steps.solver_iterations,
                                 data->params.steps.restitution_threshold_mps};
     BulletWorld world(BulletWorld::Kind::kMultiBody, solver);
-    const std::vector<double> q = robot.StandingPositions();
-    KickingRobot kicker(world, robot, PlanarPose(0, 0, robot.spec.base_height_m, 0), q,
+    const std::vector<double> q = robot.StandingPositions(motion);
+    KickingRobot kicker(world, robot, PlanarPose(0, 0, robot.BaseHeightM(motion), 0), q,
                         MovingJoints(robot.model, motion.joints), data->params);
     double worst_share = 0.0;
     for (double t = 0.0; t < motion.DurationS() / fastest; t += dt) {

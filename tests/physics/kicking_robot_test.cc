@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "common/random.h"
+#include "physics/motion_clearance.h"
 #include "physics/bullet_convert.h"
 #include "physics/robot_kinematics.h"
 #include "tests/support/physics_test_scenes.h"
@@ -74,22 +75,22 @@ TEST_P(KickingRobotTest, MotorsHoldTheStandingPoseAgainstGravity) {
 
 INSTANTIATE_TEST_SUITE_P(Robots, KickingRobotTest, ::testing::Values("nao", "aibo_ers7"));
 
-// robot.json's base_height_m and standing pose put every paw of the AIBO on the carpet: the
-// lowest vertex of each lower leg's paw mesh, by forward kinematics, lies at z = 0 (the front
-// legs with the knee bent 122 deg, the hind legs, whose lower leg is longer and slants the other
-// way, with 115.3 deg).
-TEST(KickingRobotStanceTest, ShippedAiboStandsOnAllFourPaws) {
+// Every kick of the AIBO starts standing on all four paws: the lowest vertex of each lower leg's
+// paw mesh, by forward kinematics, lies at z = 0. robot.json's crouch (front legs with the knee
+// bent 122 deg, the hind legs, whose lower leg is longer and slants the other way, with 115.3
+// deg, body origin 0.0669 m up) for most kicks; the pass's own stance, standing up (front 20 /
+// 40 deg, hind -20 / 37.2 deg, 0.1362 m up).
+TEST(KickingRobotStanceTest, ShippedAiboKicksStartOnAllFourPaws) {
   const Robot robot = BodyOnly("aibo_ers7");
-  const std::vector<Eigen::Isometry3d> poses = LinkPoses(robot.model, robot.StandingPositions());
-  const Eigen::Isometry3d pose_F_root = PlanarPose(0, 0, robot.spec.base_height_m, 0);
-  for (const char* leg : {"lf_lower", "rf_lower", "lh_lower", "rh_lower"}) {
-    const int link = *robot.model.FindLink(leg);
-    const RobotShape& paw = robot.model.links[link].collisions.at(0);
-    double lowest_m = 1.0;
-    for (const Eigen::Vector3d& v : paw.mesh_vertices_S_m) {
-      lowest_m = std::min(lowest_m, (pose_F_root * poses[link] * paw.pose_L_S * v).z());
+  for (const KickMotion& motion : robot.motions) {
+    const std::vector<Eigen::Isometry3d> poses =
+        LinkPoses(robot.model, robot.StandingPositions(motion));
+    const Eigen::Isometry3d pose_F_root = PlanarPose(0, 0, robot.BaseHeightM(motion), 0);
+    for (const char* leg : {"lf_lower", "rf_lower", "lh_lower", "rh_lower"}) {
+      const int link = *robot.model.FindLink(leg);
+      EXPECT_NEAR(LowestPointZ(robot.model.links[link], pose_F_root * poses[link]), 0.0, 5e-4)
+          << motion.name << " " << leg;
     }
-    EXPECT_NEAR(lowest_m, 0.0, 5e-4) << leg;
   }
 }
 
