@@ -19,6 +19,9 @@ namespace {
 constexpr int kSupporting = 0;
 constexpr int kChasing = 1;
 constexpr int kHolding = 2;
+// Two field y within this are level: a side chosen by y must not follow the rounding that
+// separates a game from its mirror image (sin(pi) is 1.2e-16, not 0).
+constexpr double kLevelM = 1e-9;
 }  // namespace
 
 void ReactiveParams::Validate() const {
@@ -150,7 +153,9 @@ RobotCommand ReactiveTeam::Hold(Memory& m, const Perception& p) const {
     double side = WrapAngle(HeadingTowards(p.p_F_ball, opponent.p_F) - p.pose.theta_rad);
     // Dead ahead (noiseless scenarios line robots up exactly): dodge towards the middle of the
     // field, where there is room; a rule in field terms, so the mirrored game plays the same.
-    if (std::abs(side) < 1e-9) side = (p.p_F_ball.y() >= 0.0 ? 1.0 : -1.0) * p.attack_sign;
+    // (A ball "on" the middle line is on it within kLevelM: rounding, e.g. sin(pi) in the mirrored
+    // game, must not pick the side.)
+    if (std::abs(side) < 1e-9) side = (p.p_F_ball.y() >= -kLevelM ? 1.0 : -1.0) * p.attack_sign;
     heading = goal_heading + (side > 0.0 ? -1.0 : 1.0) * params_.dodge_angle_rad;
     break;
   }
@@ -177,7 +182,7 @@ RobotCommand ReactiveTeam::Support(Memory& m, const Perception& p, double distan
     back.backing_up = true;
     return back;
   }
-  const double side = p.pose.p_F.y() >= ball.y() ? 1.0 : -1.0;
+  const double side = p.pose.p_F.y() >= ball.y() - kLevelM ? 1.0 : -1.0;
   Vec2 target(ball.x() - p.attack_sign * params_.support_behind_m,
               ball.y() + side * params_.support_side_m);
   const FieldBox& own = params_.role_regions[static_cast<std::size_t>(p.self)];
