@@ -65,6 +65,7 @@ void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem
     kick.observations = std::move(trials.observations);
     kick.draws = std::move(trials.draws);
     kick.missed = trials.missed;
+    kick.clearance = trials.clearance;
     run.kicks.push_back(std::move(kick));
   }
 }

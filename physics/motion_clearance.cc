@@ -63,9 +63,10 @@ MotionClearance FindMotionClearance(const Robot& robot, const KickMotion& motion
     const std::vector<Eigen::Isometry3d> pose_root_L = LinkPoses(robot.model, q);
     for (std::size_t l = 0; l < robot.model.links.size(); ++l) {
       const double z = LowestPointZ(robot.model.links[l], pose_F_root * pose_root_L[l]);
-      if (z < clearance.lowest_m) clearance = {z, t_s, static_cast<int>(l)};
+      if (z < clearance.lowest_m) clearance = {z, t_s, static_cast<int>(l), ""};
     }
   }
+  clearance.link_name = robot.model.links[clearance.link].name;
   return clearance;
 }
 

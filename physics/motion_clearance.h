@@ -9,6 +9,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <string>
 
 #include "models/kick_motion.h"
 #include "models/robot_spec.h"
@@ -23,6 +24,7 @@ struct MotionClearance {
   double lowest_m = 0.0;  // height of the lowest point over the whole motion
   double t_s = 0.0;       // when, in the motion as written
   int link = -1;          // which link (index into model.links)
+  std::string link_name;
 };
 
 // The motion's targets sampled every step_s from start to end (every other joint at the

@@ -9,6 +9,11 @@ namespace foresight {
 
 namespace {
 
+// A motion's lowest point may lie this far below the carpet (the meshes' facets) before the
+// calibration warns (physics/motion_clearance.h; the shipped motions' test uses the same 1 mm).
+constexpr double kClearanceToleranceM = 0.001;
+
+
 using Json = nlohmann::ordered_json;
 
 Json IntervalJson(const Interval& interval, double scale = 1.0) {
@@ -101,6 +106,14 @@ std::vector<std::string> CalibrationWarnings(const CalibrationRun& run) {
       warnings.push_back(c.kick +
                          ": no launch points (a log has none, or no ball rested without "
                          "a contact); the kick keeps the base model's launch offset");
+    }
+    if (kick.clearance && kick.clearance->lowest_m < -kClearanceToleranceM) {
+      warnings.push_back(
+          c.kick + ": its motion takes " + kick.clearance->link_name + " " +
+          Fixed(-1000.0 * kick.clearance->lowest_m, 0) + " mm below the carpet at " +
+          Fixed(kick.clearance->t_s, 2) +
+          " s (the kicking robot touches only the ball, so nothing stops it); a real robot "
+          "cannot kick like this, so the fit is not a real robot's kick");
     }
     if (kick.missed > 0) {
       warnings.push_back(c.kick + ": the robot missed the ball in " + std::to_string(kick.missed) +

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "models/kick_model.h"
+#include "physics/motion_clearance.h"
 #include "physics/trial.h"
 #include "report/provenance.h"
 #include "validation/calibration.h"
@@ -21,6 +22,7 @@ struct CalibratedKick {
   std::vector<KickObservation> observations;
   std::vector<TrialDraw> draws;
   int missed = 0;  // physics trials in which the robot did not touch the ball
+  std::optional<MotionClearance> clearance;  // physics only: the motion's lowest point
 };
 
 struct CalibrationRun {

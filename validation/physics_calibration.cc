@@ -88,7 +88,11 @@ PhysicsCalibration Calibration(const PhysicsCalibrationSettings& settings,
   result.physics_file = setup->physics_file;
   result.carpet_deceleration_mps2 = setup->params.carpet.rolling_deceleration_mps2;
   result.model = setup->situation.kicks;
-  for (const std::string& name : kicks) result.kicks.push_back(play(*setup, name));
+  for (const std::string& name : kicks) {
+    result.kicks.push_back(play(*setup, name));
+    const KickMotion& motion = setup->robot.motions[*setup->robot.FindMotion(name)];
+    result.kicks.back().clearance = FindMotionClearance(setup->robot, motion);
+  }
   return result;
 }
 

@@ -12,6 +12,7 @@
 
 #include "common/shard.h"
 #include "models/kick_model.h"
+#include "physics/motion_clearance.h"
 #include "physics/trial.h"
 #include "validation/calibration.h"
 
@@ -43,6 +44,7 @@ struct PhysicsKickTrials {
   std::vector<TrialDraw> draws;
   std::vector<int> trials;  // the trial index of each observation
   int missed = 0;
+  MotionClearance clearance;  // of the kick's motion (physics/motion_clearance.h)
 };
 
 struct PhysicsCalibration {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "validation/calibration_report.h"
 #include "tests/support/temp_files.h"
 
 namespace foresight {
@@ -82,6 +83,29 @@ TEST(PhysicsCalibrationTest, OneKickAloneGivesTheSameObservationsAsAmongAll) {
     EXPECT_EQ(alone.observations[i].launch_speed_mps,
               all.kicks[1].observations[i].launch_speed_mps);
   }
+}
+
+// Each kick carries its motion's clearance, and the report warns about a motion that runs
+// through the carpet (issue 12, fifth pass: the NAO's forward kick, 34 mm at 1.04 s).
+TEST(PhysicsCalibrationTest, AKickWhoseMotionRunsThroughTheCarpetIsWarnedAbout) {
+  const PhysicsCalibration physics = RunPhysicsCalibration(Nao(""), testing::ModelsDir());
+  CalibrationRun run;
+  for (const PhysicsKickTrials& trials : physics.kicks) {
+    CalibratedKick kick;
+    kick.fit.kick = trials.kick;
+    kick.clearance = trials.clearance;
+    run.kicks.push_back(kick);
+  }
+  ASSERT_EQ(run.kicks.size(), 3u);
+  EXPECT_NEAR(run.kicks[0].clearance->lowest_m, -0.0344, 0.001);
+  EXPECT_EQ(run.kicks[0].clearance->link_name, "r_foot");
+  std::vector<std::string> below;
+  for (const std::string& w : CalibrationWarnings(run)) {
+    if (w.find("below the carpet") != std::string::npos) below.push_back(w);
+  }
+  ASSERT_EQ(below.size(), 1u);  // forward only; the side kicks stay above the carpet
+  EXPECT_THAT(below[0], HasSubstr("forward: its motion takes r_foot 34 mm below the carpet at "
+                                  "1.04 s"));
 }
 
 TEST(PhysicsCalibrationTest, UnknownKickAndOtherRobotsModelAreInputErrors) {
