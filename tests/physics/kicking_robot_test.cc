@@ -80,18 +80,29 @@ INSTANTIATE_TEST_SUITE_P(Robots, KickingRobotTest, ::testing::Values("nao", "aib
 // bent 122 deg, the hind legs, whose lower leg is longer and slants the other way, with 115.3
 // deg, body origin 0.0669 m up) for most kicks; the pass's own stance, standing up (front 20 /
 // 40 deg, hind -20 / 37.2 deg, 0.1362 m up).
-TEST(KickingRobotStanceTest, ShippedAiboKicksStartOnAllFourPaws) {
-  const Robot robot = BodyOnly("aibo_ers7");
+// Every kick, with its own stance or robot.json's, starts with the robot standing on the carpet:
+// each of `feet` touches it, none is above or below it.
+void ExpectEveryKickStartsOn(const Robot& robot, std::initializer_list<const char*> feet) {
   for (const KickMotion& motion : robot.motions) {
     const std::vector<Eigen::Isometry3d> poses =
         LinkPoses(robot.model, robot.StandingPositions(motion));
     const Eigen::Isometry3d pose_F_root = PlanarPose(0, 0, robot.BaseHeightM(motion), 0);
-    for (const char* leg : {"lf_lower", "rf_lower", "lh_lower", "rh_lower"}) {
-      const int link = *robot.model.FindLink(leg);
+    for (const char* foot : feet) {
+      const int link = *robot.model.FindLink(foot);
       EXPECT_NEAR(LowestPointZ(robot.model.links[link], pose_F_root * poses[link]), 0.0, 5e-4)
-          << motion.name << " " << leg;
+          << motion.name << " " << foot;
     }
   }
+}
+
+TEST(KickingRobotStanceTest, ShippedAiboKicksStartOnAllFourPaws) {
+  ExpectEveryKickStartsOn(BodyOnly("aibo_ers7"), {"lf_lower", "rf_lower", "lh_lower", "rh_lower"});
+}
+
+// The NAO's forward kicks stand up onto straighter legs (issue 12, sixth pass); the side kicks
+// start from robot.json's crouch. Both soles are on the carpet either way.
+TEST(KickingRobotStanceTest, ShippedNaoKicksStartOnBothSoles) {
+  ExpectEveryKickStartsOn(BodyOnly("nao"), {"l_foot", "r_foot"});
 }
 
 }  // namespace
