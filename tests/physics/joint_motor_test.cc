@@ -102,7 +102,7 @@ TEST(JointMotorTest, AgainstALoadTheTorqueStaysOnOrBelowTheLineAndMeetsItAtTheLo
 }
 
 // Each shipped kick of `robot_name` played without a ball at the fastest speed a trial draws
-// (fixed base, as in a trial); after every step `each_step(motion, kicker, t_s)` looks at it.
+// (fixed base, as in a trial); after every step `each_step(motion, robot, kicker, t_s)` looks at it.
 template <typename EachStep>
 void PlayShippedKicks(const char* robot_name, EachStep each_step) {
   const auto data = testing::LoadPhysicsFixture(

@@ -75,13 +75,8 @@ TEST_P(KickingRobotTest, MotorsHoldTheStandingPoseAgainstGravity) {
 
 INSTANTIATE_TEST_SUITE_P(Robots, KickingRobotTest, ::testing::Values("nao", "aibo_ers7"));
 
-// Every kick of the AIBO starts standing on all four paws: the lowest vertex of each lower leg's
-// paw mesh, by forward kinematics, lies at z = 0. robot.json's crouch (front legs with the knee
-// bent 122 deg, the hind legs, whose lower leg is longer and slants the other way, with 115.3
-// deg, body origin 0.0669 m up) for most kicks; the pass's own stance, standing up (front 20 /
-// 40 deg, hind -20 / 37.2 deg, 0.1362 m up).
 // Every kick, with its own stance or robot.json's, starts with the robot standing on the carpet:
-// each of `feet` touches it, none is above or below it.
+// the lowest point of each of `feet`, by forward kinematics, lies at z = 0.
 void ExpectEveryKickStartsOn(const Robot& robot, std::initializer_list<const char*> feet) {
   for (const KickMotion& motion : robot.motions) {
     const std::vector<Eigen::Isometry3d> poses =
@@ -95,12 +90,16 @@ void ExpectEveryKickStartsOn(const Robot& robot, std::initializer_list<const cha
   }
 }
 
+// The AIBO on all four paws: robot.json's crouch (front legs with the knee bent 122 deg, the hind
+// legs, whose lower leg is longer and slants the other way, with 115.3 deg, body origin 0.0669 m
+// up) for the head kicks and `forward_short`; `forward`'s and the pass's own stances, standing
+// up.
 TEST(KickingRobotStanceTest, ShippedAiboKicksStartOnAllFourPaws) {
   ExpectEveryKickStartsOn(BodyOnly("aibo_ers7"), {"lf_lower", "rf_lower", "lh_lower", "rh_lower"});
 }
 
-// The NAO's forward kicks stand up onto straighter legs (issue 12, sixth pass); the side kicks
-// start from robot.json's crouch. Both soles are on the carpet either way.
+// The NAO's kicks stand up onto straighter legs than robot.json's walking crouch (issue 12,
+// sixth pass), each with both soles on the carpet.
 TEST(KickingRobotStanceTest, ShippedNaoKicksStartOnBothSoles) {
   ExpectEveryKickStartsOn(BodyOnly("nao"), {"l_foot", "r_foot"});
 }
