@@ -71,8 +71,10 @@ INSTANTIATE_TEST_SUITE_P(
     Kicks, KickTest,
     ::testing::Values(
         KickCase{"nao", "spl", "nao", "forward", 0.0, 10.0, 0.5, 3.0},
-        KickCase{"nao", "spl", "nao", "side_kick_left", 90.0, 30.0, 0.2, 3.0},
-        KickCase{"nao", "spl", "nao", "side_kick_right", -90.0, 30.0, 0.2, 3.0},
+        // The side kicks sweep the leg out from a straight-legged stance (issue 12, sixth pass):
+        // about 0.77 m/s at 92 deg, the paper's model 0.75 m/s at 90.
+        KickCase{"nao", "spl", "nao", "side_kick_left", 90.0, 10.0, 0.6, 3.0},
+        KickCase{"nao", "spl", "nao", "side_kick_right", -90.0, 10.0, 0.6, 3.0},
         // The strong kick (issue 12: at least 1.5 m/s) is only in the calibrated model; the
         // paper's model keeps the paper's three kicks. It launches about 1.59 m/s from its
         // straight-legged stance, the foot above the carpet (issue 12, sixth pass).
