@@ -79,7 +79,7 @@ void BM_CbrTrial(benchmark::State& state) {
   for (auto _ : state) {
     ReactiveTeam reactive(setup.reactive, setup.field, setup.kicks, setup.robot, setup.sim, 2);
     CbrTeam attackers(team_setup, reactive, 2);
-    OpponentTeam opponents(setup.config, setup.kicks, setup.robot, setup.field.ball.radius_m,
+    OpponentTeam opponents(setup.config, setup.field, setup.kicks, setup.robot,
                            setup.sim);
     const MatchTrialResult r = RunTrial(match, scenario, attackers, opponents, StreamKey(1, key++));
     benchmark::DoNotOptimize(r.outcome);

@@ -47,7 +47,7 @@ void BM_Trial(benchmark::State& state, const char* config_name) {
   std::uint64_t key = 0;
   for (auto _ : state) {
     ReactiveTeam attackers(l.reactive, l.field, l.kicks, l.robot, l.sim, 2);
-    OpponentTeam opponents(l.config, l.kicks, l.robot, l.field.ball.radius_m, l.sim);
+    OpponentTeam opponents(l.config, l.field, l.kicks, l.robot, l.sim);
     const MatchTrialResult r = RunTrial(setup, scenario, attackers, opponents, StreamKey(1, key++));
     benchmark::DoNotOptimize(r.outcome);
     steps += std::round(r.counters.time_s / l.sim.control_step_s);

@@ -152,6 +152,10 @@ std::vector<std::string> JsonObject::Keys() const {
 }
 
 void JsonObject::RejectUnknownKeys(std::initializer_list<std::string_view> known) const {
+  RejectUnknownKeys(std::span<const std::string_view>(known.begin(), known.size()));
+}
+
+void JsonObject::RejectUnknownKeys(std::span<const std::string_view> known) const {
   for (const auto& [key, unused] : value_->items()) {
     if (key == "notes") continue;
     bool is_known = false;
@@ -278,6 +282,10 @@ JsonObject JsonDocument::Root() const {
 }
 
 void RequireSources(const JsonObject& root, std::initializer_list<std::string_view> figures) {
+  RequireSources(root, std::span<const std::string_view>(figures.begin(), figures.size()));
+}
+
+void RequireSources(const JsonObject& root, std::span<const std::string_view> figures) {
   const JsonObject sources = root.Object("sources");
   sources.RejectUnknownKeys(figures);
   for (std::string_view figure : figures) {

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -49,6 +50,7 @@ class JsonObject {
 
   // Throws if the object has a key outside `known` (and "notes").
   void RejectUnknownKeys(std::initializer_list<std::string_view> known) const;
+  void RejectUnknownKeys(std::span<const std::string_view> known) const;
 
   // "FILE: PATH.key: problem" as an InputError.
   [[noreturn]] void Fail(std::string_view key, std::string_view problem) const;
@@ -89,5 +91,6 @@ class JsonDocument {
 // `figures` (and nothing else): "FILE: sources.walk_speed_mps: ...". Every number a data file
 // chooses names where it comes from, or "assumption: why".
 void RequireSources(const JsonObject& root, std::initializer_list<std::string_view> figures);
+void RequireSources(const JsonObject& root, std::span<const std::string_view> figures);
 
 }  // namespace foresight

@@ -8,7 +8,7 @@ namespace foresight {
 namespace {
 
 // The largest value of each stored enum (the enums are dense from 0).
-constexpr int kLastEventKind = static_cast<int>(EventKind::kEnd);
+constexpr int kLastEventKind = static_cast<int>(EventKind::kKickEnd);
 constexpr int kLastSide = static_cast<int>(Side::kOpponents);
 
 int EnumNumber(const ShardValue& value, int last) {
@@ -35,7 +35,10 @@ nlohmann::json CountersJson(const TrialCounters& c) {
           {"grabs_failed", c.grabs_failed},
           {"kicks_missed", c.kicks_missed},
           {"kicks_not_settled", c.kicks_not_settled},
-          {"time_s", ExactJson(c.time_s)}};
+          {"time_s", ExactJson(c.time_s)},
+          {"last_touch", {c.last_touch_side, c.last_touch_robot}},
+          {"attacker_kick_sent", c.attacker_kick_sent ? 1 : 0},
+          {"shots", {c.shots_on_target, c.shots_saved}}};
 }
 
 TrialCounters ReadCounters(const ShardValue& v) {
@@ -48,6 +51,18 @@ TrialCounters ReadCounters(const ShardValue& v) {
   c.kicks_missed = v["kicks_missed"].Int();
   c.kicks_not_settled = v["kicks_not_settled"].Int();
   c.time_s = v["time_s"].Double();
+  const ShardValue last = v["last_touch"];
+  if (last.Size() != 2) last.Fail("must be [side, robot]");
+  c.last_touch_side = last.At(0).Int();
+  c.last_touch_robot = last.At(1).Int();
+  if (c.last_touch_side < -1 || c.last_touch_side > kLastSide) {
+    last.At(0).Fail("must be -1 .. " + std::to_string(kLastSide));
+  }
+  c.attacker_kick_sent = v["attacker_kick_sent"].Int() != 0;
+  const ShardValue shots = v["shots"];
+  if (shots.Size() != 2) shots.Fail("must be [on target, saved]");
+  c.shots_on_target = shots.At(0).Int();
+  c.shots_saved = shots.At(1).Int();
   return c;
 }
 

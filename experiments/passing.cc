@@ -10,6 +10,7 @@
 #include "cbr/cbr_team.h"
 #include "match/opponent_team.h"
 #include "models/model_paths.h"
+#include "models/physics_params.h"
 
 namespace foresight {
 
@@ -53,6 +54,7 @@ void PassingParams::Validate() const {
   RequireInRange("example_trial", example_trial, 0, 1000000);
   RequireInRange("trace_period_s", trace_period_s, 0.01, 10.0);
   RequireInRange("step_mark_period_s", step_mark_period_s, 0.1, 60.0);
+  RequireInRange("kick_moved_min_m", kick_moved_min_m, 0.0, 10.0);
 }
 
 PassingParams LoadPassingParams(const std::string& reference,
@@ -62,12 +64,14 @@ PassingParams LoadPassingParams(const std::string& reference,
   const JsonDocument doc = JsonDocument::Load(p.file);
   const JsonObject root = doc.Root();
   root.RejectUnknownKeys(
-      {"simulation", "confidence", "example_trial", "trace_period_s", "step_mark_period_s"});
+      {"simulation", "confidence", "example_trial", "trace_period_s", "step_mark_period_s",
+       "kick_moved_min_m"});
   p.simulation = root.String("simulation");
   p.confidence = root.Number("confidence");
   p.example_trial = root.Integer("example_trial");
   p.trace_period_s = root.Number("trace_period_s");
   p.step_mark_period_s = root.Number("step_mark_period_s");
+  p.kick_moved_min_m = root.Number("kick_moved_min_m");
   WithFile(p.file.string(), [&] { p.Validate(); });
   return p;
 }
@@ -101,10 +105,17 @@ PassingSetup LoadPassingSetup(const PassingRequest& request,
                      s.kicks.robot + "'; the match plays AIBOs (aibo_ers7)");
   }
   s.robot = LoadRobotParams(s.sim.robot, models_dir);
+  s.robot_restitution =
+      LoadPhysicsParams(DataFile(models_dir, DataFolder::kPhysics, s.field.name))
+          .materials.restitution.robot;
   s.config = LoadMatchConfig(request.config, models_dir, s.field, s.sim, s.robot);
   s.reactive = LoadReactiveParams("reactive", models_dir);
   // Kick names are checked here, before any work.
   RequireKick(s.kicks, s.config.clear_kick, s.config.file.string(), "clear_kick");
+  for (std::size_t i = 0; i < s.config.clear_side_kicks.size(); ++i) {
+    RequireKick(s.kicks, s.config.clear_side_kicks[i], s.config.file.string(),
+                "clear_side_kicks[" + std::to_string(i) + "]");
+  }
   RequireKick(s.kicks, s.reactive.shoot_kick, s.reactive.file.string(), "shoot_kick");
   if (request.team != "reactive") LoadCbrTeam(s, models_dir);
   const int count = static_cast<int>(s.config.scenarios.size());
@@ -167,6 +178,7 @@ PassingResult RunPassing(const PassingSetup& setup, const std::string& team,
   match.config = &setup.config;
   match.executor = &executor;
   match.attack_sign = setup.mirrored ? -1.0 : 1.0;
+  match.robot_restitution = setup.robot_restitution;
   MatchSetup example = match;
   example.trace_period_s = setup.params.trace_period_s;
 
@@ -186,7 +198,7 @@ PassingResult RunPassing(const PassingSetup& setup, const std::string& team,
         std::optional<CbrTeam> cbr;
         if (team == "cbr") cbr.emplace(CbrSetup(setup), reactive, n);
         TeamPolicy& attackers = cbr ? static_cast<TeamPolicy&>(*cbr) : reactive;
-        OpponentTeam opponents(setup.config, setup.kicks, setup.robot, setup.field.ball.radius_m,
+        OpponentTeam opponents(setup.config, setup.field, setup.kicks, setup.robot,
                                setup.sim);
         const bool is_example = trial == std::min(setup.params.example_trial, per - 1);
         st.trials[static_cast<std::size_t>(trial)] =

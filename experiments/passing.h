@@ -38,6 +38,8 @@ struct PassingParams {
   int example_trial = 0;            // the trial of each scenario recorded and drawn (Fig. 13)
   double trace_period_s = 0.0;      // how often the example trial is recorded
   double step_mark_period_s = 0.0;  // numbered marks on the example's paths this often
+  // An opponent's kick counts as having moved the ball (experiments/passing_causes.h) from this.
+  double kick_moved_min_m = 0.0;
 
   void Validate() const;
 };
@@ -53,6 +55,9 @@ struct PassingSetup {
   KickModel kicks;
   std::filesystem::path kicks_file;
   RobotParams robot;
+  // The ball-robot restitution of the field's physics file (materials.restitution.ball_robot),
+  // the one number physics and the coarse rebounds also use.
+  double robot_restitution = 0.0;
   MatchConfig config;  // mirrored when `mirrored`
   std::string team;                // as requested: "reactive", "cbr" or "both"
   std::vector<std::string> teams;  // the teams to play, in report order ("cbr", "reactive")

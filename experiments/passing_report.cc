@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "experiments/passing_causes.h"
 #include "report/report_format.h"
 
 namespace foresight {
@@ -73,6 +74,18 @@ Json SummaryJson(const ScenarioSummary& s, const PassingSetup& setup) {
           {"team_counters", TeamCountersJson(s)}};
 }
 
+Json CausesJson(const ScenarioCauses& c) {
+  return {{"to_goal_by_attackers",
+           {{"count", c.to_goal_by_attackers},
+            {"share", c.trials > 0 ? static_cast<double>(c.to_goal_by_attackers) / c.trials : 0.0},
+            {"share_ci", IntervalJson(c.to_goal_by_attackers_ci)}}},
+          {"shots_on_target", c.shots_on_target},
+          {"shots_saved", c.shots_saved},
+          {"opponent_kicks_moved", c.opponent_kicks_moved},
+          {"opponent_kicks_towards_own_goal", c.opponent_kicks_own_goal},
+          {"safety_cap_ended", c.safety_cap_ended}};
+}
+
 }  // namespace
 
 Json PassingJson(const PassingRun& run) {
@@ -84,9 +97,16 @@ Json PassingJson(const PassingRun& run) {
                  {"trials_per_scenario", setup.trials},
                  {"confidence", setup.params.confidence},
                  {"control_step_s", setup.sim.control_step_s},
-                 {"time_limit_s", setup.config.time_limit_s}});
+                 {"time_limit_s", setup.config.time_limit_s},
+                 {"time_limit_kind", setup.config.time_limit_is_safety_cap ? "safety_cap" : "timeout"},
+                 {"kick_moved_min_m", setup.params.kick_moved_min_m}});
+  const std::vector<ScenarioCauses> causes =
+      SummariseCauses(run.result, setup, setup.params.confidence);
   Json summaries = Json::array();
-  for (const ScenarioSummary& s : run.summaries) summaries.push_back(SummaryJson(s, setup));
+  for (std::size_t i = 0; i < run.summaries.size(); ++i) {
+    summaries.push_back(SummaryJson(run.summaries[i], setup));
+    summaries.back()["causes"] = CausesJson(causes[i]);
+  }
   const RunProvenance& p = run.provenance;
   return {{"experiment", "passing"}, {"version", p.version},   {"seed", p.seed},
           {"params", inputs},        {"scenarios", summaries}, {"run_time_s", p.run_time_s}};
@@ -97,7 +117,8 @@ std::string PassingTrialsCsv(const PassingRun& run) {
   std::string csv = "scenario,trial,outcome,to_goal,time_s";
   for (const std::string& o : opponents) csv += ",touches_" + o + ",kicks_" + o;
   for (const std::string& a : kAttackerNames) csv += ",backups_" + a + ",kicks_" + a;
-  csv += ",grabs_failed,kicks_missed,kicks_not_settled\n";
+  csv += ",grabs_failed,kicks_missed,kicks_not_settled,last_touch,attacker_kick_sent,"
+         "shots_on_target,shots_saved\n";
   for (const ScenarioTrials& st : run.result.scenarios) {
     for (std::size_t i = 0; i < st.trials.size(); ++i) {
       const TrialCounters& c = st.trials[i].counters;
@@ -110,7 +131,14 @@ std::string PassingTrialsCsv(const PassingRun& run) {
       for (std::size_t a = 0; a < c.attacker_backups.size(); ++a) {
         csv += Format(",%d,%d", c.attacker_backups[a], c.attacker_kicks[a]);
       }
-      csv += Format(",%d,%d,%d\n", c.grabs_failed, c.kicks_missed, c.kicks_not_settled);
+      const std::string last =
+          c.last_touch_side < 0 ? ""
+          : c.last_touch_side == static_cast<int>(Side::kAttackers)
+              ? kAttackerNames[static_cast<std::size_t>(c.last_touch_robot)]
+              : opponents[static_cast<std::size_t>(c.last_touch_robot)];
+      csv += Format(",%d,%d,%d,%s,%d,%d,%d\n", c.grabs_failed, c.kicks_missed,
+                    c.kicks_not_settled, last.c_str(), c.attacker_kick_sent ? 1 : 0,
+                    c.shots_on_target, c.shots_saved);
     }
   }
   return csv;
@@ -153,6 +181,24 @@ std::string PassingText(const PassingRun& run) {
                    pct(TrialOutcome::kTimeout), 100.0 * s.to_goal / s.trials);
     for (const MeanStat& m : s.possession) text += Format(" %.2f (%.2f)", m.mean, m.sd);
     text += Format(" | %.2f\n", s.time_s.mean);
+  }
+  text += Format(
+      "scenario  to goal by attackers | shots on target, saved | opponents' kicks >= %.2g m, "
+      "towards own goal%s\n",
+      setup.params.kick_moved_min_m, setup.config.time_limit_is_safety_cap ? " | safety cap" : "");
+  const std::vector<ScenarioCauses> causes =
+      SummariseCauses(run.result, setup, setup.params.confidence);
+  for (std::size_t i = 0; i < causes.size(); ++i) {
+    const ScenarioCauses& c = causes[i];
+    const double own_pct =
+        c.opponent_kicks_moved > 0 ? 100.0 * c.opponent_kicks_own_goal / c.opponent_kicks_moved : 0.0;
+    text += Format("%-8s %5.1f %%              | %4d, %4d             | %5d, %4d (%.1f %%)",
+                   run.result.scenarios[i].name.c_str(),
+                   c.trials > 0 ? 100.0 * c.to_goal_by_attackers / c.trials : 0.0,
+                   c.shots_on_target, c.shots_saved, c.opponent_kicks_moved,
+                   c.opponent_kicks_own_goal, own_pct);
+    if (setup.config.time_limit_is_safety_cap) text += Format(" | %d", c.safety_cap_ended);
+    text += "\n";
   }
   return text;
 }

@@ -7,6 +7,10 @@
 
 namespace foresight {
 
+double BallRoll::SpeedAt(double s_m) const {
+  return std::sqrt(std::max(0.0, speed0_mps * speed0_mps - 2.0 * deceleration_mps2 * s_m));
+}
+
 std::optional<BallRoll> RollFromOutcome(const Vec2& p_F_start, const Outcome& outcome,
                                         double deceleration_mps2) {
   const Vec2 path = outcome.p_F_rest - p_F_start;
@@ -22,31 +26,56 @@ std::optional<BallRoll> RollFromOutcome(const Vec2& p_F_start, const Outcome& ou
   return roll;
 }
 
-std::optional<int> AdvanceRoll(BallRoll& roll, double dt_s, std::span<const BodyDisc> bodies) {
+std::optional<BodyHit> AdvanceRoll(BallRoll& roll, double dt_s, std::span<const BallBody> bodies) {
   const double a = roll.deceleration_mps2;
   const double t_stop = roll.speed0_mps / a;
   const double t = std::min(roll.elapsed_s + dt_s, t_stop);
   const double s_new = std::min(roll.length_m, roll.speed0_mps * t - 0.5 * a * t * t);
-  roll.elapsed_s = t;
   const double advance_m = std::max(0.0, s_new - roll.travelled_m);
   const Vec2 here = roll.Position();
   double first_hit = advance_m;
   std::optional<int> hit_body;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (bodies[i].ignore) continue;
-    const double s = RayCircleEntry(here, roll.dir_F, bodies[i].centre, bodies[i].contact_radius_m);
+    const double s =
+        RayCapsuleEntry(here, roll.dir_F, bodies[i].a, bodies[i].b, bodies[i].contact_radius_m);
     if (s <= first_hit) {
       first_hit = s;
       hit_body = static_cast<int>(i);
     }
   }
-  if (hit_body) {
-    roll.travelled_m += first_hit;
-    roll.length_m = roll.travelled_m;  // stopped dead against the body
-  } else {
+  if (!hit_body) {
+    roll.elapsed_s = t;
     roll.travelled_m = t >= t_stop ? roll.length_m : s_new;
+    return std::nullopt;
   }
-  return hit_body;
+  const double s_hit = roll.travelled_m + first_hit;
+  const double speed = roll.SpeedAt(s_hit);
+  const double t_hit = std::min((roll.speed0_mps - speed) / a, t);
+  const double step_end_s = roll.elapsed_s + dt_s;
+  roll.travelled_m = s_hit;
+  roll.length_m = s_hit;  // this roll ends at the body
+  roll.elapsed_s = t_hit;
+  return BodyHit{*hit_body, roll.Position(), speed, std::max(0.0, step_end_s - t_hit)};
+}
+
+BallVelocity ReboundOffBody(const BallBody& body, const Vec2& p_F_contact, const Vec2& dir_F,
+                            double speed_mps, double restitution) {
+  const Vec2 axis = body.b - body.a;
+  const double length = axis.norm();
+  const double along =
+      length > 0.0 ? std::clamp((p_F_contact - body.a).dot(axis / length), 0.0, length) : 0.0;
+  const Vec2 nearest = length > 0.0 ? Vec2(body.a + along * axis / length) : body.a;
+  const Vec2 away = p_F_contact - nearest;
+  const double distance = away.norm();
+  if (!(distance > 1e-12)) return {-dir_F, restitution * speed_mps};
+  const Vec2 n = away / distance;
+  const Vec2 v = speed_mps * dir_F;
+  const double approach = v.dot(n);
+  if (approach >= 0.0) return {dir_F, speed_mps};  // already leaving: nothing to reflect
+  const Vec2 after = v - (1.0 + restitution) * approach * n;
+  const double speed = after.norm();
+  return {speed > 0.0 ? Vec2(after / speed) : dir_F, speed};
 }
 
 }  // namespace foresight

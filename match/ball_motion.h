@@ -7,8 +7,8 @@
 // the path's length d in exactly T (the coarse model's own launch speed when nothing stopped it,
 // d = v0^2 / (2 a)). Posts and nets are inside the outcome already (the path ends at them). Robots
 // move while the ball rolls, so each step the ball's advance is also tested against every robot
-// body (a disc): the first body it meets stops it dead one ball radius short (fully inelastic,
-// as the coarse model's obstacles), and that robot touched it.
+// body (a disc, or a capsule while a goalie blocks): the first body it meets ends this roll at the
+// contact point, and that robot touched it. The match then rebounds it (ReboundOffBody).
 #pragma once
 
 #include <optional>
@@ -29,20 +29,43 @@ struct BallRoll {
   double travelled_m = 0.0;
   bool Done() const { return travelled_m >= length_m; }
   Vec2 Position() const { return p_F_start + travelled_m * dir_F; }
+  // The speed after travelling s metres: v^2 = v0^2 - 2 a s.
+  double SpeedAt(double s_m) const;
 };
 
 // The roll that replays `outcome` from `p_F_start`; nullopt when the ball does not move.
 std::optional<BallRoll> RollFromOutcome(const Vec2& p_F_start, const Outcome& outcome,
                                         double deceleration_mps2);
 
-struct BodyDisc {
-  Vec2 centre{0.0, 0.0};
-  double contact_radius_m = 0.0;  // body radius + ball radius
-  bool ignore = false;            // e.g. the kicker, which the ball leaves
+// A robot's body as the ball meets it: the points within contact_radius_m (body radius + ball
+// radius) of the segment [a, b]; a == b for a standing robot (a disc).
+struct BallBody {
+  Vec2 a{0.0, 0.0};
+  Vec2 b{0.0, 0.0};
+  double contact_radius_m = 0.0;
+  bool ignore = false;  // e.g. the kicker, which the ball leaves
 };
 
-// Advances the roll by dt_s. Returns the index of the body that stopped it, if one did (the roll
-// is then finished at the contact point).
-std::optional<int> AdvanceRoll(BallRoll& roll, double dt_s, std::span<const BodyDisc> bodies);
+struct BodyHit {
+  int body = 0;
+  Vec2 p_F_contact{0.0, 0.0};  // the ball's centre when it touches the body
+  double speed_mps = 0.0;      // the ball's speed then
+  double time_left_s = 0.0;    // of the step, after the contact
+};
+
+// Advances the roll by dt_s. When a body stops it, the roll ends at the contact point and the
+// hit says where, how fast and how much of the step was left.
+std::optional<BodyHit> AdvanceRoll(BallRoll& roll, double dt_s, std::span<const BallBody> bodies);
+
+// The ball leaving a standing body it met at p_F_contact moving along unit dir_F: reflected about
+// the contact normal n (from the body's nearest axis point to the ball's centre) with its normal
+// speed scaled by the restitution e, v' = v - (1 + e)(v . n) n, tangential speed kept (the
+// coarse model's rebound, planner/first_hit.h). Returns the new unit direction and speed.
+struct BallVelocity {
+  Vec2 dir_F{1.0, 0.0};
+  double speed_mps = 0.0;
+};
+BallVelocity ReboundOffBody(const BallBody& body, const Vec2& p_F_contact, const Vec2& dir_F,
+                            double speed_mps, double restitution);
 
 }  // namespace foresight

@@ -24,7 +24,10 @@ class Match {
         referee_(*setup.field, *setup.sim, setup.config->penalty_area_ends_trial,
                  setup.attack_sign),
         policies_{&attackers, &opponents},
-        contact_m_(setup.robot->body_radius_m + setup.field->ball.radius_m) {
+        contact_m_(setup.robot->body_radius_m + setup.field->ball.radius_m),
+        field_world_(CoarseWorld::Build(Scene{setup.field, {},
+                                              setup.kicks->rolling_deceleration_mps2,
+                                              CoarseRebounds{}})) {
     AddRobots(Side::kAttackers, scenario.attackers);
     AddRobots(Side::kOpponents, scenario.opponents);
     world_.ball.p_F = scenario.p_F_ball;
@@ -56,8 +59,9 @@ class Match {
       std::vector<RobotCommand> commands = Decide();
       world_.time_s = static_cast<double>(step) * dt;
       Act(commands);
-      StepBall(world_, contact_m_, s_.sim->control_step_s, s_.sim->touch_tolerance_m);
-      const std::optional<TrialOutcome> touched_end = UpdateTouches();
+      const std::vector<int> met = StepBall(world_, BallParams());
+      const std::optional<TrialOutcome> touched_end = UpdateTouches(met);
+      EndKickTravel(met);
       std::optional<TrialOutcome> end = referee_.Judge(ball_before, world_.ball.p_F);
       if (!end) end = touched_end;
       if (world_.time_s >= next_trace_s_ || end) Record();
@@ -90,7 +94,34 @@ class Match {
     next_trace_s_ = world_.time_s + s_.trace_period_s - 1e-9;
   }
 
+  BallStepParams BallParams() const {
+    return {contact_m_, s_.sim->control_step_s, s_.sim->touch_tolerance_m, s_.robot_restitution,
+            &field_world_};
+  }
+
+  // The kick in flight ends its own travel once the ball rests, meets a body or is held.
+  void EndKickTravel(const std::vector<int>& met) {
+    if (kick_in_flight_ < 0) return;
+    const char* how = world_.ball.holder >= 0 ? "grab"
+                      : !met.empty()           ? "body"
+                      : !world_.ball.roll      ? "rest"
+                                               : nullptr;
+    if (how == nullptr) return;
+    Event(EventKind::kKickEnd, kick_in_flight_, how);
+    kick_in_flight_ = -1;
+    shot_on_target_ = false;
+  }
+
+  // Robot `robot` touched, grabbed or kicked the ball.
+  void NoteTouch(int robot) {
+    const RobotState& r = world_.robots[static_cast<std::size_t>(robot)];
+    result_.counters.last_touch_side = static_cast<int>(r.side);
+    result_.counters.last_touch_robot = r.index;
+    if (r.side == Side::kOpponents) result_.counters.attacker_kick_sent = false;
+  }
+
   MatchTrialResult Finish(TrialOutcome outcome) {
+    if (kick_in_flight_ >= 0) Event(EventKind::kKickEnd, kick_in_flight_, "end");
     result_.outcome = outcome;
     result_.counters.time_s = world_.time_s;
     result_.events.push_back({world_.time_s, EventKind::kEnd, Side::kAttackers, 0, world_.ball.p_F,
@@ -182,7 +213,9 @@ class Match {
   void FinishActivity(int robot);
   void Launch(int robot);
   Pose2 Propose(int robot, const RobotCommand& command);
-  std::optional<TrialOutcome> UpdateTouches();
+  std::optional<TrialOutcome> UpdateTouches(const std::vector<int>& met);
+  void UpdateBlock(RobotState& r) const;
+  bool InStealCone(const RobotState& challenger, int holder) const;
 
   const MatchSetup& s_;
   RandomStream rng_;
@@ -190,11 +223,14 @@ class Match {
   Referee referee_;
   TeamPolicy* policies_[2];
   double contact_m_;  // robot centre to ball centre when they touch
+  CoarseWorld field_world_;  // posts and nets, for a ball rebounding off a robot
   MoveRules rules_;
   MatchWorld world_;
   MatchTrialResult result_;
   double next_trace_s_ = 0.0;
   int last_toucher_ = -1;  // the robot that began the last counted touch
+  int kick_in_flight_ = -1;  // the kicker whose kick's travel has not ended yet
+  bool shot_on_target_ = false;  // that kick is an attacker's shot on target
 };
 
 void Match::Act(const std::vector<RobotCommand>& commands) {
@@ -209,6 +245,7 @@ void Match::Act(const std::vector<RobotCommand>& commands) {
     if (r.activity != Activity::kFree && world_.time_s >= r.busy_until_s - 1e-9) {
       FinishActivity(static_cast<int>(i));
     }
+    if (r.activity == Activity::kBlocking) UpdateBlock(r);
     proposed.push_back(r.activity == Activity::kFree ? Propose(static_cast<int>(i), commands[i])
                                                      : r.pose);
   }
@@ -236,6 +273,14 @@ Pose2 Match::Propose(int robot, const RobotCommand& command) {
         r.busy_until_s = world_.time_s + rp.kick_time_s;
       }
       return r.pose;
+    case CommandKind::kBlock:
+      if (!holding) {
+        r.activity = Activity::kBlocking;
+        r.block_since_s = world_.time_s;
+        r.busy_until_s = world_.time_s + rp.block_down_s + rp.block_hold_s + rp.block_recover_s;
+        UpdateBlock(r);
+      }
+      return r.pose;
     case CommandKind::kGetBall: {
       if (holding) return r.pose;
       if (InGrabReach(r)) {
@@ -261,7 +306,8 @@ void Match::FinishActivity(int robot) {
   RobotState& r = world_.robots[static_cast<std::size_t>(robot)];
   const Activity done = r.activity;
   r.activity = Activity::kFree;
-  if (done == Activity::kKicking) return;
+  r.block_half_span_m = 0.0;
+  if (done != Activity::kGrabbing) return;
   // A grab: the ball must still lie within reach (it may have rolled on or been taken away).
   if (world_.ball.holder == robot || !InGrabReach(r)) return;
   if (rng_.NextUniform() < s_.robot->grab_failure_rate) {
@@ -270,6 +316,11 @@ void Match::FinishActivity(int robot) {
     return;
   }
   const int previous = world_.ball.holder;
+  // A held ball lies under the holder's chin: only a robot in front of the holder reaches it.
+  if (previous >= 0 && !InStealCone(r, previous)) {
+    Event(EventKind::kGrabFailed, robot, "covered");
+    return;
+  }
   // Taking a held ball is a fight between two robots (sec. 5.3.1): it succeeds only so often.
   if (previous >= 0 && rng_.NextUniform() >= s_.robot->steal_success_rate) {
     Event(EventKind::kGrabFailed, robot, "steal");
@@ -277,7 +328,26 @@ void Match::FinishActivity(int robot) {
   }
   world_.ball.holder = robot;
   world_.ball.roll.reset();
+  NoteTouch(robot);
   Event(previous >= 0 ? EventKind::kSteal : EventKind::kGrab, robot);
+}
+
+bool Match::InStealCone(const RobotState& challenger, int holder) const {
+  const Pose2& h = world_.robots[static_cast<std::size_t>(holder)].pose;
+  return std::abs(BearingTo(h, challenger.pose.p_F)) <= s_.robot->steal_cone_rad;
+}
+
+// A block spreads the body linearly over block_down_s (from its contact reach to the block's),
+// holds it block_hold_s, and is a disc again while the robot gets up.
+void Match::UpdateBlock(RobotState& r) const {
+  const RobotParams& rp = *s_.robot;
+  const double since_s = world_.time_s - r.block_since_s;
+  if (since_s > rp.block_down_s + rp.block_hold_s + 1e-9) {
+    r.block_half_span_m = 0.0;
+    return;
+  }
+  const double down = rp.block_down_s > 0.0 ? std::min(1.0, since_s / rp.block_down_s) : 1.0;
+  r.block_half_span_m = contact_m_ + down * (rp.block_half_span_m - contact_m_);
 }
 
 void Match::Launch(int robot) {
@@ -305,24 +375,32 @@ void Match::Launch(int robot) {
   world_.ball.roll = RollFromOutcome(world_.ball.p_F, outcome, s_.kicks->rolling_deceleration_mps2);
   world_.ball.leaving_kicker = robot;
   last_toucher_ = -1;  // a kick ends a possession: the next touch counts, whoever makes it
+  NoteTouch(robot);
+  result_.counters.attacker_kick_sent = r.side == Side::kAttackers;
+  const Category attacked = s_.attack_sign > 0.0 ? Category::kOppGoal : Category::kOwnGoal;
+  shot_on_target_ = r.side == Side::kAttackers && outcome.category == attacked;
+  result_.counters.shots_on_target += shot_on_target_;
+  if (kick_in_flight_ >= 0) Event(EventKind::kKickEnd, kick_in_flight_, "kick");
+  kick_in_flight_ = robot;
   auto& kicks = r.side == Side::kAttackers ? result_.counters.attacker_kicks
                                            : result_.counters.opponent_kicks;
   ++kicks[static_cast<std::size_t>(r.index)];
   Event(EventKind::kKick, robot, kick.name);
 }
 
-std::optional<TrialOutcome> Match::UpdateTouches() {
+std::optional<TrialOutcome> Match::UpdateTouches(const std::vector<int>& met) {
   std::optional<TrialOutcome> end;
   for (std::size_t i = 0; i < world_.robots.size(); ++i) {
     RobotState& r = world_.robots[i];
     const int robot = static_cast<int>(i);
     const bool touching =
-        world_.ball.holder == robot ||
+        world_.ball.holder == robot || std::find(met.begin(), met.end(), robot) != met.end() ||
         (robot != world_.ball.leaving_kicker &&
          (world_.ball.p_F - r.pose.p_F).norm() <= contact_m_ + s_.sim->touch_tolerance_m);
     // A touch is a contact that begins while another robot (or none) touched the ball last, so
     // a robot jostling a ball it already has counts once (the paper's possession: how often an
     // opponent "touched or kicked the ball").
+    if (touching) NoteTouch(robot);
     if (touching && !r.touching && last_toucher_ != robot) {
       last_toucher_ = robot;
       Event(EventKind::kTouch, robot);
@@ -330,6 +408,7 @@ std::optional<TrialOutcome> Match::UpdateTouches() {
         ++result_.counters.opponent_touches[static_cast<std::size_t>(r.index)];
         if (s_.config->opponents[static_cast<std::size_t>(r.index)].role == OpponentRole::kGoalie) {
           end = TrialOutcome::kBlock;
+          result_.counters.shots_saved += shot_on_target_ && kick_in_flight_ >= 0;
         }
       }
     }

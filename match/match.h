@@ -13,12 +13,16 @@
 //     kick_time_s; kick_launch_s into it the ball leaves through the KickExecutor with a launch
 //     drawn from the kick model); moves follow match/robot_collisions.h (bodies never overlap,
 //     opponents never leave their regions, nobody leaves the carpet);
-//  4. the ball: held, it sits at the holder's front; rolling, it advances and stops dead at the
-//     first body it meets (match/ball_motion.h); resting, a body that walks into it pushes it
-//     out to the body's edge;
-//  5. touches: a robot touches the ball when its body comes within touch_tolerance_m of it (or it
-//     grabs it); a touch counts when another robot (or nobody since the last kick) touched the
-//     ball last; the goalie's touch ends the trial as "block";
+//     A held ball can be taken only by a robot within the holder's steal cone (in front of it);
+//     blocking (a goalie) spreads the body across its heading (RobotParams' block figures);
+//  4. the ball: held, it sits at the holder's front; rolling, it advances and rebounds off the
+//     bodies it meets with the ball-robot restitution (match/match_world.h); resting, a body that
+//     walks into it pushes it out to the body's edge;
+//  5. touches: a robot touches the ball when the ball meets its body, when its body comes within
+//     touch_tolerance_m of it, or when it grabs it; a touch counts when another robot (or nobody
+//     since the last kick) touched the ball last; the goalie's touch ends the trial as "block".
+//     Each kick's own travel ends in a kick_end event (rest, a body, a grab or the trial's end);
+//     the robot that touched the ball last and whether an attacker's kick sent it are recorded;
 //  6. the referee judges the ball's move; the time limit ends the trial as "timeout".
 // Randomness comes from the trial's key only (perception noise, grabs, message loss, kicks), so a
 // trial gives the same result on any thread.
@@ -46,6 +50,8 @@ struct MatchSetup {
   const KickExecutor* executor = nullptr;
   double attack_sign = 1.0;     // +1: the attackers attack the goal at +x
   double trace_period_s = 0.0;  // > 0: record a TraceFrame this often
+  // The ball-robot restitution (models/physics/<field>.json, materials.restitution.ball_robot).
+  double robot_restitution = 0.0;
 };
 
 MatchTrialResult RunTrial(const MatchSetup& setup, const Scenario& scenario, TeamPolicy& attackers,

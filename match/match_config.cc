@@ -62,6 +62,14 @@ void MatchConfig::Validate(const FieldSpec& field, const SimulationParams& sim,
   RequireInRange("time_limit_s", time_limit_s, 1.0, 3600.0);
   RequireInRange("clear_free_distance_m", clear_free_distance_m, 0.0, 5.0);
   RequireInRange("clear_free_cone_deg", clear_free_cone_rad * kRadToDeg, 0.0, 90.0);
+  RequireInRange("clear_direction_margin_sd", clear_direction_margin_sd, 0.0, 5.0);
+  if (HasGoalie()) {
+    RequireInRange("goalie.latency_s", goalie.latency_s, 0.0, 2.0);
+    RequireInRange("goalie.guard_distance_m", goalie.guard_distance_m, 0.0, 1.0);
+    RequireInRange("goalie.walk_speed_mps", goalie.walk_speed_mps, 0.01, robot.walk_speed_mps);
+    RequireInRange("goalie.block_earliest_s", goalie.block_earliest_s, robot.block_down_s, 10.0);
+    RequireInRange("goalie.block_refractory_s", goalie.block_refractory_s, 0.0, 60.0);
+  }
   RequireInRange("default_trials", default_trials, 1, 1000000);
   if (opponents.empty()) throw InputError("opponents: must list at least one opponent");
   for (std::size_t i = 0; i < opponents.size(); ++i) {
@@ -96,6 +104,11 @@ void MatchConfig::Validate(const FieldSpec& field, const SimulationParams& sim,
   }
 }
 
+bool MatchConfig::HasGoalie() const {
+  return std::any_of(opponents.begin(), opponents.end(),
+                     [](const OpponentSpec& o) { return o.role == OpponentRole::kGoalie; });
+}
+
 MatchConfig MatchConfig::Mirrored() const {
   MatchConfig m = *this;
   for (OpponentSpec& o : m.opponents) o.region = o.region.MirroredX();
@@ -114,19 +127,28 @@ MatchConfig LoadMatchConfig(const std::string& reference, const std::filesystem:
   c.file = ResolveModelFile(reference, DataFolder::kMatch, ".", models_dir);
   const JsonDocument doc = JsonDocument::Load(c.file);
   const JsonObject root = doc.Root();
-  root.RejectUnknownKeys({"name", "sources", "opponents", "clear_kick", "clear_free_distance_m",
+  root.RejectUnknownKeys({"name", "notes", "sources", "opponents", "clear_kick",
+                          "clear_side_kicks", "clear_direction_margin_sd", "clear_free_distance_m",
                           "clear_free_cone_deg", "penalty_area_ends_trial", "time_limit_s",
-                          "default_trials", "scenarios"});
-  RequireSources(root, {"opponents", "clear_free_distance_m", "clear_free_cone_deg", "time_limit_s",
-                        "default_trials", "scenarios"});
+                          "time_limit_kind", "goalie", "default_trials", "scenarios"});
+  std::vector<std::string_view> figures{
+      "opponents",       "clear_side_kicks", "clear_direction_margin_sd", "clear_free_distance_m",
+      "clear_free_cone_deg", "time_limit_s", "default_trials",            "scenarios"};
   c.name = root.String("name");
   c.clear_kick = root.String("clear_kick");
+  c.clear_side_kicks = root.StringArray("clear_side_kicks");
+  c.clear_direction_margin_sd = root.Number("clear_direction_margin_sd");
   c.clear_free_distance_m = root.Number("clear_free_distance_m");
   c.clear_free_cone_rad = root.Number("clear_free_cone_deg") * kDegToRad;
   const std::string ends = root.String("penalty_area_ends_trial");
   if (ends != "yes" && ends != "no") root.Fail("penalty_area_ends_trial", "must be yes or no");
   c.penalty_area_ends_trial = ends == "yes";
   c.time_limit_s = root.Number("time_limit_s");
+  const std::string kind = root.String("time_limit_kind");
+  if (kind != "timeout" && kind != "safety_cap") {
+    root.Fail("time_limit_kind", "must be timeout or safety_cap");
+  }
+  c.time_limit_is_safety_cap = kind == "safety_cap";
   c.default_trials = root.Integer("default_trials");
   for (const JsonObject& o : root.ObjectArray("opponents")) {
     o.RejectUnknownKeys({"name", "role", "region"});
@@ -137,6 +159,18 @@ MatchConfig LoadMatchConfig(const std::string& reference, const std::filesystem:
     spec.role = role == "goalie" ? OpponentRole::kGoalie : OpponentRole::kDefender;
     spec.region = ReadFieldBox(o.Object("region"));
     c.opponents.push_back(spec);
+  }
+  if (c.HasGoalie()) figures.push_back("goalie");
+  RequireSources(root, figures);
+  if (c.HasGoalie()) {
+    const JsonObject g = root.Object("goalie");
+    g.RejectUnknownKeys({"latency_s", "guard_distance_m", "walk_speed_mps", "block_earliest_s",
+                         "block_refractory_s"});
+    c.goalie.latency_s = g.Number("latency_s");
+    c.goalie.guard_distance_m = g.Number("guard_distance_m");
+    c.goalie.walk_speed_mps = g.Number("walk_speed_mps");
+    c.goalie.block_earliest_s = g.Number("block_earliest_s");
+    c.goalie.block_refractory_s = g.Number("block_refractory_s");
   }
   const auto names = root.StringArray("scenarios");
   if (names.empty()) root.Fail("scenarios", "must list at least one scenario");

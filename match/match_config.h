@@ -39,17 +39,40 @@ struct Scenario {
   std::vector<Pose2> opponents;  // in the configuration's order
 };
 
+// How the goalie plays (match/goalie.h): it sees the ball latency_s late (vision and
+// decision), stands on the line from the ball to its goal's centre guard_distance_m in front of
+// the goal line (as far as its region allows), walks there at most at walk_speed_mps, and blocks
+// a ball its block would stop that arrives within block_earliest_s, at most once every
+// block_refractory_s.
+struct GoalieParams {
+  double latency_s = 0.0;
+  double guard_distance_m = 0.0;
+  double walk_speed_mps = 0.0;
+  double block_earliest_s = 0.0;
+  double block_refractory_s = 0.0;
+};
+
 struct MatchConfig {
   std::filesystem::path file;
   std::string name;  // "dg", "2d"
   std::vector<OpponentSpec> opponents;
   std::string clear_kick;  // the kick the opponents clear the ball with
+  // Kicks a defender may clear with when they send the ball away from its goal without turning
+  // (e.g. head kicks to the side for a defender facing its own goal).
+  std::vector<std::string> clear_side_kicks;
+  // A clearance's mean direction keeps this many of its kick's direction sd inside the half of
+  // the plane away from the defender's own goal.
+  double clear_direction_margin_sd = 0.0;
   // A holder turns with the ball while a body stands within clear_free_distance_m and
   // clear_free_cone_rad of its kick's line (at most until the ball-holding rule makes it kick).
   double clear_free_distance_m = 0.0;
   double clear_free_cone_rad = 0.0;
   bool penalty_area_ends_trial = false;
   double time_limit_s = 0.0;
+  // true: the time limit is only a safety cap the paper's protocol does not have (DG: "no
+  // timeout"); reports count the trials it ended apart. false: the paper's timeout (2D).
+  bool time_limit_is_safety_cap = false;
+  GoalieParams goalie;  // read when an opponent is a goalie
   int default_trials = 0;
   std::vector<Scenario> scenarios;  // scenario 1..n in order
 
@@ -60,6 +83,7 @@ struct MatchConfig {
   // The same configuration for attackers attacking the goal at -x: every x negated and every
   // heading mirrored, y kept (a mirror in the y axis).
   MatchConfig Mirrored() const;
+  bool HasGoalie() const;
 };
 
 // `reference` is a bare name in MODELS/match/ ("dg") or a path ending in ".json"; scenario

@@ -22,6 +22,11 @@ void RobotParams::Validate() const {
   RequireInRange("kick_time_s", kick_time_s, 0.0, 10.0);
   RequireInRange("kick_launch_s", kick_launch_s, 0.0, kick_time_s);
   RequireInRange("steal_success_rate", steal_success_rate, 0.0, 1.0);
+  RequireInRange("steal_cone_deg", steal_cone_rad * kRadToDeg, 0.0, 180.0);
+  RequireInRange("block_half_span_m", block_half_span_m, body_radius_m, 1.0);  // >= contact
+  RequireInRange("block_down_s", block_down_s, 0.0, 5.0);
+  RequireInRange("block_hold_s", block_hold_s, 0.0, 10.0);
+  RequireInRange("block_recover_s", block_recover_s, 0.0, 10.0);
 }
 
 void SimulationParams::Validate() const {
@@ -45,11 +50,14 @@ RobotParams LoadRobotParams(const std::string& reference, const std::filesystem:
   root.RejectUnknownKeys(
       {"name", "sources", "body_radius_m", "walk_speed_mps", "turn_speed_deg_per_s",
        "dribble_speed_mps", "dribble_turn_speed_deg_per_s", "grab_reach_m", "grab_cone_deg",
-       "grab_time_s", "grab_failure_rate", "kick_time_s", "kick_launch_s", "steal_success_rate"});
+       "grab_time_s", "grab_failure_rate", "kick_time_s", "kick_launch_s", "steal_success_rate",
+       "steal_cone_deg", "block_half_span_m", "block_down_s", "block_hold_s", "block_recover_s"});
   RequireSources(root,
                  {"body_radius_m", "walk_speed_mps", "turn_speed_deg_per_s", "dribble_speed_mps",
                   "dribble_turn_speed_deg_per_s", "grab_reach_m", "grab_cone_deg", "grab_time_s",
-                  "grab_failure_rate", "kick_time_s", "kick_launch_s", "steal_success_rate"});
+                  "grab_failure_rate", "kick_time_s", "kick_launch_s", "steal_success_rate",
+                  "steal_cone_deg", "block_half_span_m", "block_down_s", "block_hold_s",
+                  "block_recover_s"});
   RobotParams p;
   p.name = root.String("name");
   p.body_radius_m = root.Number("body_radius_m");
@@ -64,6 +72,11 @@ RobotParams LoadRobotParams(const std::string& reference, const std::filesystem:
   p.kick_time_s = root.Number("kick_time_s");
   p.kick_launch_s = root.Number("kick_launch_s");
   p.steal_success_rate = root.Number("steal_success_rate");
+  p.steal_cone_rad = root.Number("steal_cone_deg") * kDegToRad;
+  p.block_half_span_m = root.Number("block_half_span_m");
+  p.block_down_s = root.Number("block_down_s");
+  p.block_hold_s = root.Number("block_hold_s");
+  p.block_recover_s = root.Number("block_recover_s");
   WithFile(file.string(), [&] { p.Validate(); });
   return p;
 }

@@ -8,8 +8,12 @@
 //   at dribble_turn_speed_radps. It grabs a ball whose centre lies within grab_reach_m of its
 //   front (the body's edge) and within grab_cone_rad of straight ahead; a grab takes
 //   grab_time_s and fails with grab_failure_rate; grabbing a ball another robot holds (a steal)
-//   then also needs steal_success_rate. A kick takes kick_time_s standing still; the ball leaves
-//   kick_launch_s after its start.
+//   then also needs steal_success_rate, and is possible only from within steal_cone_rad of the
+//   holder's heading (the held ball lies under its chin, covered by head and forelegs from the
+//   sides and behind). A kick takes kick_time_s standing still; the ball leaves kick_launch_s
+//   after its start. A block (a goalie's) spreads the body across its heading until it stops a
+//   ball whose centre passes within block_half_span_m either side of its centre, over block_down_s, holds for block_hold_s and
+//   takes block_recover_s to get up; the robot cannot move meanwhile.
 // simulation (models/match/simulation.json): the field, kick model and robot by name; the
 //   control step; perception noise (Gaussian sigmas on the perceived ball and other robots,
 //   0 = the paper's noiseless simulator); message latency and loss; the referee's "close"
@@ -40,6 +44,11 @@ struct RobotParams {
   double kick_time_s = 0.0;
   double kick_launch_s = 0.0;
   double steal_success_rate = 0.0;
+  double steal_cone_rad = 0.0;
+  double block_half_span_m = 0.0;
+  double block_down_s = 0.0;
+  double block_hold_s = 0.0;
+  double block_recover_s = 0.0;
 
   void Validate() const;
 };

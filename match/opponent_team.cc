@@ -2,12 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "common/error.h"
-#include "match/robot_motion.h"
 #include "models/walk_command.h"
 
 namespace foresight {
+
+namespace {
+constexpr double kFree = std::numeric_limits<double>::infinity();
+// Candidate headings of a turn with the ball are this far apart: finer than any kick's spread.
+constexpr double kHeadingStepRad = kPi / 180.0;
+}  // namespace
 
 int RequireKick(const KickModel& kicks, const std::string& name, const std::string& file,
                 const std::string& field) {
@@ -19,77 +25,127 @@ int RequireKick(const KickModel& kicks, const std::string& name, const std::stri
   return *index;
 }
 
-OpponentTeam::OpponentTeam(const MatchConfig& config, const KickModel& kicks,
-                           const RobotParams& robot, double ball_radius_m,
+OpponentTeam::OpponentTeam(const MatchConfig& config, const FieldSpec& field,
+                           const KickModel& kicks, const RobotParams& robot,
                            const SimulationParams& sim)
     : config_(&config),
-      clear_kick_(RequireKick(kicks, config.clear_kick, config.file.string(), "clear_kick")),
-      contact_m_(robot.body_radius_m + ball_radius_m),
+      kicks_(&kicks),
+      contact_m_(robot.body_radius_m + field.ball.radius_m),
       grab_reach_m_(robot.grab_reach_m),
       grab_cone_rad_(robot.grab_cone_rad),
       dt_s_(sim.control_step_s),
       release_after_s_(sim.ball_holding_limit_s - robot.kick_launch_s),
-      memory_(config.opponents.size()) {}
+      memory_(config.opponents.size()) {
+  const std::string file = config.file.string();
+  clear_kicks_.push_back(RequireKick(kicks, config.clear_kick, file, "clear_kick"));
+  for (std::size_t i = 0; i < config.clear_side_kicks.size(); ++i) {
+    clear_kicks_.push_back(RequireKick(kicks, config.clear_side_kicks[i], file,
+                                       "clear_side_kicks[" + std::to_string(i) + "]"));
+  }
+  for (const OpponentSpec& spec : config.opponents) {
+    goalies_.emplace_back(config.goalie, spec.region, field, robot, kicks.rolling_deceleration_mps2,
+                          sim.control_step_s);
+  }
+}
 
-RobotCommand OpponentTeam::Clear(Memory& m, const Perception& p) const {
-  const Vec2 ahead = UnitVector(p.pose.theta_rad);
-  const Pose2* blocker = nullptr;
-  double nearest_m = config_->clear_free_distance_m;
+double OpponentTeam::BlockedAt(const Perception& p, double heading_rad) const {
+  const Vec2 ahead = UnitVector(heading_rad);
+  double nearest_m = kFree;
   auto consider = [&](const Pose2& other) {
     const Vec2 to = other.p_F - p.p_F_ball;
     const double distance = to.norm();
-    if (distance >= nearest_m || distance < 1e-9) return;
+    if (distance >= config_->clear_free_distance_m || distance < 1e-9) return;
     if (std::acos(std::clamp(to.dot(ahead) / distance, -1.0, 1.0)) > config_->clear_free_cone_rad) {
       return;
     }
-    nearest_m = distance;
-    blocker = &other;
+    nearest_m = std::min(nearest_m, distance);
   };
   for (std::size_t i = 0; i < p.teammates.size(); ++i) {
     if (static_cast<int>(i) != p.self) consider(p.teammates[i]);
   }
   for (const Pose2& o : p.opponents) consider(o);
-  if (blocker == nullptr || p.time_s - m.holding_since_s >= release_after_s_) {
-    RobotCommand kick;
-    kick.kind = CommandKind::kKick;
-    kick.kick_index = clear_kick_;
+  return nearest_m;
+}
+
+bool OpponentTeam::SafeDirection(const Perception& p, double heading_rad, int kick) const {
+  const double upfield_rad = p.attack_sign > 0.0 ? 0.0 : kPi;
+  const double sigma_rad = kicks_->kicks[static_cast<std::size_t>(kick)].sigma_direction_rad;
+  const double widest_rad = 0.5 * kPi - config_->clear_direction_margin_sd * sigma_rad;
+  return std::abs(WrapAngle(heading_rad - upfield_rad)) <= widest_rad;
+}
+
+RobotCommand OpponentTeam::Clear(Memory& m, const Perception& p) const {
+  const double theta = p.pose.theta_rad;
+  auto kick_heading = [&](int kick) {
+    return theta + kicks_->kicks[static_cast<std::size_t>(kick)].direction_rad;
+  };
+  RobotCommand kick;
+  kick.kind = CommandKind::kKick;
+  for (int k : clear_kicks_) {  // a safe, free kick now: the clear kick first
+    if (SafeDirection(p, kick_heading(k), k) && BlockedAt(p, kick_heading(k)) == kFree) {
+      kick.kick_index = k;
+      return kick;
+    }
+  }
+  if (p.time_s - m.holding_since_s >= release_after_s_) {
+    // The rule makes it kick: unblocked before blocked, then the most upfield.
+    const double upfield_rad = p.attack_sign > 0.0 ? 0.0 : kPi;
+    double best = -kFree;
+    for (int k : clear_kicks_) {
+      const double score = (BlockedAt(p, kick_heading(k)) == kFree ? 2.0 : 0.0) +
+                           std::cos(WrapAngle(kick_heading(k) - upfield_rad));
+      if (score > best) {
+        best = score;
+        kick.kick_index = k;
+      }
+    }
     return kick;
   }
-  // Turn away from the blocker: the side it is not on (ties turn counter-clockwise when the
-  // robot faces +x, clockwise when it faces -x, so the mirrored game turns alike).
-  double side = WrapAngle(HeadingTowards(p.p_F_ball, blocker->p_F) - p.pose.theta_rad);
-  if (std::abs(side) < 1e-9) side = std::cos(p.pose.theta_rad) >= 0.0 ? -1.0 : 1.0;
-  RobotCommand turn;
-  turn.kind = CommandKind::kWalk;
-  turn.turn_radps = (side > 0.0 ? -1.0 : 1.0) * kPi / dt_s_;
-  return turn;
+  // Turn with the ball towards the nearest safe, free heading of the clear kick.
+  const int clear = clear_kicks_.front();
+  const double clear_dir = kicks_->kicks[static_cast<std::size_t>(clear)].direction_rad;
+  const double side_y = p.p_F_ball.y() >= -1e-9 ? 1.0 : -1.0;  // the nearer side line's sign
+  double target = p.attack_sign > 0.0 ? 0.0 : kPi;  // upfield when no heading is free
+  for (int step = 0; step <= 180; ++step) {
+    const double turn = step * kHeadingStepRad;
+    double first = theta + clear_dir + turn, second = theta + clear_dir - turn;
+    if (std::sin(second) * side_y > std::sin(first) * side_y) std::swap(first, second);
+    const double* found = nullptr;
+    for (const double* heading : {&first, &second}) {
+      if (found == nullptr && SafeDirection(p, *heading, clear) && BlockedAt(p, *heading) == kFree) {
+        found = heading;
+      }
+    }
+    if (found != nullptr) {
+      target = *found - clear_dir;
+      break;
+    }
+  }
+  return TurnTowards(p.pose, target, dt_s_);
+}
+
+RobotCommand OpponentTeam::Defend(const Perception& p) const {
+  const FieldBox& region = config_->opponents[static_cast<std::size_t>(p.self)].region;
+  const Vec2& ball = p.p_F_ball;
+  // The ball counts as in the region when the robot can grab it from inside: a ball held one
+  // body length outside the boundary would otherwise stay out of play in front of it forever.
+  if ((region.Clamp(ball) - ball).norm() > contact_m_ + grab_reach_m_) {
+    return WalkTowards(p.pose, region.Clamp(ball), HeadingTowards(p.pose.p_F, ball), dt_s_);
+  }
+  return GoForBallInRegion(p, region, contact_m_, grab_reach_m_, grab_cone_rad_, dt_s_);
 }
 
 RobotCommand OpponentTeam::Decide(const Perception& p) {
-  RobotCommand command;
-  Memory& m = memory_[static_cast<std::size_t>(p.self)];
+  const std::size_t self = static_cast<std::size_t>(p.self);
+  Memory& m = memory_[self];
   if (p.holding_ball && !m.was_holding) m.holding_since_s = p.time_s;
   m.was_holding = p.holding_ball;
-  if (p.busy) return command;
+  if (config_->opponents[self].role == OpponentRole::kGoalie && !p.holding_ball) {
+    return goalies_[self].Decide(p);  // it sees every step, busy or not
+  }
+  if (p.busy) return {};
   if (p.holding_ball) return Clear(m, p);
-  const FieldBox& region = config_->opponents[static_cast<std::size_t>(p.self)].region;
-  const Vec2& ball = p.p_F_ball;
-  const double face_rad = HeadingTowards(p.pose.p_F, ball);
-  // The ball counts as in the region when the robot can grab it from inside: a ball held one
-  // body length outside the boundary would otherwise stay out of play in front of it forever.
-  const double reach_m = contact_m_ + grab_reach_m_;
-  if ((region.Clamp(ball) - ball).norm() > reach_m) {
-    return WalkTowards(p.pose, region.Clamp(ball), face_rad, dt_s_);
-  }
-  const Vec2 to_ball = ball - p.pose.p_F;
-  const double distance = to_ball.norm();
-  if (distance <= reach_m && std::abs(BearingTo(p.pose, ball)) <= grab_cone_rad_) {
-    command.kind = CommandKind::kGetBall;
-    return command;
-  }
-  const double stop_m = contact_m_ + 0.5 * grab_reach_m_;
-  const Vec2 approach = distance > stop_m ? Vec2(ball - stop_m * to_ball / distance) : p.pose.p_F;
-  return WalkTowards(p.pose, region.Clamp(approach), face_rad, dt_s_);
+  return Defend(p);
 }
 
 }  // namespace foresight

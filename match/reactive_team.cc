@@ -32,7 +32,6 @@ void ReactiveParams::Validate() const {
   RequireInRange("back_off_release_m", back_off_release_m, 0.0, 5.0);
   RequireInRange("support_behind_m", support_behind_m, -5.0, 5.0);
   RequireInRange("support_side_m", support_side_m, 0.0, 5.0);
-  RequireInRange("claim_margin_m", claim_margin_m, 0.0, 5.0);
   if (role_regions.size() < 2) {
     throw InputError("role_regions: must give one region per attacker (2), got " +
                      std::to_string(role_regions.size()));
@@ -49,12 +48,12 @@ ReactiveParams LoadReactiveParams(const std::string& reference,
   const JsonObject root = doc.Root();
   root.RejectUnknownKeys({"name", "sources", "dodge_radius_m", "dodge_angle_deg", "shoot_kick",
                           "aim_tolerance_deg", "back_off_distance_m", "back_off_release_m",
-                          "support_behind_m", "support_side_m", "claim_margin_m", "role_regions",
+                          "support_behind_m", "support_side_m", "role_regions",
                           "message_period_s", "report_stale_s"});
   RequireSources(root,
                  {"dodge_radius_m", "dodge_angle_deg", "shoot_kick", "aim_tolerance_deg",
                   "back_off_distance_m", "back_off_release_m", "support_behind_m", "support_side_m",
-                  "claim_margin_m", "role_regions", "message_period_s", "report_stale_s"});
+                  "role_regions", "message_period_s", "report_stale_s"});
   p.dodge_radius_m = root.Number("dodge_radius_m");
   p.dodge_angle_rad = root.Number("dodge_angle_deg") * kDegToRad;
   p.shoot_kick = root.String("shoot_kick");
@@ -63,7 +62,6 @@ ReactiveParams LoadReactiveParams(const std::string& reference,
   p.back_off_release_m = root.Number("back_off_release_m");
   p.support_behind_m = root.Number("support_behind_m");
   p.support_side_m = root.Number("support_side_m");
-  p.claim_margin_m = root.Number("claim_margin_m");
   for (const JsonObject& o : root.ObjectArray("role_regions")) {
     p.role_regions.push_back(ReadFieldBox(o));
   }
@@ -88,27 +86,22 @@ ReactiveTeam::ReactiveTeam(const ReactiveParams& params, const FieldSpec& field,
   shoot_range_m_ = StopDistance(shoot.speed_mps, kicks.rolling_deceleration_mps2);
 }
 
-bool ReactiveTeam::ChooseChasing(Memory& m, const Perception& p, double distance_m) const {
+bool ReactiveTeam::ChooseChasing(Memory& m, const Perception& p) const {
   for (const TeamMessage& msg : p.inbox) {
     m.heard = true;
     m.mate_kind = msg.kind;
-    m.mate_distance_m = msg.value;
     m.mate_time_s = msg.sent_time_s;
   }
   if (p.holding_ball) return true;
+  // Everyone goes after the ball unless a teammate says it owns it.
   const bool fresh = m.heard && p.time_s - m.mate_time_s <= params_.report_stale_s;
-  if (!fresh) return true;
-  if (m.mate_kind == kHolding) return false;
-  if (distance_m < m.mate_distance_m - params_.claim_margin_m) return true;
-  if (distance_m > m.mate_distance_m + params_.claim_margin_m) return false;
-  if (m.mate_kind == kSupporting) return true;
-  return m.chasing && p.self < 1;  // both chasing within the margin: robot 0 keeps the ball
+  return !(fresh && m.mate_kind == kHolding);
 }
 
 RobotCommand ReactiveTeam::Decide(const Perception& p) {
   Memory& m = memory_[static_cast<std::size_t>(p.self)];
   const double distance_m = (p.p_F_ball - p.pose.p_F).norm();
-  const bool chasing = ChooseChasing(m, p, distance_m);
+  const bool chasing = ChooseChasing(m, p);
   if (chasing || p.holding_ball) m.backing_up = false;
   if (p.holding_ball && !m.was_holding) m.holding_since_s = p.time_s;
   m.was_holding = p.holding_ball;
@@ -125,7 +118,10 @@ RobotCommand ReactiveTeam::Decide(const Perception& p) {
   const int kind = p.holding_ball ? kHolding : (chasing ? kChasing : kSupporting);
   const bool changed = chasing != m.chasing;
   m.chasing = chasing;
-  if (changed || p.time_s - m.last_report_s >= params_.message_period_s - 1e-9) {
+  const bool took_or_released = p.holding_ball != m.was_holding_reported;
+  m.was_holding_reported = p.holding_ball;
+  if (changed || took_or_released ||
+      p.time_s - m.last_report_s >= params_.message_period_s - 1e-9) {
     command.message = TeamMessage{p.self, p.time_s, kind, p.pose.p_F, distance_m};
     m.last_report_s = p.time_s;
   }

@@ -6,12 +6,12 @@
 // left) while grabbing the ball"; passes happen only by chance.
 //
 // Each robot, from its own perception and its teammate's messages only:
-//  - role: it chases the ball when it holds it, when its teammate's last report (distance to the
-//    ball, chasing or holding) is missing or older than report_stale_s, or when it is nearer to
-//    the ball than the teammate by more than claim_margin_m (within the margin it keeps its last
-//    role; at the start, when neither has heard of the other, both chase). A teammate that
-//    reports holding the ball is never challenged. It reports its role and distance when the
-//    role changes and every message_period_s.
+//  - role: every robot chases the ball (the paper: "the robots always try to go after the ball as
+//    fast as possible"; after a kick "both robots will try to get near to the ball", sec. 5.2.1)
+//    unless its teammate's last report, at most report_stale_s old, says the teammate holds the
+//    ball: the owner has notified the team, and the robot supports. It reports its role (holding,
+//    chasing, supporting) when it changes, when it takes or releases the ball, and every
+//    message_period_s.
 //  - chaser without the ball: get the ball.
 //  - holder: turns towards the attacked goal's centre and walks with the ball; with an opponent
 //    within dodge_radius_m of the ball it walks dodge_angle_deg off that line, away from the
@@ -20,8 +20,8 @@
 //    distance (v^2 / 2a of the kick model) and it faces the goal within aim_tolerance_deg, and
 //    the same kick forward when the ball would otherwise leave after the simulation's
 //    ball-holding limit (held for the limit minus the kick's kick_launch_s).
-//  - supporter: backs up (walks away from the ball, the "backing up" of Table 2) once it is
-//    nearer than back_off_distance_m to the ball, until it is back_off_release_m further; otherwise
+//  - supporter (a teammate owns the ball): backs up (walks away from the ball, the "backing up" of
+//    Table 2) while it is nearer than back_off_distance_m to the ball, until it is back_off_release_m further; otherwise
 //    it walks to the support point support_behind_m behind the ball and support_side_m to its own
 //    side, facing the ball, clamped to its role's region (role_regions, one per robot: the roles
 //    keep each supporter in its region; the chaser goes wherever the ball is).
@@ -48,7 +48,6 @@ struct ReactiveParams {
   double back_off_release_m = 0.0;
   double support_behind_m = 0.0;
   double support_side_m = 0.0;
-  double claim_margin_m = 0.0;
   std::vector<FieldBox> role_regions;  // per robot, for attacking +x (x mirrored for -x)
   double message_period_s = 0.0;
   double report_stale_s = 0.0;
@@ -71,14 +70,14 @@ class ReactiveTeam final : public TeamPolicy {
     bool chasing = false;
     bool heard = false;
     int mate_kind = 0;
-    double mate_distance_m = 0.0;
     double mate_time_s = 0.0;
     double last_report_s = -1e9;
     bool was_holding = false;
+    bool was_holding_reported = false;
     bool backing_up = false;
     double holding_since_s = 0.0;
   };
-  bool ChooseChasing(Memory& m, const Perception& p, double distance_m) const;
+  bool ChooseChasing(Memory& m, const Perception& p) const;
   RobotCommand Hold(Memory& m, const Perception& p) const;
   RobotCommand Support(Memory& m, const Perception& p, double distance_m) const;
 

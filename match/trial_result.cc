@@ -15,7 +15,7 @@ inline constexpr EnumNames<TrialOutcome, kTrialOutcomeCount> kOutcomeNames{{{
     {TrialOutcome::kTimeout, "timeout"},
 }}};
 
-inline constexpr EnumNames<EventKind, 9> kEventNames{{{
+inline constexpr EnumNames<EventKind, 10> kEventNames{{{
     {EventKind::kGrab, "grab"},
     {EventKind::kGrabFailed, "grab_failed"},
     {EventKind::kSteal, "steal"},
@@ -25,6 +25,7 @@ inline constexpr EnumNames<EventKind, 9> kEventNames{{{
     {EventKind::kMessageLost, "message_lost"},
     {EventKind::kBackUp, "back_up"},
     {EventKind::kEnd, "end"},
+    {EventKind::kKickEnd, "kick_end"},
 }}};
 
 inline constexpr EnumNames<Side, 2> kSideNames{

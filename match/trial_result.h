@@ -34,6 +34,10 @@ enum class EventKind : std::uint8_t {
   kMessageLost,  // a message was lost
   kBackUp,       // an attacker began backing up
   kEnd,          // the trial ended (detail: the outcome)
+  // A kick's own travel ended (robot: the kicker; detail: "rest", "body" when it met a robot,
+  // "grab" when one took it, "end" when the trial ended first). With the kick event before it,
+  // it gives how far and which way the kick moved the ball.
+  kKickEnd,
 };
 std::string_view EventKindName(EventKind kind);
 
@@ -62,6 +66,17 @@ struct TrialCounters {
   int kicks_missed = 0;
   int kicks_not_settled = 0;
   double time_s = 0.0;
+  // Who caused the end: the robot that last touched, grabbed or kicked the ball (side -1: no
+  // robot ever did), and whether the last kick was an attacker's with no opponent touching the
+  // ball after it ("to goal by the attackers").
+  int last_touch_side = -1;
+  int last_touch_robot = -1;
+  bool attacker_kick_sent = false;
+  // Attackers' kicks whose roll, had no robot been in its way, would have entered the attacked
+  // goal (the executor's outcome: the coarse roll through posts and nets), and how many of them
+  // the goalie touched before their travel ended (saves).
+  int shots_on_target = 0;
+  int shots_saved = 0;
 };
 
 // Every robot and the ball at one time (attackers first, then opponents).

@@ -58,7 +58,7 @@ void KickModel::Validate() const {
 KickModel LoadKickModel(const std::filesystem::path& file) {
   JsonDocument doc = JsonDocument::Load(file);
   JsonObject root = doc.Root();
-  root.RejectUnknownKeys({"robot", "rolling_deceleration_mps2", "kicks"});
+  root.RejectUnknownKeys({"robot", "rolling_deceleration_mps2", "kicks", "sources"});
   KickModel model;
   model.robot = root.String("robot");
   model.rolling_deceleration_mps2 = root.Number("rolling_deceleration_mps2");
@@ -73,6 +73,12 @@ KickModel LoadKickModel(const std::filesystem::path& file) {
     kick.sigma_direction_rad = item.Number("sigma_direction_deg") * kDegToRad;
     kick.launch_offset_m = item.NumberOr("launch_offset_m", 0.0);  // the paper's models: none
     model.kicks.push_back(kick);
+  }
+  // A model from published figures names the source of each kick and of the deceleration.
+  if (root.Has("sources")) {
+    std::vector<std::string_view> figures{"rolling_deceleration_mps2"};
+    for (const KickSpec& kick : model.kicks) figures.push_back(kick.name);
+    RequireSources(root, figures);
   }
   WithFile(file.string(), [&] { model.Validate(); });
   return model;

@@ -5,11 +5,12 @@
 namespace foresight {
 
 namespace {
-inline constexpr EnumNames<CommandKind, 4> kCommandKindNames{{{
+inline constexpr EnumNames<CommandKind, 5> kCommandKindNames{{{
     {CommandKind::kStand, "stand"},
     {CommandKind::kWalk, "walk"},
     {CommandKind::kGetBall, "get_ball"},
     {CommandKind::kKick, "kick"},
+    {CommandKind::kBlock, "block"},
 }}};
 }  // namespace
 

@@ -159,7 +159,7 @@ TEST_F(ExperimentCommandTest, PassingWritesJsonCsvEventsAndFigures) {
 TEST_F(ExperimentCommandTest, PassingBadScenarioOrParameterFileIsOneLineExitTwoAndNoFolder) {
   const std::string dg = ReadFile(fs::path(FORESIGHT_TEST_MODELS_DIR) / "match" / "dg.json");
   const fs::path bad_time = Write(
-      "bad_time.json", foresight::testing::ReplaceOnce(dg, "\"time_limit_s\": 120.0",
+      "bad_time.json", foresight::testing::ReplaceOnce(dg, "\"time_limit_s\": 600.0",
                                                        "\"time_limit_s\": -1"));
   ExpectBadInput({"passing", "--config", bad_time.string(), "--out", "out"},
                  bad_time.string() + ": time_limit_s: must be");

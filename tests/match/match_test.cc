@@ -122,7 +122,7 @@ TEST_F(MatchTest, SameKeySameTrialOtherKeyOtherTrial) {
   setup_.config = &dg;
   auto play = [&](std::uint64_t key) {
     ReactiveTeam attackers(reactive, field_, aibo, robot_, sim_, 2);
-    OpponentTeam opponents(dg, aibo, robot_, field_.ball.radius_m, sim_);
+    OpponentTeam opponents(dg, field_, aibo, robot_, sim_);
     return RunTrial(setup_, dg.scenarios[2], attackers, opponents, key);
   };
   const MatchTrialResult a = play(11), b = play(11), c = play(12);

@@ -39,7 +39,7 @@ TEST(OpponentTeamTest, OpponentsNeverLeaveTheirRegions) {
       for (std::size_t s = 0; s < config.scenarios.size(); ++s) {
         for (int trial = 0; trial < 10; ++trial) {
           ReactiveTeam attackers(reactive, field, kicks, robot, sim, 2);
-          OpponentTeam opponents(config, kicks, robot, field.ball.radius_m, sim);
+          OpponentTeam opponents(config, field, kicks, robot, sim);
           const MatchTrialResult r = RunTrial(setup, config.scenarios[s], attackers, opponents,
                                               StreamKey(5, s * 100 + trial));
           for (int t : r.counters.opponent_touches) touches += t;
@@ -87,7 +87,7 @@ class OpponentDecisionTest : public ::testing::Test {
 };
 
 TEST_F(OpponentDecisionTest, WaitsOnTheBoundaryNearestTheBallFacingIt) {
-  OpponentTeam team(config_, kicks_, robot_, field_.ball.radius_m, sim_);
+  OpponentTeam team(config_, field_, kicks_, robot_, sim_);
   const Pose2 at{Vec2(0.5, 0.0), kPi};
   const RobotCommand c = team.Decide(See(at, Vec2(-1.5, 0.8)));
   ASSERT_EQ(c.kind, CommandKind::kWalk);
@@ -99,7 +99,7 @@ TEST_F(OpponentDecisionTest, WaitsOnTheBoundaryNearestTheBallFacingIt) {
 }
 
 TEST_F(OpponentDecisionTest, GrabsABallInReachAndClearsOrTurnsAwayFromABlocker) {
-  OpponentTeam team(config_, kicks_, robot_, field_.ball.radius_m, sim_);
+  OpponentTeam team(config_, field_, kicks_, robot_, sim_);
   const Pose2 at{Vec2(1.0, 0.0), kPi};
   const Vec2 ball = at.ToField(Vec2(robot_.body_radius_m + field_.ball.radius_m + 0.01, 0.0));
   EXPECT_EQ(team.Decide(See(at, ball)).kind, CommandKind::kGetBall);
@@ -115,6 +115,37 @@ TEST_F(OpponentDecisionTest, GrabsABallInReachAndClearsOrTurnsAwayFromABlocker) 
   // ... but not beyond the holding limit.
   holding.time_s = sim_.ball_holding_limit_s - robot_.kick_launch_s + 0.04;
   EXPECT_EQ(team.Decide(holding).kind, CommandKind::kKick);
+}
+
+TEST_F(OpponentDecisionTest, ADefenderFacingItsOwnGoalNeverClearsTowardsIt) {
+  OpponentTeam team(config_, field_, kicks_, robot_, sim_);
+  // Attackers attack +x, so the defenders' own goal is at +x: this one faces it, holding the ball.
+  const Pose2 at{Vec2(1.0, 0.3), 0.0};
+  Perception holding = See(at, at.ToField(Vec2(robot_.body_radius_m + field_.ball.radius_m, 0.0)));
+  holding.holding_ball = true;
+  const RobotCommand first = team.Decide(holding);
+  ASSERT_EQ(first.kind, CommandKind::kWalk);  // turns with the ball: no kick points away enough
+  EXPECT_GT(first.turn_radps, 0.0);           // towards the side line the ball is nearer (+y)
+  // When the holding rule makes it kick, it kicks the kick that points most upfield: a head
+  // kick to the side, never the forward kick at its own goal.
+  holding.time_s = sim_.ball_holding_limit_s - robot_.kick_launch_s + 0.04;
+  const RobotCommand kick = team.Decide(holding);
+  ASSERT_EQ(kick.kind, CommandKind::kKick);
+  EXPECT_NE(kicks_.kicks[static_cast<std::size_t>(kick.kick_index)].name, config_.clear_kick);
+}
+
+TEST_F(OpponentDecisionTest, ADefenderFacingUpfieldClearsAtOnceUnlessABodyBlocksTheLine) {
+  OpponentTeam team(config_, field_, kicks_, robot_, sim_);
+  const Pose2 at{Vec2(1.0, 0.0), kPi};
+  const Vec2 ball = at.ToField(Vec2(robot_.body_radius_m + field_.ball.radius_m, 0.0));
+  Perception holding = See(at, ball);
+  holding.holding_ball = true;
+  const RobotCommand kick = team.Decide(holding);
+  ASSERT_EQ(kick.kind, CommandKind::kKick);
+  EXPECT_EQ(kicks_.kicks[static_cast<std::size_t>(kick.kick_index)].name, config_.clear_kick);
+  // An attacker adjacent to the ball in the kick's line: no kick into it.
+  holding.opponents = {Pose2{ball + Vec2(-(robot_.body_radius_m + field_.ball.radius_m), 0.0), 0.0}};
+  EXPECT_EQ(team.Decide(holding).kind, CommandKind::kWalk);
 }
 
 }  // namespace

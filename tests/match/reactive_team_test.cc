@@ -1,5 +1,6 @@
-// The reactive team's decisions on hand-made perceptions: the nearer robot chases and the other
-// supports; a supporter near the ball backs up until it is the release distance away; the
+// The reactive team's decisions on hand-made perceptions: every robot chases until its teammate
+// reports that it holds the ball; a supporter near the ball then backs up until it is the
+// release distance away; the
 // holder kicks within its kick's reach of the goal line when facing the goal, dodges an
 // opponent ahead towards the middle of the field (the same in the mirrored game), and kicks at
 // the hold limit.
@@ -47,28 +48,32 @@ class ReactiveTeamTest : public ::testing::Test {
   SimulationParams sim_;
 };
 
-TEST_F(ReactiveTeamTest, NearerRobotChasesOtherSupportsAndBacksUpWithHysteresis) {
+TEST_F(ReactiveTeamTest, EveryoneChasesUntilTheOwnerReportsThenTheOthersBackUp) {
   ReactiveTeam team = Team();
   const Vec2 ball(0.0, 0.0);
-  // Robot 1 is 0.5 m from the ball; robot 0 reports 0.2 m and chasing.
-  const auto told = Report(0, 1, 0.2, 0.0);
+  // Robot 0 reports chasing from 0.2 m: robot 1, 0.5 m away, chases too (no claim by distance).
   Perception p = See(1, Pose2{Vec2(-0.5, 0.0), 0.0}, ball, 0.04);
-  p.inbox = told;
+  const auto chasing = Report(0, 1, 0.2, 0.0);
+  p.inbox = chasing;
+  EXPECT_EQ(team.Decide(p).kind, CommandKind::kGetBall);
+  // Robot 0 reports holding the ball: robot 1 backs up.
+  p = See(1, Pose2{Vec2(-0.5, 0.0), 0.0}, ball, 0.08);
+  const auto holding = Report(0, 2, 0.0, 0.08);
+  p.inbox = holding;
   RobotCommand c = team.Decide(p);
   EXPECT_TRUE(c.backing_up);  // 0.5 m < back_off_distance_m (0.6)
   EXPECT_EQ(c.kind, CommandKind::kWalk);
   EXPECT_LT(c.v_R_mps.x(), 0.0);  // walks away from the ball, backwards
   // 0.7 m away: still backing up (release at 0.6 + 0.2 m); 0.85 m: done.
-  c = team.Decide(See(1, Pose2{Vec2(-0.7, 0.0), 0.0}, ball, 0.08));
+  c = team.Decide(See(1, Pose2{Vec2(-0.7, 0.0), 0.0}, ball, 0.12));
   EXPECT_TRUE(c.backing_up);
-  c = team.Decide(See(1, Pose2{Vec2(-0.85, 0.0), 0.0}, ball, 0.12));
+  c = team.Decide(See(1, Pose2{Vec2(-0.85, 0.0), 0.0}, ball, 0.16));
   EXPECT_FALSE(c.backing_up);
-  // Robot 0 (nearer) chases.
-  ReactiveTeam other = Team();
-  Perception q = See(0, Pose2{Vec2(-0.2, 0.0), 0.0}, ball, 0.04);
-  const auto mate = Report(1, 1, 0.5, 0.0);
-  q.inbox = mate;
-  EXPECT_EQ(other.Decide(q).kind, CommandKind::kGetBall);
+  // The owner kicked and reports chasing again: robot 1 goes for the ball.
+  p = See(1, Pose2{Vec2(-0.85, 0.0), 0.0}, ball, 0.2);
+  const auto released = Report(0, 1, 0.3, 0.2);
+  p.inbox = released;
+  EXPECT_EQ(team.Decide(p).kind, CommandKind::kGetBall);
 }
 
 TEST_F(ReactiveTeamTest, SupporterWaitsInsideItsRoleRegion) {

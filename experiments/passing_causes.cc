@@ -1,0 +1,52 @@
+#include "experiments/passing_causes.h"
+
+namespace foresight {
+
+namespace {
+
+// Adds the opponents' kicks of one trial: pairs each opponent kick event with the kick_end
+// event after it.
+void CountOpponentKicks(const MatchTrialResult& trial, double attack_sign, double min_moved_m,
+                        ScenarioCauses& c) {
+  const MatchEvent* kick = nullptr;
+  for (const MatchEvent& e : trial.events) {
+    if (e.kind == EventKind::kKick) kick = &e;
+    if (e.kind != EventKind::kKickEnd || kick == nullptr) continue;
+    if (kick->side == Side::kOpponents) {
+      const Vec2 moved = e.p_F_ball - kick->p_F_ball;
+      if (moved.norm() >= min_moved_m) {
+        ++c.opponent_kicks_moved;
+        c.opponent_kicks_own_goal += attack_sign * moved.x() > 0.0;
+      }
+    }
+    kick = nullptr;
+  }
+}
+
+}  // namespace
+
+std::vector<ScenarioCauses> SummariseCauses(const PassingResult& result, const PassingSetup& setup,
+                                            double confidence) {
+  const double attack_sign = setup.mirrored ? -1.0 : 1.0;
+  std::vector<ScenarioCauses> all;
+  for (const ScenarioTrials& st : result.scenarios) {
+    ScenarioCauses c;
+    c.scenario = st.scenario;
+    c.trials = static_cast<int>(st.trials.size());
+    for (const MatchTrialResult& t : st.trials) {
+      c.to_goal_by_attackers += IsToGoal(t.outcome) && t.counters.attacker_kick_sent;
+      c.shots_on_target += t.counters.shots_on_target;
+      c.shots_saved += t.counters.shots_saved;
+      c.safety_cap_ended +=
+          setup.config.time_limit_is_safety_cap && t.outcome == TrialOutcome::kTimeout;
+      CountOpponentKicks(t, attack_sign, setup.params.kick_moved_min_m, c);
+    }
+    if (c.trials > 0) {
+      c.to_goal_by_attackers_ci = WilsonInterval(c.to_goal_by_attackers, c.trials, confidence);
+    }
+    all.push_back(c);
+  }
+  return all;
+}
+
+}  // namespace foresight
