@@ -7,7 +7,7 @@
 // kPassingDomain): the key does not depend on the team, so every team meets the same random
 // numbers (common random numbers: the next issue's comparison is paired), nor on the thread.
 // The experiment file (models/experiments/passing.json) names the simulation file and holds the
-// report's figures: the confidence of the intervals, the example trial and how it is drawn.
+// report's figures and the paper's (for the scorecard of --team both): the confidence of the intervals, the example trial and how it is drawn.
 #pragma once
 
 #include <cstdint>
@@ -38,6 +38,7 @@ struct PassingParams {
   int example_trial = 0;            // the trial of each scenario recorded and drawn (Fig. 13)
   double trace_period_s = 0.0;      // how often the example trial is recorded
   double step_mark_period_s = 0.0;  // numbered marks on the example's paths this often
+  std::string paper_tables;  // the paper's figures in MODELS/experiments (experiments/paper_tables.h)
 
   void Validate() const;
 };

@@ -63,6 +63,7 @@
 #include "common/shard.h"
 #include "experiments/experiment_params.h"
 #include "experiments/match_trial_shard.h"
+#include "experiments/paper_tables.h"
 #include "experiments/passing.h"
 #include "experiments/passing_ablations.h"
 #include "experiments/passing_comparison.h"
