@@ -71,6 +71,8 @@
 #include "experiments/passing_figures.h"
 #include "experiments/passing_replay.h"
 #include "experiments/passing_report.h"
+#include "experiments/passing_scorecard.h"
+#include "experiments/passing_scorecard_report.h"
 #include "experiments/passing_shard.h"
 #include "experiments/passing_stats.h"
 #include "experiments/passing_variants.h"
