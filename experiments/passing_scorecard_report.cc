@@ -30,6 +30,19 @@ std::string Direction(int sign) {
   return sign > 0 ? "cbr higher" : sign < 0 ? "cbr lower" : "equal";
 }
 
+// A paper's figure as printed: no trailing zeros ("25", "1.34", "49.5").
+std::string PaperValue(double value) {
+  return Format("%g", value);
+}
+
+std::string TableNumbers(const PassingScorecard& card) {
+  std::string numbers;
+  for (const ScorecardTable& t : card.tables) {
+    numbers += (numbers.empty() ? "" : ", ") + std::to_string(t.table);
+  }
+  return numbers;
+}
+
 std::string Percent(double confidence) {
   return Fixed(100.0 * confidence, 0) + " %";
 }
@@ -121,8 +134,8 @@ void ClaimsHtml(HtmlReport& html, const PassingScorecard& card) {
                                         std::to_string(c.scenarios.size())};
     for (const ClaimScenario& s : c.scenarios) {
       if (&c == &card.claims.front()) header.push_back("scenario " + std::to_string(s.scenario));
-      row.push_back(ClaimVerdictName(s.verdict) + ": paper " + Fixed(s.paper_cbr, 2) + " vs " +
-                    Fixed(s.paper_reactive, 2) + ", ours " +
+      row.push_back(ClaimVerdictName(s.verdict) + ": paper " + PaperValue(s.paper_cbr) + " vs " +
+                    PaperValue(s.paper_reactive) + ", ours " +
                     (s.difference.n > 1 ? Format("%+.2f [%+.2f, %+.2f]", s.difference.mean,
                                                  s.difference.ci.low, s.difference.ci.high)
                                         : std::string("-")));
@@ -142,7 +155,7 @@ void TableHtml(HtmlReport& html, const ScorecardTable& t) {
     for (std::size_t c = 0; c < r.cells.size(); ++c) {
       const ScorecardCell& cell = r.cells[c];
       const int d = Decimals(t.columns[c]);
-      rows.push_back({std::to_string(r.scenario), r.team, t.columns[c], Fixed(cell.paper, 2),
+      rows.push_back({std::to_string(r.scenario), r.team, t.columns[c], PaperValue(cell.paper),
                       Value(cell.ours, d), IntervalText(cell.ci, d), InsideText(cell.inside)});
     }
   }
@@ -184,7 +197,7 @@ std::string PassingScorecardText(const PassingScorecard& card) {
       for (std::size_t c = 0; c < r.cells.size(); ++c) {
         const ScorecardCell& cell = r.cells[c];
         const int d = Decimals(t.columns[c]);
-        text += Format(" | %s %s: %s %s", t.columns[c].c_str(), Fixed(cell.paper, 2).c_str(),
+        text += Format(" | %s %s: %s %s", t.columns[c].c_str(), PaperValue(cell.paper).c_str(),
                        Value(cell.ours, d).c_str(), IntervalText(cell.ci, d).c_str());
         if (cell.inside && !*cell.inside) text += " out";
       }
@@ -197,8 +210,8 @@ std::string PassingScorecardText(const PassingScorecard& card) {
 }
 
 std::string PassingScorecardHtml(const PassingScorecard& card) {
-  HtmlReport html("Reproduction scorecard: passing, " + card.config +
-                  " (Ros et al. 2009, Tables 1-5)");
+  HtmlReport html("Reproduction scorecard: passing, " + card.config + " (Ros et al. 2009, Tables " +
+                  TableNumbers(card) + ")");
   html.KeyValues(Header(card));
   ClaimsHtml(html, card);
   for (const ScorecardTable& t : card.tables) TableHtml(html, t);
