@@ -1,6 +1,7 @@
 #include "app/passing_command.h"
 
 #include <chrono>
+#include <optional>
 
 #include "app/cli_values.h"
 #include "app/experiment_output.h"
@@ -11,6 +12,8 @@
 #include "experiments/passing_figures.h"
 #include "experiments/passing_replay.h"
 #include "experiments/passing_report.h"
+#include "experiments/passing_scorecard.h"
+#include "experiments/passing_scorecard_report.h"
 #include "experiments/passing_shard.h"
 
 namespace foresight {
@@ -39,8 +42,38 @@ struct PassingTrials {
   std::vector<double> run_times_s;
 };
 
-// Every team's report and, for two teams, their paired comparison, written to --out.
+// The paper's tables for the scorecard when both teams play (loaded before the trials, so a bad
+// file fails at once).
+std::optional<PaperTables> LoadScorecardTables(const PassingSetup& setup,
+                                               const std::filesystem::path& models) {
+  if (setup.teams.size() < 2) return std::nullopt;
+  return LoadPaperTables(setup.params.paper_tables, models);
+}
+
+const PassingRun& RunOf(const std::vector<PassingRun>& runs, const std::string& team) {
+  for (const PassingRun& run : runs) {
+    if (run.team == team) return run;
+  }
+  return runs.front();  // unreachable: both teams play when there is a scorecard
+}
+
+// The scorecard of the two teams against the paper (issue 27): JSON, text and HTML.
+void AddScorecardFiles(const std::filesystem::path& dir, const PaperTables& paper,
+                       const std::vector<PassingRun>& runs, const std::filesystem::path& models,
+                       ReportFiles& files, std::string& text) {
+  const PassingScorecard card = BuildPassingScorecard(
+      paper, DisplayPath(paper.file, models), RunOf(runs, "cbr"), RunOf(runs, "reactive"));
+  const std::string card_text = PassingScorecardText(card);
+  files.push_back({dir / "scorecard.json", PassingScorecardJson(card).dump(2) + "\n"});
+  files.push_back({dir / "scorecard.txt", card_text});
+  files.push_back({dir / "scorecard.html", PassingScorecardHtml(card)});
+  text += card_text;
+}
+
+// Every team's report and, for two teams, their paired comparison and the scorecard against the
+// paper, written to --out.
 void WritePassingReport(const PassingOptions& o, const PassingInputs& in, PassingTrials trials,
+                        const std::optional<PaperTables>& paper,
                         const std::filesystem::path& models) {
   const PassingSetup& setup = in.setup;
   const std::uint64_t seed = ParseSeed(o.seed);
@@ -74,6 +107,7 @@ void WritePassingReport(const PassingOptions& o, const PassingInputs& in, Passin
     files.push_back({dir / "passing_comparison.json",
                      PassingComparisonJson(comparison).dump(2) + "\n"});
     text += PassingComparisonText(comparison);
+    if (paper) AddScorecardFiles(dir, *paper, runs, models, files, text);
   }
   WriteReport(o.out_dir, files, text,
               both ? "passing_" + setup.teams[0] + "_outcomes.svg" : "passing_outcomes.svg");
@@ -103,6 +137,7 @@ int RunPassingCommand(const PassingOptions& o, const std::filesystem::path& mode
   const std::optional<Shard> shard = ParseShardFlag(o.shard);
   const PassingInputs in = LoadPassingInputs(o, o.team, models);
   const PassingSetup& setup = in.setup;
+  const std::optional<PaperTables> paper = LoadScorecardTables(setup, models);
   CheckReportDir(o.out_dir, "--out");  // before the work, not after
   PassingTrials trials;
   for (std::size_t t = 0; t < setup.teams.size(); ++t) {
@@ -121,7 +156,7 @@ int RunPassingCommand(const PassingOptions& o, const std::filesystem::path& mode
                      "trials");
     return 0;
   }
-  WritePassingReport(o, in, std::move(trials), models);
+  WritePassingReport(o, in, std::move(trials), paper, models);
   return 0;
 }
 
@@ -133,11 +168,12 @@ int MergePassingCommand(const std::vector<ShardPart>& parts, const std::string& 
   const PassingSetup& setup = in.setup;
   RequireShardItems(parts.front(), PassingItems(setup, static_cast<int>(setup.teams.size())),
                     "trials");
+  const std::optional<PaperTables> paper = LoadScorecardTables(setup, models);
   CheckReportDir(out_dir, "--out");
   PassingTrials trials;
   trials.results = MergePassingShards(setup, setup.teams, parts);
   trials.run_times_s.assign(setup.teams.size(), ShardsRunTime(parts));
-  WritePassingReport(o, in, std::move(trials), models);
+  WritePassingReport(o, in, std::move(trials), paper, models);
   return 0;
 }
 

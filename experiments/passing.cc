@@ -65,13 +65,14 @@ PassingParams LoadPassingParams(const std::string& reference,
   const JsonObject root = doc.Root();
   root.RejectUnknownKeys(
       {"simulation", "confidence", "example_trial", "trace_period_s", "step_mark_period_s",
-       "kick_moved_min_m"});
+       "kick_moved_min_m", "paper_tables"});
   p.simulation = root.String("simulation");
   p.confidence = root.Number("confidence");
   p.example_trial = root.Integer("example_trial");
   p.trace_period_s = root.Number("trace_period_s");
   p.step_mark_period_s = root.Number("step_mark_period_s");
   p.kick_moved_min_m = root.Number("kick_moved_min_m");
+  p.paper_tables = root.String("paper_tables");
   WithFile(p.file.string(), [&] { p.Validate(); });
   return p;
 }

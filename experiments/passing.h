@@ -7,7 +7,7 @@
 // kPassingDomain): the key does not depend on the team, so every team meets the same random
 // numbers (common random numbers: the next issue's comparison is paired), nor on the thread.
 // The experiment file (models/experiments/passing.json) names the simulation file and holds the
-// report's figures: the confidence of the intervals, the example trial and how it is drawn.
+// report's figures and the paper's (for the scorecard of --team both): the confidence of the intervals, the example trial and how it is drawn.
 #pragma once
 
 #include <cstdint>
@@ -40,6 +40,7 @@ struct PassingParams {
   double step_mark_period_s = 0.0;  // numbered marks on the example's paths this often
   // An opponent's kick counts as having moved the ball (experiments/passing_causes.h) from this.
   double kick_moved_min_m = 0.0;
+  std::string paper_tables;  // the paper's figures in MODELS/experiments (experiments/paper_tables.h)
 
   void Validate() const;
 };

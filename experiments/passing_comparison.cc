@@ -15,23 +15,36 @@ PairedRow Pair(const std::string& name, const ScenarioTrials& a, const ScenarioT
                const std::function<double(const MatchTrialResult&)>& value, double confidence) {
   PairedRow row;
   row.measure = name;
-  std::vector<double> d;
   double sa = 0.0, sb = 0.0;
   for (std::size_t i = 0; i < a.trials.size(); ++i) {
-    const double va = value(a.trials[i]);
-    const double vb = value(b.trials[i]);
-    sa += va;
-    sb += vb;
-    d.push_back(va - vb);
+    sa += value(a.trials[i]);
+    sb += value(b.trials[i]);
   }
   const double n = static_cast<double>(a.trials.size());
   row.first_mean = n > 0 ? sa / n : 0.0;
   row.second_mean = n > 0 ? sb / n : 0.0;
-  row.difference = SummariseValues(d, confidence);
+  row.difference = PairTrials(a, b, value, false, confidence);
   return row;
 }
 
 }  // namespace
+
+MeanStat PairTrials(const ScenarioTrials& first, const ScenarioTrials& second,
+                    const std::function<double(const MatchTrialResult&)>& value,
+                    bool skip_timeouts, double confidence) {
+  assert(first.trials.size() == second.trials.size());
+  std::vector<double> d;
+  for (std::size_t i = 0; i < first.trials.size(); ++i) {
+    const MatchTrialResult& a = first.trials[i];
+    const MatchTrialResult& b = second.trials[i];
+    if (skip_timeouts &&
+        (a.outcome == TrialOutcome::kTimeout || b.outcome == TrialOutcome::kTimeout)) {
+      continue;
+    }
+    d.push_back(value(a) - value(b));
+  }
+  return SummariseValues(d, confidence);
+}
 
 PassingComparison ComparePassing(const std::string& first_team, const PassingResult& first,
                                  const std::string& second_team, const PassingResult& second,

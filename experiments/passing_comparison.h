@@ -7,6 +7,7 @@
 // sec. 5.2 only names a t-test for Table 5).
 #pragma once
 
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -32,6 +33,13 @@ struct PassingComparison {
   std::string first, second;  // team names
   std::vector<ScenarioComparison> scenarios;
 };
+
+// The paired difference first_i - second_i of `value` over the trials of one scenario; with
+// `skip_timeouts` only the pairs in which neither trial timed out (the paper's Table 5 leaves
+// timeouts out). Precondition: both hold the same number of trials.
+MeanStat PairTrials(const ScenarioTrials& first, const ScenarioTrials& second,
+                    const std::function<double(const MatchTrialResult&)>& value,
+                    bool skip_timeouts, double confidence);
 
 // Precondition: both results hold the same scenarios with the same number of trials.
 PassingComparison ComparePassing(const std::string& first_team, const PassingResult& first,

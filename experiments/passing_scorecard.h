@@ -1,0 +1,95 @@
+// The reproduction scorecard (issue 27): the paper's Tables 1-5 (Ros et al. 2009, sec. 5.2;
+// experiments/paper_tables.h) cell by cell beside our run of both teams on one configuration,
+// with our intervals at the experiment's confidence and whether the paper's value lies inside,
+// and the tally of the paper's claims for CBR against the reactive team per scenario.
+//
+// Our intervals: shares are Wilson intervals, means t intervals (experiments/passing_stats.h);
+// sds and shares of a team's total (backing-ups of A and B, individual and cooperative cases)
+// have none, so they are shown but not judged. A claim compares the sum of its terms per trial
+// (e.g. 2D: the midfield defender's plus the defender's touches) as the paired difference CBR -
+// reactive over the trials both teams played from the same random numbers (common random
+// numbers, experiments/passing.h); terms "without timeouts" pair only the trials in which neither
+// team timed out. It "holds" when the interval excludes 0 on the side of the paper's own CBR -
+// reactive difference in that scenario, is "opposite" when it excludes 0 on the other side, and
+// otherwise shows "no clear difference".
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "experiments/paper_tables.h"
+#include "experiments/passing_report.h"
+
+namespace foresight {
+
+struct ScorecardCell {
+  double paper = 0.0;
+  std::optional<double> ours;   // none when we did not play the row's scenario
+  std::optional<Interval> ci;   // none for sds and shares of a team's total
+  std::optional<bool> inside;   // the paper's value within ci
+};
+
+struct ScorecardRow {
+  int scenario = 0;
+  std::string team;
+  int trials = 0;  // our trials behind the row (0: not played)
+  std::vector<ScorecardCell> cells;
+};
+
+struct ScorecardTable {
+  int table = 0;
+  std::string source;
+  std::string caption;
+  std::vector<std::string> columns;  // PaperColumn::Label
+  std::vector<ScorecardRow> rows;
+  int judged = 0;  // cells with an interval
+  int inside = 0;  // of those, the paper's value inside ours
+};
+
+enum class ClaimVerdict { kHolds, kOpposite, kNoClearDifference, kNotPlayed };
+std::string ClaimVerdictName(ClaimVerdict verdict);  // "holds", "opposite", ...
+
+struct ClaimScenario {
+  int scenario = 0;
+  double paper_cbr = 0.0;
+  double paper_reactive = 0.0;
+  int paper_direction = 0;  // sign of paper_cbr - paper_reactive
+  MeanStat difference;      // ours, cbr - reactive, paired
+  ClaimVerdict verdict = ClaimVerdict::kNotPlayed;
+};
+
+struct ClaimTally {
+  std::string name;
+  std::string statement;
+  std::string compared;  // the terms, e.g. "touches_without_timeouts MD + touches_without_timeouts D"
+  bool without_timeouts = false;
+  std::vector<ClaimScenario> scenarios;
+  int holds = 0;
+  int opposite = 0;
+  int unclear = 0;
+};
+
+struct PassingScorecard {
+  std::string config;  // MatchConfig::name
+  std::string paper_file;  // as displayed
+  std::string article;
+  std::string kicks;     // the run's kick model file, as its provenance shows it
+  std::string executor;  // "coarse" or "physics"
+  std::string version;
+  std::uint64_t seed = 0;
+  double confidence = 0.0;
+  int trials = 0;  // per scenario and team
+  std::vector<ScorecardTable> tables;
+  std::vector<ClaimTally> claims;
+};
+
+// `cbr` and `reactive`: the two teams' runs of the same setup and seed (summaries filled).
+PassingScorecard BuildPassingScorecard(const PaperTables& paper, const std::string& paper_file,
+                                       const PassingRun& cbr, const PassingRun& reactive);
+
+// The claim's verdict from the paper's direction and our paired difference (n >= 2 to judge).
+ClaimVerdict JudgeClaim(int paper_direction, const MeanStat& difference);
+
+}  // namespace foresight

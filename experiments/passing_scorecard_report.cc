@@ -1,0 +1,221 @@
+#include "experiments/passing_scorecard_report.h"
+
+#include "report/html_report.h"
+#include "report/report_format.h"
+
+namespace foresight {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+int Decimals(const std::string& column) {
+  return !column.empty() && column.back() == '%' ? 1 : 2;
+}
+
+std::string Value(const std::optional<double>& v, int decimals) {
+  return v ? Fixed(*v, decimals) : std::string("-");
+}
+
+std::string IntervalText(const std::optional<Interval>& ci, int decimals) {
+  return ci ? "[" + Fixed(ci->low, decimals) + ", " + Fixed(ci->high, decimals) + "]"
+            : std::string("-");
+}
+
+std::string InsideText(const std::optional<bool>& inside) {
+  return inside ? (*inside ? "inside" : "outside") : std::string("not judged");
+}
+
+std::string Direction(int sign) {
+  return sign > 0 ? "cbr higher" : sign < 0 ? "cbr lower" : "equal";
+}
+
+// A paper's figure as printed: no trailing zeros ("25", "1.34", "49.5").
+std::string PaperValue(double value) {
+  return Format("%g", value);
+}
+
+std::string TableNumbers(const PassingScorecard& card) {
+  std::string numbers;
+  for (const ScorecardTable& t : card.tables) {
+    numbers += (numbers.empty() ? "" : ", ") + std::to_string(t.table);
+  }
+  return numbers;
+}
+
+std::string Percent(double confidence) {
+  return Fixed(100.0 * confidence, 0) + " %";
+}
+
+Json CellJson(const std::string& column, const ScorecardCell& c) {
+  Json j = {{"column", column}, {"paper", c.paper}};
+  j["ours"] = c.ours ? Json(*c.ours) : Json(nullptr);
+  j["ours_ci"] = c.ci ? Json::array({c.ci->low, c.ci->high}) : Json(nullptr);
+  j["paper_inside"] = c.inside ? Json(*c.inside) : Json(nullptr);
+  return j;
+}
+
+Json TableJson(const ScorecardTable& t) {
+  Json rows = Json::array();
+  for (const ScorecardRow& r : t.rows) {
+    Json cells = Json::array();
+    for (std::size_t c = 0; c < r.cells.size(); ++c) cells.push_back(CellJson(t.columns[c], r.cells[c]));
+    rows.push_back({{"scenario", r.scenario}, {"team", r.team}, {"trials", r.trials},
+                    {"cells", cells}});
+  }
+  return {{"table", t.table},         {"source", t.source},
+          {"caption", t.caption},     {"cells_judged", t.judged},
+          {"paper_inside_ours", t.inside}, {"rows", rows}};
+}
+
+Json ClaimJson(const ClaimTally& c) {
+  Json scenarios = Json::array();
+  for (const ClaimScenario& s : c.scenarios) {
+    scenarios.push_back(
+        {{"scenario", s.scenario},
+         {"paper_cbr", s.paper_cbr},
+         {"paper_reactive", s.paper_reactive},
+         {"paper_direction", Direction(s.paper_direction)},
+         {"pairs", s.difference.n},
+         {"difference", s.difference.n > 0 ? Json(s.difference.mean) : Json(nullptr)},
+         {"difference_ci", s.difference.n > 1
+                               ? Json::array({s.difference.ci.low, s.difference.ci.high})
+                               : Json(nullptr)},
+         {"verdict", ClaimVerdictName(s.verdict)}});
+  }
+  return {{"name", c.name},
+          {"statement", c.statement},
+          {"compared", c.compared},
+          {"timeouts_left_out", c.without_timeouts},
+          {"holds", c.holds},
+          {"opposite", c.opposite},
+          {"no_clear_difference", c.unclear},
+          {"scenarios", scenarios}};
+}
+
+std::string ClaimLine(const ClaimTally& c) {
+  std::string line = Format("  %-27s holds in %d of %zu:", c.name.c_str(), c.holds,
+                            c.scenarios.size());
+  for (const ClaimScenario& s : c.scenarios) {
+    line += Format(" s%d %s", s.scenario, ClaimVerdictName(s.verdict).c_str());
+    if (s.difference.n > 1) {
+      line += Format(" (%+.2f [%+.2f, %+.2f])", s.difference.mean, s.difference.ci.low,
+                     s.difference.ci.high);
+    }
+    line += ";";
+  }
+  return line + "\n";
+}
+
+std::vector<std::pair<std::string, std::string>> Header(const PassingScorecard& card) {
+  return {{"configuration", card.config},
+          {"paper", card.article},
+          {"paper's figures", card.paper_file},
+          {"kick model", card.kicks},
+          {"executor", card.executor},
+          {"trials per scenario and team", std::to_string(card.trials)},
+          {"our intervals", Percent(card.confidence) + " (shares Wilson, means Student t)"},
+          {"seed", std::to_string(card.seed)},
+          {"version", card.version}};
+}
+
+void ClaimsHtml(HtmlReport& html, const PassingScorecard& card) {
+  html.Heading(2, "The paper's claims, CBR against reactive");
+  html.Paragraph(
+      "A claim holds in a scenario when our paired " + Percent(card.confidence) +
+      " interval of CBR minus reactive excludes 0 on the side of the paper's own difference in "
+      "that scenario; opposite when it excludes 0 on the other side. Shares are in percentage "
+      "points, touches per trial, times in s.");
+  std::vector<std::string> header = {"claim", "compared", "holds"};
+  std::vector<std::vector<std::string>> rows;
+  for (const ClaimTally& c : card.claims) {
+    std::vector<std::string> row = {c.name, c.compared + (c.without_timeouts ? " (timeouts left out)" : ""),
+                                    std::to_string(c.holds) + " of " +
+                                        std::to_string(c.scenarios.size())};
+    for (const ClaimScenario& s : c.scenarios) {
+      if (&c == &card.claims.front()) header.push_back("scenario " + std::to_string(s.scenario));
+      row.push_back(ClaimVerdictName(s.verdict) + ": paper " + PaperValue(s.paper_cbr) + " vs " +
+                    PaperValue(s.paper_reactive) + ", ours " +
+                    (s.difference.n > 1 ? Format("%+.2f [%+.2f, %+.2f]", s.difference.mean,
+                                                 s.difference.ci.low, s.difference.ci.high)
+                                        : std::string("-")));
+    }
+    rows.push_back(std::move(row));
+  }
+  html.Table(header, rows);
+}
+
+void TableHtml(HtmlReport& html, const ScorecardTable& t) {
+  html.Heading(2, "Table " + std::to_string(t.table) + ": " + t.caption);
+  html.Paragraph(t.source + ". The paper's value lies inside our interval in " +
+                 std::to_string(t.inside) + " of " + std::to_string(t.judged) +
+                 " judged cells (sds and shares of a team's total have no interval).");
+  std::vector<std::vector<std::string>> rows;
+  for (const ScorecardRow& r : t.rows) {
+    for (std::size_t c = 0; c < r.cells.size(); ++c) {
+      const ScorecardCell& cell = r.cells[c];
+      const int d = Decimals(t.columns[c]);
+      rows.push_back({std::to_string(r.scenario), r.team, t.columns[c], PaperValue(cell.paper),
+                      Value(cell.ours, d), IntervalText(cell.ci, d), InsideText(cell.inside)});
+    }
+  }
+  html.Table({"scenario", "team", "measure", "paper", "ours", "our interval", "paper's value"},
+             rows);
+}
+
+}  // namespace
+
+Json PassingScorecardJson(const PassingScorecard& card) {
+  Json tables = Json::array();
+  for (const ScorecardTable& t : card.tables) tables.push_back(TableJson(t));
+  Json claims = Json::array();
+  for (const ClaimTally& c : card.claims) claims.push_back(ClaimJson(c));
+  return {{"experiment", "passing_scorecard"},
+          {"version", card.version},
+          {"seed", card.seed},
+          {"config", card.config},
+          {"paper", {{"file", card.paper_file}, {"article", card.article}}},
+          {"kicks", card.kicks},
+          {"executor", card.executor},
+          {"trials_per_scenario", card.trials},
+          {"confidence", card.confidence},
+          {"tables", tables},
+          {"claims", claims}};
+}
+
+std::string PassingScorecardText(const PassingScorecard& card) {
+  std::string text = Format(
+      "scorecard against Ros et al. 2009 (%s), %s, kicks %s, %s executor, %d trials per "
+      "scenario and team, %s intervals:\n",
+      card.paper_file.c_str(), card.config.c_str(), card.kicks.c_str(), card.executor.c_str(),
+      card.trials, Percent(card.confidence).c_str());
+  for (const ScorecardTable& t : card.tables) {
+    text += Format("Table %d: paper inside our interval in %d of %d judged cells\n", t.table,
+                   t.inside, t.judged);
+    for (const ScorecardRow& r : t.rows) {
+      text += Format("  s%d %-8s", r.scenario, r.team.c_str());
+      for (std::size_t c = 0; c < r.cells.size(); ++c) {
+        const ScorecardCell& cell = r.cells[c];
+        const int d = Decimals(t.columns[c]);
+        text += Format(" | %s %s: %s %s", t.columns[c].c_str(), PaperValue(cell.paper).c_str(),
+                       Value(cell.ours, d).c_str(), IntervalText(cell.ci, d).c_str());
+        if (cell.inside && !*cell.inside) text += " out";
+      }
+      text += "\n";
+    }
+  }
+  text += "claims (CBR - reactive, paired):\n";
+  for (const ClaimTally& c : card.claims) text += ClaimLine(c);
+  return text;
+}
+
+std::string PassingScorecardHtml(const PassingScorecard& card) {
+  HtmlReport html("Reproduction scorecard: passing, " + card.config + " (Ros et al. 2009, Tables " +
+                  TableNumbers(card) + ")");
+  html.KeyValues(Header(card));
+  ClaimsHtml(html, card);
+  for (const ScorecardTable& t : card.tables) TableHtml(html, t);
+  return html.Finish();
+}
+
+}  // namespace foresight
