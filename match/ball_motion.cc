@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "planner/first_hit.h"
 #include "planner/ray_cast.h"
 
 namespace foresight {
@@ -61,21 +62,14 @@ std::optional<BodyHit> AdvanceRoll(BallRoll& roll, double dt_s, std::span<const 
 
 BallVelocity ReboundOffBody(const BallBody& body, const Vec2& p_F_contact, const Vec2& dir_F,
                             double speed_mps, double restitution) {
-  const Vec2 axis = body.b - body.a;
-  const double length = axis.norm();
-  const double along =
-      length > 0.0 ? std::clamp((p_F_contact - body.a).dot(axis / length), 0.0, length) : 0.0;
-  const Vec2 nearest = length > 0.0 ? Vec2(body.a + along * axis / length) : body.a;
-  const Vec2 away = p_F_contact - nearest;
-  const double distance = away.norm();
-  if (!(distance > 1e-12)) return {-dir_F, restitution * speed_mps};
-  const Vec2 n = away / distance;
-  const Vec2 v = speed_mps * dir_F;
-  const double approach = v.dot(n);
-  if (approach >= 0.0) return {dir_F, speed_mps};  // already leaving: nothing to reflect
-  const Vec2 after = v - (1.0 + restitution) * approach * n;
-  const double speed = after.norm();
-  return {speed > 0.0 ? Vec2(after / speed) : dir_F, speed};
+  // The body as the coarse model's contact shape: a segment from a along u (length 0: a disc).
+  FirstHit shape;
+  shape.kind = Contact::kRobot;
+  shape.a = body.a;
+  shape.length_m = (body.b - body.a).norm();
+  if (shape.length_m > 0.0) shape.u = (body.b - body.a) / shape.length_m;
+  const Reflection r = Reflect(shape, p_F_contact, dir_F, restitution);
+  return {r.dir_F, speed_mps * r.speed_factor};
 }
 
 }  // namespace foresight

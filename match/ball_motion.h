@@ -57,10 +57,10 @@ struct BodyHit {
 // hit says where, how fast and how much of the step was left.
 std::optional<BodyHit> AdvanceRoll(BallRoll& roll, double dt_s, std::span<const BallBody> bodies);
 
-// The ball leaving a standing body it met at p_F_contact moving along unit dir_F: reflected about
-// the contact normal n (from the body's nearest axis point to the ball's centre) with its normal
-// speed scaled by the restitution e, v' = v - (1 + e)(v . n) n, tangential speed kept (the
-// coarse model's rebound, planner/first_hit.h). Returns the new unit direction and speed.
+// The ball leaving a standing body it met at p_F_contact moving along unit dir_F (towards it):
+// the coarse model's rebound (planner/first_hit.h, Reflect), reflected about the contact normal n
+// (from the body's nearest axis point to the ball's centre) with its normal speed scaled by the
+// restitution e, v' = v - (1 + e)(v . n) n. Returns the new unit direction and speed.
 struct BallVelocity {
   Vec2 dir_F{1.0, 0.0};
   double speed_mps = 0.0;
