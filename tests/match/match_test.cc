@@ -1,5 +1,5 @@
-// The simulator with scripted policies: a ball kicked into a standing opponent stops at its body
-// and counts one touch; a goalie's touch ends the trial as a block; a trial is the same for the
+// The simulator with scripted policies: a ball kicked into a standing opponent with restitution 0
+// stops at its body and counts one touch (rebounds: tests/match/ball_motion_test.cc); a goalie's touch ends the trial as a block; a trial is the same for the
 // same key; opponents played by OpponentTeam never leave their home regions.
 #include "match/match.h"
 
@@ -78,7 +78,8 @@ class MatchTest : public ::testing::Test {
   MatchSetup setup_;
 };
 
-TEST_F(MatchTest, BallKickedIntoARobotStopsAtItAndCountsOneTouch) {
+TEST_F(MatchTest, BallKickedIntoARobotWithoutRestitutionStopsAtItAndCountsOneTouch) {
+  setup_.robot_restitution = 0.0;  // fully inelastic: the ball keeps no normal speed
   GetAndKick attackers;
   Stand opponents;
   const MatchTrialResult r = RunTrial(setup_, OneOpponentAhead(1.0), attackers, opponents, 7);
