@@ -98,8 +98,7 @@ void WritePassingReport(const PassingOptions& o, const PassingInputs& in, Passin
     runs.push_back(std::move(run));
   }
   if (both) {
-    std::vector<std::string> opponents;
-    for (const OpponentSpec& spec : setup.config.opponents) opponents.push_back(spec.name);
+    const std::vector<std::string> opponents = setup.config.OpponentNames();
     const PassingComparison comparison =
         ComparePassing(setup.teams[0], runs[0].result, setup.teams[1], runs[1].result, opponents,
                        setup.params.confidence);

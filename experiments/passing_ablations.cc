@@ -11,12 +11,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-std::vector<std::string> OpponentNames(const PassingSetup& setup) {
-  std::vector<std::string> names;
-  for (const OpponentSpec& o : setup.config.opponents) names.push_back(o.name);
-  return names;
-}
-
 const PairedRow& Row(const PassingComparison& c, std::size_t scenario, const std::string& measure) {
   const auto& rows = c.scenarios[scenario].rows;
   return *std::find_if(rows.begin(), rows.end(),
@@ -40,7 +34,7 @@ Json Difference(const PairedRow& r) {
 
 Json ScenarioJson(const AblationRun& run, std::size_t v, std::size_t s) {
   const ScenarioSummary& sum = run.summaries[v][s];
-  const std::vector<std::string> opponents = OpponentNames(*run.base);
+  const std::vector<std::string> opponents = run.base->config.OpponentNames();
   Json touches = Json::object();
   for (std::size_t o = 0; o < opponents.size(); ++o) {
     touches[opponents[o]] = {{"mean", sum.possession[o].mean},
@@ -122,7 +116,7 @@ AblationRun SummariseAblations(const PassingSetup& base, std::vector<PassingVari
   const double confidence = base.params.confidence;
   const PassingResult& reactive = results.front();
   run.reactive = SummarisePassing(reactive, confidence);
-  const std::vector<std::string> opponents = OpponentNames(base);
+  const std::vector<std::string> opponents = base.config.OpponentNames();
   const std::string& reference_name = run.variants.front().name;
   for (std::size_t v = 0; v < run.variants.size(); ++v) {
     const PassingResult& result = results[v + 1];

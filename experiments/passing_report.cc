@@ -26,12 +26,6 @@ Json StatsJson(const std::vector<MeanStat>& stats, const std::vector<std::string
   return j;
 }
 
-std::vector<std::string> OpponentNames(const PassingSetup& setup) {
-  std::vector<std::string> names;
-  for (const OpponentSpec& o : setup.config.opponents) names.push_back(o.name);
-  return names;
-}
-
 const std::vector<std::string> kAttackerNames = {"A", "B"};
 
 Json TeamCountersJson(const ScenarioSummary& s) {
@@ -54,7 +48,7 @@ Json SummaryJson(const ScenarioSummary& s, const PassingSetup& setup) {
     backups[kAttackerNames[i]] = StatJson(s.backups[i]);
     backups[kAttackerNames[i]]["share"] = s.backup_share[i];
   }
-  const std::vector<std::string> opponents = OpponentNames(setup);
+  const std::vector<std::string> opponents = setup.config.OpponentNames();
   return {{"scenario", s.scenario},
           {"name", s.name},
           {"trials", s.trials},
@@ -113,7 +107,7 @@ Json PassingJson(const PassingRun& run) {
 }
 
 std::string PassingTrialsCsv(const PassingRun& run) {
-  const std::vector<std::string> opponents = OpponentNames(*run.setup);
+  const std::vector<std::string> opponents = run.setup->config.OpponentNames();
   std::string csv = "scenario,trial,outcome,to_goal,time_s";
   for (const std::string& o : opponents) csv += ",touches_" + o + ",kicks_" + o;
   for (const std::string& a : kAttackerNames) csv += ",backups_" + a + ",kicks_" + a;
@@ -145,7 +139,7 @@ std::string PassingTrialsCsv(const PassingRun& run) {
 }
 
 std::string PassingEventsCsv(const PassingRun& run) {
-  const std::vector<std::string> opponents = OpponentNames(*run.setup);
+  const std::vector<std::string> opponents = run.setup->config.OpponentNames();
   std::string csv = "scenario,trial,time_s,event,robot,ball_x_m,ball_y_m,detail\n";
   for (const ScenarioTrials& st : run.result.scenarios) {
     for (std::size_t i = 0; i < st.trials.size(); ++i) {

@@ -29,12 +29,6 @@ std::optional<TrialOutcome> OutcomeNamed(const std::string& name) {
   return std::nullopt;
 }
 
-std::vector<std::string> OpponentNames(const PassingSetup& setup) {
-  std::vector<std::string> names;
-  for (const OpponentSpec& o : setup.config.opponents) names.push_back(o.name);
-  return names;
-}
-
 const std::vector<std::string> kAttackers = {"A", "B"};
 
 const MeanStat* TeamCounter(const ScenarioSummary& s, const std::string& name) {
@@ -72,7 +66,7 @@ ScorecardCell OurCell(const PaperColumn& col, double paper, const ScenarioSummar
   if (col.measure == "time_s") return MeanCell(paper, s.time_s, col.stat);
   if (col.measure == "time_without_timeouts_s") return MeanCell(paper, s.time_ended_s, col.stat);
   if (col.measure == "touches" || col.measure == "touches_without_timeouts") {
-    const auto o = IndexOf(OpponentNames(setup), col.robot);
+    const auto o = IndexOf(setup.config.OpponentNames(), col.robot);
     const auto& stats = col.measure == "touches" ? s.possession : s.possession_ended;
     if (!o || *o >= stats.size()) return none;
     return MeanCell(paper, stats[*o], col.stat);
@@ -150,7 +144,7 @@ ClaimTally BuildClaim(const PaperTables& paper, const PaperClaim& claim, const P
     tally.compared += term.measure + (term.robot.empty() ? "" : " " + term.robot);
     tally.without_timeouts = tally.without_timeouts || WithoutTimeouts(term.measure);
   }
-  const std::vector<std::string> opponents = OpponentNames(setup);
+  const std::vector<std::string> opponents = setup.config.OpponentNames();
   const auto value = [&](const MatchTrialResult& t) {
     double sum = 0.0;
     for (const PaperTerm& term : terms) sum += TermValue(term, opponents, t);

@@ -109,6 +109,12 @@ bool MatchConfig::HasGoalie() const {
                      [](const OpponentSpec& o) { return o.role == OpponentRole::kGoalie; });
 }
 
+std::vector<std::string> MatchConfig::OpponentNames() const {
+  std::vector<std::string> names;
+  for (const OpponentSpec& o : opponents) names.push_back(o.name);
+  return names;
+}
+
 MatchConfig MatchConfig::Mirrored() const {
   MatchConfig m = *this;
   for (OpponentSpec& o : m.opponents) o.region = o.region.MirroredX();

@@ -84,6 +84,8 @@ struct MatchConfig {
   // heading mirrored, y kept (a mirror in the y axis).
   MatchConfig Mirrored() const;
   bool HasGoalie() const;
+  // The opponents' names in order ("D", "G"): how reports name them.
+  std::vector<std::string> OpponentNames() const;
 };
 
 // `reference` is a bare name in MODELS/match/ ("dg") or a path ending in ".json"; scenario
