@@ -23,6 +23,16 @@ void CountOpponentKicks(const MatchTrialResult& trial, double attack_sign, doubl
   }
 }
 
+void FillIntervals(double confidence, ScenarioCauses& c) {
+  if (c.trials > 0) {
+    c.to_goal_by_attackers_ci = WilsonInterval(c.to_goal_by_attackers, c.trials, confidence);
+  }
+  if (c.opponent_kicks_moved > 0) {
+    c.opponent_kicks_own_goal_ci =
+        WilsonInterval(c.opponent_kicks_own_goal, c.opponent_kicks_moved, confidence);
+  }
+}
+
 }  // namespace
 
 std::vector<ScenarioCauses> SummariseCauses(const PassingResult& result, const PassingSetup& setup,
@@ -41,12 +51,25 @@ std::vector<ScenarioCauses> SummariseCauses(const PassingResult& result, const P
           setup.config.time_limit_is_safety_cap && t.outcome == TrialOutcome::kTimeout;
       CountOpponentKicks(t, attack_sign, setup.params.kick_moved_min_m, c);
     }
-    if (c.trials > 0) {
-      c.to_goal_by_attackers_ci = WilsonInterval(c.to_goal_by_attackers, c.trials, confidence);
-    }
+    FillIntervals(confidence, c);
     all.push_back(c);
   }
   return all;
+}
+
+ScenarioCauses PoolCauses(const std::vector<ScenarioCauses>& scenarios, double confidence) {
+  ScenarioCauses pooled;
+  for (const ScenarioCauses& c : scenarios) {
+    pooled.trials += c.trials;
+    pooled.to_goal_by_attackers += c.to_goal_by_attackers;
+    pooled.shots_on_target += c.shots_on_target;
+    pooled.shots_saved += c.shots_saved;
+    pooled.opponent_kicks_moved += c.opponent_kicks_moved;
+    pooled.opponent_kicks_own_goal += c.opponent_kicks_own_goal;
+    pooled.safety_cap_ended += c.safety_cap_ended;
+  }
+  FillIntervals(confidence, pooled);
+  return pooled;
 }
 
 }  // namespace foresight

@@ -28,10 +28,15 @@ struct ScenarioCauses {
   int shots_saved = 0;
   int opponent_kicks_moved = 0;     // moved the ball at least min_moved_m
   int opponent_kicks_own_goal = 0;  // of those, towards the opponents' own goal
+  Interval opponent_kicks_own_goal_ci;  // Wilson, of the share of the moved kicks
   int safety_cap_ended = 0;         // 0 unless the time limit is a safety cap
 };
 
 std::vector<ScenarioCauses> SummariseCauses(const PassingResult& result, const PassingSetup& setup,
                                             double confidence);
+
+// All scenarios' counts added up (scenario 0), with the intervals of the sums: the experiment's
+// figure for a share whose per-scenario counts are small (a few dozen long opponent kicks).
+ScenarioCauses PoolCauses(const std::vector<ScenarioCauses>& scenarios, double confidence);
 
 }  // namespace foresight

@@ -77,6 +77,11 @@ Json CausesJson(const ScenarioCauses& c) {
           {"shots_saved", c.shots_saved},
           {"opponent_kicks_moved", c.opponent_kicks_moved},
           {"opponent_kicks_towards_own_goal", c.opponent_kicks_own_goal},
+          {"opponent_kicks_towards_own_goal_share",
+           {{"share", c.opponent_kicks_moved > 0
+                          ? static_cast<double>(c.opponent_kicks_own_goal) / c.opponent_kicks_moved
+                          : 0.0},
+            {"share_ci", IntervalJson(c.opponent_kicks_own_goal_ci)}}},
           {"safety_cap_ended", c.safety_cap_ended}};
 }
 
@@ -102,8 +107,12 @@ Json PassingJson(const PassingRun& run) {
     summaries.back()["causes"] = CausesJson(causes[i]);
   }
   const RunProvenance& p = run.provenance;
+  const ScenarioCauses pooled = PoolCauses(causes, setup.params.confidence);
+  Json all_causes = CausesJson(pooled);
+  all_causes["trials"] = pooled.trials;
   return {{"experiment", "passing"}, {"version", p.version},   {"seed", p.seed},
-          {"params", inputs},        {"scenarios", summaries}, {"run_time_s", p.run_time_s}};
+          {"params", inputs},        {"scenarios", summaries}, {"causes_all_scenarios", all_causes},
+          {"run_time_s", p.run_time_s}};
 }
 
 std::string PassingTrialsCsv(const PassingRun& run) {
@@ -182,18 +191,19 @@ std::string PassingText(const PassingRun& run) {
       setup.params.kick_moved_min_m, setup.config.time_limit_is_safety_cap ? " | safety cap" : "");
   const std::vector<ScenarioCauses> causes =
       SummariseCauses(run.result, setup, setup.params.confidence);
-  for (std::size_t i = 0; i < causes.size(); ++i) {
-    const ScenarioCauses& c = causes[i];
+  auto row = [&](const std::string& name, const ScenarioCauses& c) {
     const double own_pct =
         c.opponent_kicks_moved > 0 ? 100.0 * c.opponent_kicks_own_goal / c.opponent_kicks_moved : 0.0;
-    text += Format("%-8s %5.1f %%              | %4d, %4d             | %5d, %4d (%.1f %%)",
-                   run.result.scenarios[i].name.c_str(),
-                   c.trials > 0 ? 100.0 * c.to_goal_by_attackers / c.trials : 0.0,
+    text += Format("%-8s %5.1f %%              | %4d, %4d             | %5d, %4d (%.1f %%, %.1f-%.1f)",
+                   name.c_str(), c.trials > 0 ? 100.0 * c.to_goal_by_attackers / c.trials : 0.0,
                    c.shots_on_target, c.shots_saved, c.opponent_kicks_moved,
-                   c.opponent_kicks_own_goal, own_pct);
+                   c.opponent_kicks_own_goal, own_pct, 100.0 * c.opponent_kicks_own_goal_ci.low,
+                   100.0 * c.opponent_kicks_own_goal_ci.high);
     if (setup.config.time_limit_is_safety_cap) text += Format(" | %d", c.safety_cap_ended);
     text += "\n";
-  }
+  };
+  for (std::size_t i = 0; i < causes.size(); ++i) row(run.result.scenarios[i].name, causes[i]);
+  if (causes.size() > 1) row("all", PoolCauses(causes, setup.params.confidence));
   return text;
 }
 
