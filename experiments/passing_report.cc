@@ -68,7 +68,9 @@ Json SummaryJson(const ScenarioSummary& s, const PassingSetup& setup) {
           {"team_counters", TeamCountersJson(s)}};
 }
 
-Json CausesJson(const ScenarioCauses& c) {
+}  // namespace
+
+Json PassingCausesJson(const ScenarioCauses& c) {
   return {{"to_goal_by_attackers",
            {{"count", c.to_goal_by_attackers},
             {"share", c.trials > 0 ? static_cast<double>(c.to_goal_by_attackers) / c.trials : 0.0},
@@ -84,8 +86,6 @@ Json CausesJson(const ScenarioCauses& c) {
             {"share_ci", IntervalJson(c.opponent_kicks_own_goal_ci)}}},
           {"safety_cap_ended", c.safety_cap_ended}};
 }
-
-}  // namespace
 
 Json PassingJson(const PassingRun& run) {
   const PassingSetup& setup = *run.setup;
@@ -104,11 +104,11 @@ Json PassingJson(const PassingRun& run) {
   Json summaries = Json::array();
   for (std::size_t i = 0; i < run.summaries.size(); ++i) {
     summaries.push_back(SummaryJson(run.summaries[i], setup));
-    summaries.back()["causes"] = CausesJson(causes[i]);
+    summaries.back()["causes"] = PassingCausesJson(causes[i]);
   }
   const RunProvenance& p = run.provenance;
   const ScenarioCauses pooled = PoolCauses(causes, setup.params.confidence);
-  Json all_causes = CausesJson(pooled);
+  Json all_causes = PassingCausesJson(pooled);
   all_causes["trials"] = pooled.trials;
   return {{"experiment", "passing"}, {"version", p.version},   {"seed", p.seed},
           {"params", inputs},        {"scenarios", summaries}, {"causes_all_scenarios", all_causes},

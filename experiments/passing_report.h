@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "experiments/passing_causes.h"
 #include "experiments/passing_stats.h"
 #include "report/provenance.h"
 
@@ -25,6 +26,8 @@ struct PassingRun {
 
 std::string PassingText(const PassingRun& run);
 nlohmann::ordered_json PassingJson(const PassingRun& run);
+// One scenario's causes (or all scenarios' pooled), as passing.json and the scorecard write them.
+nlohmann::ordered_json PassingCausesJson(const ScenarioCauses& causes);
 std::string PassingTrialsCsv(const PassingRun& run);
 std::string PassingEventsCsv(const PassingRun& run);
 

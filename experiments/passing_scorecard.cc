@@ -178,6 +178,19 @@ ClaimTally BuildClaim(const PaperTables& paper, const PaperClaim& claim, const P
   return tally;
 }
 
+// The team's rows of the world section: each scenario, then all of them pooled.
+void AddWorldRows(const PassingRun& run, std::vector<ScorecardWorldRow>& rows) {
+  const PassingSetup& setup = *run.setup;
+  const std::vector<ScenarioCauses> causes =
+      SummariseCauses(run.result, setup, setup.params.confidence);
+  ScorecardWorldRow all{run.team, 0, PoolCauses(causes, setup.params.confidence)};
+  for (std::size_t i = 0; i < causes.size(); ++i) {
+    rows.push_back({run.team, run.summaries[i].to_goal, causes[i]});
+    all.to_goal += run.summaries[i].to_goal;
+  }
+  rows.push_back(all);
+}
+
 }  // namespace
 
 std::string ClaimVerdictName(ClaimVerdict verdict) {
@@ -224,6 +237,9 @@ PassingScorecard BuildPassingScorecard(const PaperTables& paper, const std::stri
       card.claims.push_back(BuildClaim(paper, c, cbr, reactive));
     }
   }
+  card.kick_moved_min_m = setup.params.kick_moved_min_m;
+  AddWorldRows(cbr, card.world);
+  AddWorldRows(reactive, card.world);
   return card;
 }
 

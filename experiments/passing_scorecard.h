@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "experiments/paper_tables.h"
+#include "experiments/passing_causes.h"
 #include "experiments/passing_report.h"
 
 namespace foresight {
@@ -71,6 +72,15 @@ struct ClaimTally {
   int unclear = 0;
 };
 
+// What the world did to one team in one scenario (scenario 0: all pooled), beside its tables:
+// whether the attackers earned their "to goal" balls, how the goalie fared against their shots on
+// target, where the defenders' long kicks went and how many trials the safety cap ended.
+struct ScorecardWorldRow {
+  std::string team;
+  int to_goal = 0;  // goal, close and penalty area
+  ScenarioCauses causes;
+};
+
 struct PassingScorecard {
   std::string config;  // MatchConfig::name
   std::string paper_file;  // as displayed
@@ -83,6 +93,8 @@ struct PassingScorecard {
   int trials = 0;  // per scenario and team
   std::vector<ScorecardTable> tables;
   std::vector<ClaimTally> claims;
+  double kick_moved_min_m = 0.0;  // the opponents' kicks counted moved at least this far
+  std::vector<ScorecardWorldRow> world;  // per team: its scenarios, then all of them pooled
 };
 
 // `cbr` and `reactive`: the two teams' runs of the same setup and seed (summaries filled).

@@ -1,5 +1,6 @@
 #include "experiments/passing_scorecard_report.h"
 
+#include "experiments/passing_report.h"
 #include "report/html_report.h"
 #include "report/report_format.h"
 
@@ -8,6 +9,8 @@ namespace foresight {
 namespace {
 
 using Json = nlohmann::ordered_json;
+
+constexpr double kPercentOf = 100.0;
 
 int Decimals(const std::string& column) {
   return !column.empty() && column.back() == '%' ? 1 : 2;
@@ -18,8 +21,8 @@ std::string Value(const std::optional<double>& v, int decimals) {
 }
 
 std::string IntervalText(const std::optional<Interval>& ci, int decimals) {
-  return ci ? "[" + Fixed(ci->low, decimals) + ", " + Fixed(ci->high, decimals) + "]"
-            : std::string("-");
+  if (!ci) return "-";
+  return Format("[%s, %s]", Fixed(ci->low, decimals).c_str(), Fixed(ci->high, decimals).c_str());
 }
 
 std::string InsideText(const std::optional<bool>& inside) {
@@ -44,7 +47,7 @@ std::string TableNumbers(const PassingScorecard& card) {
 }
 
 std::string Percent(double confidence) {
-  return Fixed(100.0 * confidence, 0) + " %";
+  return Fixed(kPercentOf * confidence, 0) + " %";
 }
 
 Json CellJson(const std::string& column, const ScorecardCell& c) {
@@ -163,6 +166,81 @@ void TableHtml(HtmlReport& html, const ScorecardTable& t) {
              rows);
 }
 
+std::string ScenarioName(int scenario) {
+  return scenario == 0 ? std::string("all") : Format("s%d", scenario);
+}
+
+std::string ShareText(int count, int of, const Interval& ci) {
+  if (of == 0) return "-";
+  return Format("%.1f %% [%.1f, %.1f]", kPercentOf * count / of, kPercentOf * ci.low,
+                kPercentOf * ci.high);
+}
+
+Json WorldJson(const PassingScorecard& card) {
+  Json rows = Json::array();
+  for (const ScorecardWorldRow& w : card.world) {
+    Json row = {{"team", w.team},
+                {"scenario", w.causes.scenario},
+                {"trials", w.causes.trials},
+                {"to_goal", w.to_goal}};
+    row.update(PassingCausesJson(w.causes));
+    rows.push_back(row);
+  }
+  return {{"kick_moved_min_m", card.kick_moved_min_m}, {"rows", rows}};
+}
+
+const char* kWorldDefinitions =
+    "to goal by the attackers: a to-goal trial whose last kick was an attacker's with no "
+    "opponent touching the ball after it. Saved: an attacker's shot on target (its unobstructed "
+    "roll would have entered the goal) that the goalie touched before its travel ended, the "
+    "paper's block (sec. 5.1.4). Opponents' long kicks: kicks that moved the ball at least the "
+    "stated distance before it rested, met a body, was grabbed or the trial ended; towards their "
+    "own goal when the displacement has any component towards it.";
+
+std::string WorldText(const PassingScorecard& card) {
+  std::string text = Format(
+      "the world (to goal by the attackers; on-target shots saved; opponents' kicks >= %.2g m "
+      "towards their own goal; safety cap):\n",
+      card.kick_moved_min_m);
+  for (const ScorecardWorldRow& w : card.world) {
+    const ScenarioCauses& c = w.causes;
+    text += Format("  %-3s %-8s to goal %d, by the attackers %s | saved %d of %d | %d of %d, %s | %d\n",
+                   ScenarioName(c.scenario).c_str(), w.team.c_str(), w.to_goal,
+                   ShareText(c.to_goal_by_attackers, c.trials, c.to_goal_by_attackers_ci).c_str(),
+                   c.shots_saved, c.shots_on_target, c.opponent_kicks_own_goal,
+                   c.opponent_kicks_moved,
+                   ShareText(c.opponent_kicks_own_goal, c.opponent_kicks_moved,
+                             c.opponent_kicks_own_goal_ci)
+                       .c_str(),
+                   c.safety_cap_ended);
+  }
+  return text;
+}
+
+void WorldHtml(HtmlReport& html, const PassingScorecard& card) {
+  html.Heading(2, "What the world did");
+  html.Paragraph(std::string(kWorldDefinitions) + " Long kicks here: at least " +
+                 Format("%.2g", card.kick_moved_min_m) + " m; intervals " +
+                 Percent(card.confidence) + " Wilson; \"all\" pools the scenarios.");
+  std::vector<std::vector<std::string>> rows;
+  for (const ScorecardWorldRow& w : card.world) {
+    const ScenarioCauses& c = w.causes;
+    rows.push_back(
+        {ScenarioName(c.scenario), w.team, std::to_string(c.trials), std::to_string(w.to_goal),
+         ShareText(c.to_goal_by_attackers, c.trials, c.to_goal_by_attackers_ci),
+         std::to_string(c.shots_saved) + " of " + std::to_string(c.shots_on_target),
+         std::to_string(c.opponent_kicks_own_goal) + " of " +
+             std::to_string(c.opponent_kicks_moved) + ": " +
+             ShareText(c.opponent_kicks_own_goal, c.opponent_kicks_moved,
+                       c.opponent_kicks_own_goal_ci),
+         std::to_string(c.safety_cap_ended)});
+  }
+  html.Table({"scenario", "team", "trials", "to goal", "to goal by the attackers (share of trials)",
+              "on-target shots saved", "opponents' long kicks towards their own goal",
+              "ended by the safety cap"},
+             rows);
+}
+
 }  // namespace
 
 Json PassingScorecardJson(const PassingScorecard& card) {
@@ -180,7 +258,8 @@ Json PassingScorecardJson(const PassingScorecard& card) {
           {"trials_per_scenario", card.trials},
           {"confidence", card.confidence},
           {"tables", tables},
-          {"claims", claims}};
+          {"claims", claims},
+          {"world", WorldJson(card)}};
 }
 
 std::string PassingScorecardText(const PassingScorecard& card) {
@@ -206,7 +285,7 @@ std::string PassingScorecardText(const PassingScorecard& card) {
   }
   text += "claims (CBR - reactive, paired):\n";
   for (const ClaimTally& c : card.claims) text += ClaimLine(c);
-  return text;
+  return text + WorldText(card);
 }
 
 std::string PassingScorecardHtml(const PassingScorecard& card) {
@@ -214,6 +293,7 @@ std::string PassingScorecardHtml(const PassingScorecard& card) {
                   TableNumbers(card) + ")");
   html.KeyValues(Header(card));
   ClaimsHtml(html, card);
+  WorldHtml(html, card);
   for (const ScorecardTable& t : card.tables) TableHtml(html, t);
   return html.Finish();
 }

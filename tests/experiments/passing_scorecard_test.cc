@@ -106,6 +106,34 @@ TEST(PassingScorecardTest, TallyOnHandMadeTrials) {
   EXPECT_EQ(time.holds, 0);
 }
 
+// The world rows: per team its scenario, then all pooled; "to goal" counts every goal, "by the
+// attackers" only those an attacker's kick sent.
+TEST(PassingScorecardTest, WorldRowsSplitToGoalByWhoSentTheBall) {
+  const PassingSetup setup = LoadSetup("dg", 4, {1});
+  PassingResult cbr = EmptyPassingResult(setup), reactive = EmptyPassingResult(setup);
+  for (int i = 0; i < 4; ++i) {
+    cbr.scenarios[0].trials[i] = Trial(TrialOutcome::kGoal, 0, 10.0);
+    cbr.scenarios[0].trials[i].counters.attacker_kick_sent = i < 3;
+    reactive.scenarios[0].trials[i] = Trial(TrialOutcome::kOut, 0, 10.0);
+  }
+  const PassingScorecard card = BuildPassingScorecard(Paper(), "experiments/ros2009_tables.json",
+                                                      TeamRun(setup, "cbr", cbr),
+                                                      TeamRun(setup, "reactive", reactive));
+  ASSERT_EQ(card.world.size(), 4u);  // cbr s1, cbr all, reactive s1, reactive all
+  EXPECT_EQ(card.world[0].team, "cbr");
+  EXPECT_EQ(card.world[0].causes.scenario, 1);
+  EXPECT_EQ(card.world[0].to_goal, 4);
+  EXPECT_EQ(card.world[0].causes.to_goal_by_attackers, 3);
+  EXPECT_EQ(card.world[1].causes.scenario, 0);
+  EXPECT_EQ(card.world[1].causes.trials, 4);
+  EXPECT_EQ(card.world[1].to_goal, 4);
+  EXPECT_EQ(card.world[3].team, "reactive");
+  EXPECT_EQ(card.world[3].to_goal, 0);
+  EXPECT_NE(PassingScorecardText(card).find("all cbr      to goal 4, by the attackers 75.0 %"),
+            std::string::npos)
+      << PassingScorecardText(card);
+}
+
 // Every cell of the paper's tables for the configuration, with our value beside it.
 void ExpectEveryCell(const PassingScorecard& card, const PaperTables& paper) {
   std::size_t tables = 0;
