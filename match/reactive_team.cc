@@ -128,13 +128,22 @@ RobotCommand ReactiveTeam::Decide(const Perception& p) {
   return command;
 }
 
+const Pose2* ReactiveTeam::OpponentNearBall(const Perception& p) const {
+  for (const Pose2& opponent : p.opponents) {
+    if ((opponent.p_F - p.p_F_ball).norm() <= params_.dodge_radius_m) return &opponent;
+  }
+  return nullptr;
+}
+
 RobotCommand ReactiveTeam::Hold(Memory& m, const Perception& p) const {
   const Vec2 goal(p.attack_sign * field_->HalfLength(), 0.0);
   const double goal_heading = HeadingTowards(p.p_F_ball, goal);
   const double aim_error = WrapAngle(goal_heading - p.pose.theta_rad);
   const double to_line_m = field_->HalfLength() - p.attack_sign * p.p_F_ball.x();
   const bool time_up = p.time_s - m.holding_since_s >= release_after_s_;
-  if ((to_line_m <= shoot_range_m_ && std::abs(aim_error) <= params_.aim_tolerance_rad) ||
+  const Pose2* opponent = OpponentNearBall(p);  // it blocks the shot: dodge it first
+  if ((opponent == nullptr && to_line_m <= shoot_range_m_ &&
+       std::abs(aim_error) <= params_.aim_tolerance_rad) ||
       time_up) {
     RobotCommand kick;
     kick.kind = CommandKind::kKick;
@@ -142,18 +151,16 @@ RobotCommand ReactiveTeam::Hold(Memory& m, const Perception& p) const {
     return kick;
   }
   double heading = goal_heading;
-  for (const Pose2& opponent : p.opponents) {
-    if ((opponent.p_F - p.p_F_ball).norm() > params_.dodge_radius_m) continue;
+  if (opponent != nullptr) {
     // Away from the opponent as seen along the robot's own heading, so that the turn never
     // sweeps the held ball through the opponent standing in the way.
-    double side = WrapAngle(HeadingTowards(p.p_F_ball, opponent.p_F) - p.pose.theta_rad);
+    double side = WrapAngle(HeadingTowards(p.p_F_ball, opponent->p_F) - p.pose.theta_rad);
     // Dead ahead (noiseless scenarios line robots up exactly): dodge towards the middle of the
     // field, where there is room; a rule in field terms, so the mirrored game plays the same.
     // (A ball "on" the middle line is on it within kLevelM: rounding, e.g. sin(pi) in the mirrored
     // game, must not pick the side.)
     if (std::abs(side) < 1e-9) side = (p.p_F_ball.y() >= -kLevelM ? 1.0 : -1.0) * p.attack_sign;
     heading = goal_heading + (side > 0.0 ? -1.0 : 1.0) * params_.dodge_angle_rad;
-    break;
   }
   RobotCommand walk;
   walk.kind = CommandKind::kWalk;

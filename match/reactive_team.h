@@ -17,9 +17,12 @@
 //    within dodge_radius_m of the ball it walks dodge_angle_deg off that line, away from the
 //    opponent (as seen along its own heading, so it never turns the ball through the opponent).
 //    It kicks the shoot kick when the goal line is within the kick's mean roll
-//    distance (v^2 / 2a of the kick model) and it faces the goal within aim_tolerance_deg, and
-//    the same kick forward when the ball would otherwise leave after the simulation's
-//    ball-holding limit (held for the limit minus the kick's kick_launch_s).
+//    distance (v^2 / 2a of the kick model), it faces the goal within aim_tolerance_deg and no
+//    opponent is within dodge_radius_m of the ball (the paper: such an opponent is "blocking a
+//    forward kick", sec. 5.3.1; near the goal the goalie too: "tries to score avoiding the goalie
+//    by either turning or dodging side to side"), and the same kick forward when the ball would
+//    otherwise leave after the simulation's ball-holding limit (held for the limit minus the
+//    kick's kick_launch_s).
 //  - supporter (a teammate owns the ball): backs up (walks away from the ball, the "backing up" of
 //    Table 2) while it is nearer than back_off_distance_m to the ball, until it is back_off_release_m further; otherwise
 //    it walks to the support point support_behind_m behind the ball and support_side_m to its own
@@ -78,6 +81,8 @@ class ReactiveTeam final : public TeamPolicy {
     double holding_since_s = 0.0;
   };
   bool ChooseChasing(Memory& m, const Perception& p) const;
+  // The first opponent within dodge_radius_m of the ball, or none.
+  const Pose2* OpponentNearBall(const Perception& p) const;
   RobotCommand Hold(Memory& m, const Perception& p) const;
   RobotCommand Support(Memory& m, const Perception& p, double distance_m) const;
 

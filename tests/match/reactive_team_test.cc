@@ -1,7 +1,8 @@
 // The reactive team's decisions on hand-made perceptions: every robot chases until its teammate
 // reports that it holds the ball; a supporter near the ball then backs up until it is the
 // release distance away; the
-// holder kicks within its kick's reach of the goal line when facing the goal, dodges an
+// holder kicks within its kick's reach of the goal line when facing the goal and no opponent is
+// within the dodge radius of the ball, dodges an
 // opponent ahead towards the middle of the field (the same in the mirrored game), and kicks at
 // the hold limit.
 #include "match/reactive_team.h"
@@ -109,6 +110,14 @@ TEST_F(ReactiveTeamTest, HolderShootsWithinItsKicksReachFacingTheGoal) {
   const RobotCommand walk = far.Decide(q);
   EXPECT_EQ(walk.kind, CommandKind::kWalk);
   EXPECT_GT(walk.v_R_mps.x(), 0.0);
+  // An opponent within the dodge radius blocks the shot (Ros et al. 2009, sec. 5.3.1): it dodges.
+  ReactiveTeam blocked = Team();
+  Perception b = p;
+  b.opponents = {Pose2{Vec2(x + params_.dodge_radius_m - 0.05, 0.0), kPi}};
+  EXPECT_EQ(blocked.Decide(b).kind, CommandKind::kWalk);
+  // One just outside it does not.
+  b.opponents = {Pose2{Vec2(x + params_.dodge_radius_m + 0.05, 0.0), kPi}};
+  EXPECT_EQ(Team().Decide(b).kind, CommandKind::kKick);
   // And kicks once it has held the ball for the hold limit minus the kick's time.
   q.time_s = 1.0 + sim_.ball_holding_limit_s - robot_.kick_launch_s;
   EXPECT_EQ(far.Decide(q).kind, CommandKind::kKick);
