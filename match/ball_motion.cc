@@ -3,13 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "planner/ball_roll.h"
 #include "planner/first_hit.h"
 #include "planner/ray_cast.h"
 
 namespace foresight {
 
 double BallRoll::SpeedAt(double s_m) const {
-  return std::sqrt(std::max(0.0, speed0_mps * speed0_mps - 2.0 * deceleration_mps2 * s_m));
+  return SpeedAfterRolling(speed0_mps, deceleration_mps2, s_m);
 }
 
 std::optional<BallRoll> RollFromOutcome(const Vec2& p_F_start, const Outcome& outcome,
@@ -52,7 +53,7 @@ std::optional<BodyHit> AdvanceRoll(BallRoll& roll, double dt_s, std::span<const 
   }
   const double s_hit = roll.travelled_m + first_hit;
   const double speed = roll.SpeedAt(s_hit);
-  const double t_hit = std::min((roll.speed0_mps - speed) / a, t);
+  const double t_hit = std::min(TimeToRoll(roll.speed0_mps, a, s_hit), t);
   const double step_end_s = roll.elapsed_s + dt_s;
   roll.travelled_m = s_hit;
   roll.length_m = s_hit;  // this roll ends at the body

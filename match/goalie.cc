@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "models/walk_command.h"
+#include "planner/ball_roll.h"
 
 namespace foresight {
 
@@ -53,9 +54,8 @@ bool Goalie::ShotToBlock(const Perception& p, const Vec2& ball, const Vec2& velo
   if (to_line_x * velocity.x() <= 0.0) return false;  // already past the goalie's line
   const double t_line_s = to_line_x / velocity.x();     // at constant speed
   const double path_m = speed * t_line_s;
-  const double discriminant = speed * speed - 2.0 * deceleration_mps2_ * path_m;
-  if (discriminant < 0.0) return false;  // stops before the line
-  const double arrive_s = (speed - std::sqrt(discriminant)) / deceleration_mps2_;
+  if (path_m > StopDistance(speed, deceleration_mps2_)) return false;  // stops before the line
+  const double arrive_s = TimeToRoll(speed, deceleration_mps2_, path_m);
   const double y_cross = ball.y() + velocity.y() * t_line_s;
   return std::abs(y_cross - p.pose.p_F.y()) <= block_half_span_m_ &&
          arrive_s <= params_.block_earliest_s;

@@ -12,8 +12,7 @@ namespace {
 // Speed after `travelled_m` of a leg launched at speed_mps whose free roll starts offset_m along
 // it (the same operations as planner/roll_lanes.cc).
 double SpeedAfter(double speed_mps, double a, double offset_m, double travelled_m) {
-  const double rolled_m = std::max(0.0, travelled_m - offset_m);
-  return std::sqrt(std::max(0.0, speed_mps * speed_mps - 2.0 * a * rolled_m));
+  return SpeedAfterRolling(speed_mps, a, std::max(0.0, travelled_m - offset_m));
 }
 
 // Time to cover travelled_m of such a leg: the offset at the launch speed, then the roll

@@ -12,6 +12,9 @@
 // posts is a goal, any other line is out. A ball that starts out or in a goal keeps that category.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include "planner/coarse_world.h"
 
 namespace foresight {
@@ -27,6 +30,18 @@ Category ClassifyPosition(const CoarseWorld& world, const Vec2& p_F);
 // Distance the ball travels before resting on open carpet: v^2 / (2 a).
 inline double StopDistance(double speed_mps, double deceleration_mps2) {
   return speed_mps * speed_mps / (2.0 * deceleration_mps2);
+}
+
+// Speed after rolling rolled_m from speed_mps: v^2 = v0^2 - 2 a s (0 once at rest).
+inline double SpeedAfterRolling(double speed_mps, double deceleration_mps2, double rolled_m) {
+  return std::sqrt(std::max(0.0, speed_mps * speed_mps - 2.0 * deceleration_mps2 * rolled_m));
+}
+
+// Time to roll rolled_m from speed_mps (the first root of s = v0 t - a t^2 / 2); at most the time
+// to rest, v0 / a, when the ball rests before rolled_m.
+inline double TimeToRoll(double speed_mps, double deceleration_mps2, double rolled_m) {
+  return (speed_mps - SpeedAfterRolling(speed_mps, deceleration_mps2, rolled_m)) /
+         deceleration_mps2;
 }
 
 }  // namespace foresight

@@ -141,3 +141,20 @@ TEST_F(BallRollTest, BallOutsideTheFieldStaysOutWhenKickedBackIn) {
 
 }  // namespace
 }  // namespace foresight
+
+namespace foresight {
+namespace {
+
+// The roll's kinematics against s(t) = v0 t - a t^2 / 2 and v(t) = v0 - a t at a chosen time.
+TEST(BallRollKinematicsTest, SpeedAndTimeAfterARollMatchTheClosedForm) {
+  const double v0 = 1.2, a = 0.3, t = 1.5;
+  const double s = v0 * t - 0.5 * a * t * t;
+  EXPECT_NEAR(SpeedAfterRolling(v0, a, s), v0 - a * t, 1e-12);
+  EXPECT_NEAR(TimeToRoll(v0, a, s), t, 1e-12);
+  // Beyond the rest distance the ball is at rest, reached at v0 / a.
+  EXPECT_EQ(SpeedAfterRolling(v0, a, StopDistance(v0, a) + 1.0), 0.0);
+  EXPECT_NEAR(TimeToRoll(v0, a, StopDistance(v0, a) + 1.0), v0 / a, 1e-12);
+}
+
+}  // namespace
+}  // namespace foresight
