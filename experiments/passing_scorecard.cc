@@ -238,6 +238,7 @@ PassingScorecard BuildPassingScorecard(const PaperTables& paper, const std::stri
     }
   }
   card.kick_moved_min_m = setup.params.kick_moved_min_m;
+  card.has_goalie = setup.config.HasGoalie();
   AddWorldRows(cbr, card.world);
   AddWorldRows(reactive, card.world);
   return card;

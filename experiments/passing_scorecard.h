@@ -94,6 +94,7 @@ struct PassingScorecard {
   std::vector<ScorecardTable> tables;
   std::vector<ClaimTally> claims;
   double kick_moved_min_m = 0.0;  // the opponents' kicks counted moved at least this far
+  bool has_goalie = false;        // the opponents have a goalie (saves mean something)
   std::vector<ScorecardWorldRow> world;  // per team: its scenarios, then all of them pooled
 };
 

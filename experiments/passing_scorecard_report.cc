@@ -176,6 +176,12 @@ std::string ShareText(int count, int of, const Interval& ci) {
                 kPercentOf * ci.high);
 }
 
+// "saved S of N", or "no goalie, N on target" where the opponents have none to save them.
+std::string SavedText(const PassingScorecard& card, const ScenarioCauses& c) {
+  if (!card.has_goalie) return Format("no goalie, %d on target", c.shots_on_target);
+  return Format("saved %d of %d", c.shots_saved, c.shots_on_target);
+}
+
 Json WorldJson(const PassingScorecard& card) {
   Json rows = Json::array();
   for (const ScorecardWorldRow& w : card.world) {
@@ -186,7 +192,9 @@ Json WorldJson(const PassingScorecard& card) {
     row.update(PassingCausesJson(w.causes));
     rows.push_back(row);
   }
-  return {{"kick_moved_min_m", card.kick_moved_min_m}, {"rows", rows}};
+  return {{"kick_moved_min_m", card.kick_moved_min_m},
+          {"opponents_have_goalie", card.has_goalie},
+          {"rows", rows}};
 }
 
 const char* kWorldDefinitions =
@@ -204,10 +212,10 @@ std::string WorldText(const PassingScorecard& card) {
       card.kick_moved_min_m);
   for (const ScorecardWorldRow& w : card.world) {
     const ScenarioCauses& c = w.causes;
-    text += Format("  %-3s %-8s to goal %d, by the attackers %s | saved %d of %d | %d of %d, %s | %d\n",
+    text += Format("  %-3s %-8s to goal %d, by the attackers %s | %s | %d of %d, %s | %d\n",
                    ScenarioName(c.scenario).c_str(), w.team.c_str(), w.to_goal,
                    ShareText(c.to_goal_by_attackers, c.trials, c.to_goal_by_attackers_ci).c_str(),
-                   c.shots_saved, c.shots_on_target, c.opponent_kicks_own_goal,
+                   SavedText(card, c).c_str(), c.opponent_kicks_own_goal,
                    c.opponent_kicks_moved,
                    ShareText(c.opponent_kicks_own_goal, c.opponent_kicks_moved,
                              c.opponent_kicks_own_goal_ci)
@@ -228,7 +236,7 @@ void WorldHtml(HtmlReport& html, const PassingScorecard& card) {
     rows.push_back(
         {ScenarioName(c.scenario), w.team, std::to_string(c.trials), std::to_string(w.to_goal),
          ShareText(c.to_goal_by_attackers, c.trials, c.to_goal_by_attackers_ci),
-         std::to_string(c.shots_saved) + " of " + std::to_string(c.shots_on_target),
+         SavedText(card, c),
          std::to_string(c.opponent_kicks_own_goal) + " of " +
              std::to_string(c.opponent_kicks_moved) + ": " +
              ShareText(c.opponent_kicks_own_goal, c.opponent_kicks_moved,

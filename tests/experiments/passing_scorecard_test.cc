@@ -132,6 +132,7 @@ TEST(PassingScorecardTest, WorldRowsSplitToGoalByWhoSentTheBall) {
   EXPECT_NE(PassingScorecardText(card).find("all cbr      to goal 4, by the attackers 75.0 %"),
             std::string::npos)
       << PassingScorecardText(card);
+  EXPECT_NE(PassingScorecardText(card).find("| saved 0 of 0 |"), std::string::npos);
 }
 
 // Every cell of the paper's tables for the configuration, with our value beside it.
@@ -173,6 +174,9 @@ TEST(PassingScorecardTest, TinyRunHasEveryPaperCell) {
     EXPECT_EQ(card.kicks, "kicks/aibo.json");
     EXPECT_EQ(card.executor, "coarse");
     EXPECT_EQ(card.tables.size(), std::string(config) == "dg" ? 3u : 2u);
+    EXPECT_EQ(card.has_goalie, std::string(config) == "dg");  // 2D: no saves to report
+    EXPECT_EQ(PassingScorecardText(card).find("no goalie") != std::string::npos,
+              std::string(config) == "2d");
     ExpectEveryCell(card, paper);
     // A claim on one column is the paired comparison's difference, in the paper's units.
     const PassingComparison comparison = ComparePassing(
