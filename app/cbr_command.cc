@@ -9,6 +9,7 @@
 #include "app/cli_values.h"
 #include "app/report_text.h"
 #include "cbr/case_base.h"
+#include "cbr/case_reach.h"
 #include "cbr/own_situation.h"
 #include "cbr/problem.h"
 #include "cbr/retrieval.h"
@@ -40,6 +41,25 @@ void Print(const std::string& text) {
   if (!std::cout) throw InputError("cannot write to standard output");
 }
 
+// The retrieval parameters of `o` for the case base's robot: kick trajectories end where the
+// kicks of `kicks` end (cbr/retrieval_params.h UseKickModelReach).
+RetrievalParams ParamsFor(const CbrOptions& o, const fs::path& models, const FieldSpec& field,
+                          const KickModel& kicks) {
+  RetrievalParams params = LoadRetrievalParams(ParamsPath(o, models), field);
+  UseKickModelReach(kicks, &params);
+  return params;
+}
+
+// The kick model `cbr check --kicks` names, or the case base's; every kick a case plays must be
+// in it.
+KickModel CheckKicks(const CbrOptions& o, const fs::path& models, const LoadedCaseBase& base) {
+  if (o.kicks_file.empty()) return base.rules.kicks;
+  const fs::path file = ResolveModelFile(o.kicks_file, DataFolder::kKicks, ".", models);
+  KickModel kicks = LoadKickModel(file);
+  RequireCaseKicks(base.cases, kicks, file);
+  return kicks;
+}
+
 // Loads the problem, the case base and the parameters `o` names, retrieves, and hands the run to
 // `use` (the run points into the case base, which lives only during the call).
 template <class Use>
@@ -52,7 +72,7 @@ auto WithRetrieval(const CbrOptions& o, const fs::path& models, Use&& use) {
   run.problem = LoadProblem(run.problem_file, models);
   const LoadedCaseBase base = LoadCaseBase(run.case_base_path, models);
   run.base = &base;
-  run.params = LoadRetrievalParams(run.params_file, base.rules.field);
+  run.params = ParamsFor(o, models, base.rules.field, base.rules.kicks);
   run.cases = base.cases.Defending(run.problem.defending);
   run.result = Retrieve(run.cases, run.problem, run.params);
   return use(run, base);
@@ -97,7 +117,8 @@ int RunCheck(const CbrOptions& o, const fs::path& models) {
   s += Format("overlapping stored cases: %zu\n", warnings.size());
   // A case whose own opponent is on its own ball path is dead data: it is never retrieved in the
   // situation it was written for. That fails the check.
-  const RetrievalParams params = LoadRetrievalParams(ParamsPath(o, models), base.rules.field);
+  const KickModel kicks = CheckKicks(o, models, base);
+  const RetrievalParams params = ParamsFor(o, models, base.rules.field, kicks);
   int blocked = 0;
   for (const DefendingGoal goal : {DefendingGoal::kCyan, DefendingGoal::kYellow}) {
     for (const Case& c : cases.Defending(goal)) {
@@ -116,9 +137,26 @@ int RunCheck(const CbrOptions& o, const fs::path& models) {
   }
   s += Format("cases blocked by their own opponents: %d of %zu\n", blocked,
               cases.HandWrittenCount());
-  s += blocked == 0 ? "case base OK\n" : "case base FAILED\n";
+  // A case that asks a kick for more than it carries is a plan the robot cannot play.
+  int unplayable = 0;
+  if (!params.reach_sigmas) {
+    s += "kick reach: not checked (the retrieval parameters set no reach_sigmas)\n";
+  } else {
+    for (const Case& c : cases.Defending(DefendingGoal::kCyan)) {
+      if (c.transform != CaseTransform::kOriginal) continue;  // mirrors have the same lengths
+      const std::vector<ReachFinding> findings = CheckCaseReach(c, kicks, params);
+      unplayable += findings.empty() ? 0 : 1;
+      for (const ReachFinding& f : findings) {
+        s += "error: case " + c.name + ": " + DescribeFinding(f, params) + "\n";
+      }
+    }
+    s += Format("cases asking more than their kicks carry (%s, reach at %g sd): %d of %zu\n",
+                kicks.robot.c_str(), *params.reach_sigmas, unplayable, cases.HandWrittenCount());
+  }
+  const bool ok = blocked == 0 && unplayable == 0;
+  s += ok ? "case base OK\n" : "case base FAILED\n";
   Print(s);
-  return blocked == 0 ? 0 : 1;
+  return ok ? 0 : 1;
 }
 
 int RunAtlas(const CbrOptions& o, const fs::path& models) {
@@ -129,7 +167,7 @@ int RunAtlas(const CbrOptions& o, const fs::path& models) {
   input.models_dir = models;
   const LoadedCaseBase base = LoadCaseBase(input.case_base_path, models);
   input.base = &base;
-  input.params = LoadRetrievalParams(input.params_file, base.rules.field);
+  input.params = ParamsFor(o, models, base.rules.field, base.rules.kicks);
   const std::string html = CbrAtlasHtml(input);
   const fs::path page = fs::path(o.out_dir) / "atlas.html";
   WriteReportFiles(o.out_dir, "--out", {{page, html}});
@@ -165,6 +203,9 @@ void AddCbrCommand(CLI::App& app, CbrOptions& options) {
   options.check->add_option("--params", options.params_file,
                             "Retrieval parameters for the free-path test (default: "
                             "MODELS/cbr/retrieval.json)");
+  options.check->add_option("--kicks", options.kicks_file,
+                            "Kick model the cases' kicks are checked against: a name under "
+                            "MODELS/kicks or a file (default: the case base's)");
   options.atlas = cbr->add_subcommand("atlas", "Draw every hand-written case on one HTML page");
   options.atlas->add_option("--out", options.out_dir, "Output folder (replaced whole)")->required();
   add_base(options.atlas);

@@ -1,6 +1,8 @@
 // `foresight cbr`: case-based coordinated action selection (Ros et al. 2009) on the command line.
 //   cbr retrieve: the case retrieved for a problem file, with the ranking and every rejection;
-//   cbr check:    loads and validates a case base, prints its counts and overlap warnings;
+//   cbr check:    loads and validates a case base, prints its counts and overlap warnings, and
+//                 fails on a case blocked by its own opponent or asking its kicks for more than
+//                 they carry (cbr/case_reach.h);
 //   cbr atlas:    an HTML page drawing every hand-written case.
 #pragma once
 
@@ -15,6 +17,7 @@ struct CbrOptions {
   std::string problem_file;
   std::string case_base;    // folder or settings file; empty: MODELS/cases
   std::string params_file;  // empty: MODELS/cbr/retrieval.json
+  std::string kicks_file;   // cbr check: the kick model to check reach against; empty: the base's
   bool json = false;
   bool verbose = false;
   std::string svg_file;

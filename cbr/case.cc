@@ -49,6 +49,16 @@ std::string_view CaseTransformName(CaseTransform transform) {
   return kTransformNames.Name(transform);
 }
 
+int BallGetter(const Case& c) {
+  for (std::size_t i = 0; i < c.teammates.size(); ++i) {
+    const std::vector<CaseAction>& actions = c.teammates[i].actions;
+    if (!actions.empty() && actions.front().type == ActionType::kGetBall) {
+      return static_cast<int>(i);
+    }
+  }
+  return -1;
+}
+
 double AttackSign(DefendingGoal defending) {
   return defending == DefendingGoal::kCyan ? 1.0 : -1.0;
 }

@@ -91,6 +91,10 @@ std::optional<ActionType> ParseActionType(std::string_view name);
 std::string ActionTypeNames();  // "get_ball, kick, ..." for messages
 std::string_view CaseTransformName(CaseTransform transform);
 
+// The case teammate (index into c.teammates) whose first action is get_ball, the first such in
+// case order (sec. 2.2: "at least one robot has as its first action to get the ball"), or -1.
+int BallGetter(const Case& c);
+
 // The goal the team of `defending` attacks: yellow (+x) for cyan, cyan (-x) for yellow; +1 or -1.
 double AttackSign(DefendingGoal defending);
 

@@ -205,4 +205,17 @@ std::vector<std::string> CheckCaseBase(const CaseBase& base) {
   return warnings;
 }
 
+void RequireCaseKicks(const CaseBase& base, const KickModel& kicks,
+                      const std::filesystem::path& kicks_file) {
+  for (const Case& c : base.Defending(DefendingGoal::kCyan)) {
+    for (const CaseTeammate& tm : c.teammates) {
+      for (const CaseAction& a : tm.actions) {
+        if (a.kick.empty() || kicks.Find(a.kick)) continue;
+        throw InputError(kicks_file.string() + ": kicks: no kick '" + a.kick + "', which case " +
+                         c.name + " plays (the model has: " + kicks.Names() + ")");
+      }
+    }
+  }
+}
+
 }  // namespace foresight

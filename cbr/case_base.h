@@ -50,6 +50,12 @@ struct LoadedCaseBase {
   KickMirrors kick_mirrors;
 };
 
+// Every kick a case of `base` plays must be a kick of `kicks` (the model of the robots that play
+// the cases, read from `kicks_file`); InputError "KICKS_FILE: kicks: no kick 'K', which case C
+// plays (the model has: ...)" otherwise.
+void RequireCaseKicks(const CaseBase& base, const KickModel& kicks,
+                      const std::filesystem::path& kicks_file);
+
 // The shipped case base: MODELS_DIR/cases (models/model_paths.h).
 std::filesystem::path DefaultCaseBasePath(const std::filesystem::path& models_dir);
 

@@ -37,12 +37,9 @@ CasePlay MakeCasePlay(const Case& c, int case_index, int cycle, const Vec2& p_F_
   play.p_F_ball = p_F_ball;
   play.robots = robots;
   for (int i = 0; i < play.TeammateCount(); ++i) {
-    const CaseTeammate& tm = c.teammates[static_cast<std::size_t>(i)];
-    play.adapted_F[static_cast<std::size_t>(i)] = play.Adapt(tm.p_F);
-    if (play.getter < 0 && !tm.actions.empty() && tm.actions.front().type == ActionType::kGetBall) {
-      play.getter = i;
-    }
+    play.adapted_F[static_cast<std::size_t>(i)] = play.Adapt(c.teammates[static_cast<std::size_t>(i)].p_F);
   }
+  play.getter = BallGetter(c);
   Problem problem;
   problem.p_F_ball = p_F_ball;
   problem.defending = c.defending;

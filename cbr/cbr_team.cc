@@ -68,6 +68,11 @@ RobotCommand CbrTeam::Decide(const Perception& p) {
 void CbrTeam::Account(Robot& r, const Perception& p) {
   if (r.last_time_s >= 0.0) counters_.phase_time_s[At(static_cast<int>(r.phase))] += p.time_s - r.last_time_s;
   r.last_time_s = p.time_s;
+  if (r.last_ball_time_s >= 0.0 && p.time_s > r.last_ball_time_s) {
+    r.ball_speed_mps = (p.p_F_ball - r.last_ball_F).norm() / (p.time_s - r.last_ball_time_s);
+  }
+  r.last_ball_F = p.p_F_ball;
+  r.last_ball_time_s = p.time_s;
 }
 
 void CbrTeam::Hear(Robot& r, const Perception& p) {
@@ -160,7 +165,7 @@ void CbrTeam::StartCycle(Robot& r, const Perception& p) {
   }
 }
 
-void CbrTeam::Retrieve(Robot& r, const Perception& p) {
+Problem CbrTeam::PerceivedProblem(const Robot& r, const Perception& p) const {
   Problem problem;
   problem.p_F_ball = p.p_F_ball;
   problem.defending = DefendingOf(p);
@@ -170,43 +175,81 @@ void CbrTeam::Retrieve(Robot& r, const Perception& p) {
         {static_cast<int>(i) + 1, static_cast<int>(i) == p.self ? p.pose : p.teammates[i]});
   }
   for (const Pose2& o : p.opponents) problem.opponents.push_back(o.p_F);
+  return problem;
+}
+
+bool CbrTeam::MayStartCycle(const Robot& r, const Perception& p) const {
+  const CbrTeamParams& params = *setup_.skills.team;
+  if (OpponentHasBall(p, setup_.skills)) return false;
+  if (!params.ball_race) return true;
+  return r.ball_speed_mps < params.race.speed_mps &&
+         RunBallRace(PerceivedProblem(r, p), params.race).won;
+}
+
+void CbrTeam::Retrieve(Robot& r, const Perception& p) {
+  const Problem problem = PerceivedProblem(r, p);
   const std::span<const Case> cases = CasesFor(p);
   foresight::Retrieve(cases, problem, *setup_.skills.retrieval, &scratch_);
-  const CaseEvaluation* chosen = ChooseCase(cases, problem);
-  if (chosen == nullptr) {
+  const std::optional<Choice> chosen = ChooseCase(cases, problem);
+  if (!chosen) {
     ++counters_.no_case;
     Send(r, p, CbrMessageKind::kNoCase);
     Enter(r, CbrPhase::kIdle, p.time_s);
     r.idle_until_s = p.time_s + setup_.skills.team->no_case_retry_s;
     return;
   }
-  const CaseEvaluation& e = *chosen;
+  const Correspondence& match = chosen->correspondence;
   CaseRobots robots{-1, -1, -1, -1};
-  for (int i = 0; i < e.correspondence.count; ++i) {
-    robots[At(i)] = problem.teammates[At(e.correspondence.problem_index[At(i)])].id - 1;
+  for (int i = 0; i < match.count; ++i) {
+    robots[At(i)] = problem.teammates[At(match.problem_index[At(i)])].id - 1;
   }
-  counters_.CountCase(e.correspondence.count);
-  Send(r, p, CbrMessageKind::kCase, e.case_index, PackRobots(robots));
-  Adopt(r, p, r.cycle, e.case_index, robots, p.p_F_ball);
+  counters_.CountCase(match.count);
+  Send(r, p, CbrMessageKind::kCase, chosen->case_index, PackRobots(robots));
+  Adopt(r, p, r.cycle, chosen->case_index, robots, p.p_F_ball);
 }
 
-const CaseEvaluation* CbrTeam::ChooseCase(std::span<const Case> cases, const Problem& problem) {
-  const PassTimingParams& timing = setup_.skills.team->pass_timing;
-  if (!timing.enabled) return scratch_.Best();
-  // The timing-aware check: the best-ranked candidate whose passes are likely to arrive.
+std::optional<CbrTeam::Choice> CbrTeam::ChooseCase(std::span<const Case> cases,
+                                                   const Problem& problem) {
+  const CbrTeamParams& team = *setup_.skills.team;
+  const RetrievalParams& retrieval = *setup_.skills.retrieval;
+  BallRace race;
+  if (team.ball_race) {
+    race = RunBallRace(problem, team.race);
+    if (!race.won) {
+      ++counters_.race_lost;
+      return std::nullopt;
+    }
+  }
   for (int index : scratch_.ranking) {
     const CaseEvaluation& e = *scratch_.Find(index);
-    const CaseBallPath path =
-        BuildBallPath(problem, cases[At(index)],
-                      std::span<const Vec2>(e.correspondence.adapted_F.data(),
-                                            At(e.correspondence.count)),
-                      *setup_.skills.retrieval);
-    if (PassSuccess(path, problem.opponents, *setup_.skills.kicks, timing) >= timing.min_success) {
-      return &e;
+    const Case& c = cases[At(index)];
+    Choice choice{index, e.correspondence};
+    const int getter = BallGetter(c);
+    if (team.ball_race && getter >= 0 &&
+        choice.correspondence.problem_index[At(getter)] != race.fastest) {
+      choice.correspondence = FindCorrespondence(problem, c, retrieval.cost, retrieval.thr_cost_m,
+                                                 FixedPair{getter, race.fastest});
+      if (!choice.correspondence.feasible) {
+        ++counters_.race_skipped;
+        continue;
+      }
     }
-    ++counters_.timing_rejected;
+    if (team.pass_timing.enabled) {
+      // The timing-aware check: the best-ranked candidate whose passes are likely to arrive.
+      const CaseBallPath path =
+          BuildBallPath(problem, c,
+                        std::span<const Vec2>(choice.correspondence.adapted_F.data(),
+                                              At(choice.correspondence.count)),
+                        retrieval);
+      if (PassSuccess(path, problem.opponents, *setup_.skills.kicks, team.pass_timing) <
+          team.pass_timing.min_success) {
+        ++counters_.timing_rejected;
+        continue;
+      }
+    }
+    return choice;
   }
-  return nullptr;
+  return std::nullopt;
 }
 
 void CbrTeam::Adopt(Robot& r, const Perception& p, int cycle, int case_index,
@@ -233,7 +276,7 @@ void CbrTeam::Abort(Robot& r, const Perception& p, AbortReason reason) {
 RobotCommand CbrTeam::Act(Robot& r, const Perception& p) {
   const CbrTeamParams& params = *setup_.skills.team;
   if (r.phase == CbrPhase::kIdle && p.time_s >= r.idle_until_s &&
-      Selector(r.team) == p.self && !OpponentHasBall(p, setup_.skills)) {
+      Selector(r.team) == p.self && MayStartCycle(r, p)) {
     StartCycle(r, p);
   }
   if (r.phase == CbrPhase::kAwaitCase && p.time_s - r.phase_since_s > params.await_case_timeout_s) {

@@ -27,6 +27,14 @@
 // with release_kick, whatever its state (the league's holding rule binds both teams); and no
 // cycle starts while an opponent has the ball (its body touches it): the default behaviour
 // fights for it first, since any case would at once be aborted as "ball lost".
+// With ball_race (cbr/ball_race.h, models/cbr/team.json) a cycle also waits until the ball
+// rests (rolls slower than the robots walk: a ball at walking speed rolls on at most v^2 / 2a,
+// inside a case's ball scope) and the team reaches it first; meanwhile, and after an abort for a
+// lost ball until then, the default behaviour plays (so a team that has just lost the ball does
+// not retrieve a case and abort it again at once). In a reused case the robot that gets the ball
+// is the team's fastest to it: a candidate whose best correspondence sends another robot is
+// matched again with that robot fixed (sec. 3.2's cost among those matchings, within thr_c) or
+// passed over for the next candidate.
 #pragma once
 
 #include <array>
@@ -82,6 +90,9 @@ class CbrTeam final : public TeamPolicy {
     bool was_holding = false;
     double holding_since_s = 0.0;
     bool executing_started = false;
+    Vec2 last_ball_F{0.0, 0.0};  // the ball a step ago, for its speed
+    double last_ball_time_s = -1.0;
+    double ball_speed_mps = 0.0;
     std::deque<TeamMessage> outbox;
   };
 
@@ -102,9 +113,18 @@ class CbrTeam final : public TeamPolicy {
   RobotCommand Default(const Perception& p);
   std::span<const Case> CasesFor(const Perception& p) const;
   static DefendingGoal DefendingOf(const Perception& p);
-  // The retrieved case, or with the timing-aware pass check the best-ranked candidate whose
-  // estimated pass success reaches min_success; nullptr for none.
-  const CaseEvaluation* ChooseCase(std::span<const Case> cases, const Problem& problem);
+  // The problem robot `r` perceives: the ball, the present teammates, the opponents.
+  Problem PerceivedProblem(const Robot& r, const Perception& p) const;
+  // Whether a cycle may start now (the ball free, and with ball_race at rest and won).
+  bool MayStartCycle(const Robot& r, const Perception& p) const;
+  // The case to reuse and its correspondence: the best-ranked candidate (with ball_race, whose
+  // getter is the team's fastest robot; with the timing-aware pass check, whose estimated pass
+  // success reaches min_success); nullopt for none.
+  struct Choice {
+    int case_index = -1;
+    Correspondence correspondence;
+  };
+  std::optional<Choice> ChooseCase(std::span<const Case> cases, const Problem& problem);
 
   CbrTeamSetup setup_;
   TeamPolicy* default_;

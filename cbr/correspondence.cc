@@ -13,6 +13,7 @@ struct Search {
   double d[kMaxTeammates][kMaxTeammates]{};  // d[case][problem]
   CostFunction cost = CostFunction::kSum;
   double thr = 0.0;
+  FixedPair fixed;
   std::array<int, kMaxTeammates> current{};
   bool used[kMaxTeammates]{};
   // The best feasible matching.
@@ -43,7 +44,7 @@ struct Search {
     }
     if (i >= kMaxTeammates) return;  // unreachable (m <= kMaxTeammates); tells the compiler
     for (int j = 0; j < n; ++j) {
-      if (used[j]) continue;
+      if (used[j] || (i == fixed.case_index && j != fixed.problem_index)) continue;
       used[j] = true;
       current[i] = j;
       Visit(i + 1, sum + d[i][j], std::max(max, d[i][j]));
@@ -67,8 +68,9 @@ CostKey MakeCostKey(CostFunction cost, double sum_m, double max_m) {
 }
 
 Correspondence FindCorrespondence(const Problem& problem, const Case& c, CostFunction cost,
-                                  double thr_cost_m) {
+                                  double thr_cost_m, FixedPair fixed) {
   Search s;
+  s.fixed = fixed;
   s.m = static_cast<int>(c.teammates.size());
   s.n = static_cast<int>(problem.teammates.size());
   assert(s.m >= 1 && s.m <= s.n && s.n <= kMaxTeammates);

@@ -56,9 +56,17 @@ inline Vec2 AdaptedPosition(const Problem& problem, const Case& c, const Vec2& c
   return case_p_F - c.p_F_ball + problem.p_F_ball;
 }
 
-// The best feasible matching, or (feasible = false) the explanation why there is none.
+// A robot the matching must use: case teammate `case_index` is played by problem teammate
+// `problem_index` (the CBR team's ball race, cbr/ball_race.h). None by default.
+struct FixedPair {
+  int case_index = -1;
+  int problem_index = -1;
+};
+
+// The best feasible matching (among those with `fixed`, when given), or (feasible = false) the
+// explanation why there is none.
 // Precondition: 1 <= case teammates <= problem teammates <= kMaxTeammates.
 Correspondence FindCorrespondence(const Problem& problem, const Case& c, CostFunction cost,
-                                  double thr_cost_m);
+                                  double thr_cost_m, FixedPair fixed = {});
 
 }  // namespace foresight

@@ -55,14 +55,7 @@ CaseBallPath BuildBallPath(const Problem& problem, const Case& c, std::span<cons
                            const RetrievalParams& params) {
   CaseBallPath path;
   const int m = static_cast<int>(c.teammates.size());
-  int robot = -1;
-  for (int i = 0; i < m; ++i) {
-    if (!c.teammates[i].actions.empty() &&
-        c.teammates[i].actions.front().type == ActionType::kGetBall) {
-      robot = i;
-      break;
-    }
-  }
+  int robot = BallGetter(c);
   if (robot < 0) return path;
   std::array<std::size_t, kMaxTeammates> cursor{};
   Vec2 ball = problem.p_F_ball;

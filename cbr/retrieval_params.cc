@@ -8,6 +8,7 @@
 #include "common/geometry.h"
 #include "common/json_reader.h"
 #include "models/kick_model.h"
+#include "planner/kick_reach.h"
 
 namespace foresight {
 namespace {
@@ -103,6 +104,7 @@ void RetrievalParams::Validate() const {
   }
   RequirePositive("goal_x_m", goal_x_m);
   RequireInRange("width_sigmas", width_sigmas, 0.0, 5.0);
+  if (reach_sigmas) RequireInRange("reach_sigmas", *reach_sigmas, -5.0, 5.0);
   RequireNonNegative("opponent_radius_m", opponent_radius_m);
   RequireNonNegative("ball_radius_m", ball_radius_m);
   ValidateKick("default_kick.", default_kick);
@@ -117,19 +119,32 @@ void RetrievalParams::Validate() const {
   }
 }
 
+namespace {
+// The entry of kick `name`, added with the default widths when there is none.
+KickTrajectory& EntryFor(const std::string& name, RetrievalParams* params) {
+  auto it = std::find_if(params->kicks.begin(), params->kicks.end(),
+                         [&](const KickTrajectory& k) { return k.kick == name; });
+  if (it != params->kicks.end()) return *it;
+  KickTrajectory k = params->default_kick;
+  k.kick = name;
+  params->kicks.push_back(k);
+  return params->kicks.back();
+}
+}  // namespace
+
 void UseKickModelWidths(const KickModel& model, RetrievalParams* params) {
   for (const KickSpec& spec : model.kicks) {
-    auto it = std::find_if(params->kicks.begin(), params->kicks.end(),
-                           [&](const KickTrajectory& k) { return k.kick == spec.name; });
-    if (it == params->kicks.end()) {
-      KickTrajectory k = params->default_kick;
-      k.kick = spec.name;
-      params->kicks.push_back(k);
-      it = params->kicks.end() - 1;
-    }
-    it->sigma_direction_rad = spec.sigma_direction_rad;
+    EntryFor(spec.name, params).sigma_direction_rad = spec.sigma_direction_rad;
   }
   params->widths = TrajectoryWidths::kKickModel;
+}
+
+void UseKickModelReach(const KickModel& model, RetrievalParams* params) {
+  if (!params->reach_sigmas) return;
+  for (const KickSpec& spec : model.kicks) {
+    EntryFor(spec.name, params).reach_m =
+        RollDistanceAtSigmas(spec, model.rolling_deceleration_mps2, *params->reach_sigmas);
+  }
 }
 
 RetrievalParams LoadRetrievalParams(const std::filesystem::path& file, const FieldSpec& field) {
@@ -137,7 +152,7 @@ RetrievalParams LoadRetrievalParams(const std::filesystem::path& file, const Fie
   JsonObject root = doc.Root();
   root.RejectUnknownKeys({"thr_ball", "thr_cost_m", "thr_trajectory", "thr_opponent", "bands",
                           "cost", "order", "widths", "width_sigmas", "default_kick", "kicks",
-                          "free_path", "opponent_similarity"});
+                          "free_path", "opponent_similarity", "reach_sigmas"});
   RetrievalParams p;
   p.thr_ball = root.Number("thr_ball");
   p.thr_cost_m = root.Number("thr_cost_m");
@@ -173,6 +188,7 @@ RetrievalParams LoadRetrievalParams(const std::filesystem::path& file, const Fie
   p.width_sigmas = root.Number("width_sigmas");
   p.free_path = root.BoolOr("free_path", true);
   p.opponent_similarity = root.BoolOr("opponent_similarity", true);
+  if (root.Has("reach_sigmas")) p.reach_sigmas = root.Number("reach_sigmas");
   p.goal_x_m = field.HalfLength();
   p.opponent_radius_m = field.default_obstacle_radius_m;
   p.ball_radius_m = field.ball.radius_m;

@@ -77,6 +77,9 @@ struct RetrievalParams {
   double ball_radius_m = 0.042;     // four_legged.json ball.radius_m
   KickTrajectory default_kick{"default"};
   std::vector<KickTrajectory> kicks;
+  // z of the roll at which a kick's trajectory ends (planner/kick_reach.h), set per kick by
+  // UseKickModelReach; absent: trajectories run to their targets (the paper's ball path).
+  std::optional<double> reach_sigmas;
   // Ablation switches (issue 15; the paper always uses both): without the free-path filter no
   // case is rejected for an opponent on its ball path; without opponent similarity every
   // candidate fulfils 0 conditions, so that criterion never decides.
@@ -91,6 +94,11 @@ struct RetrievalParams {
 // Copies each kick's sigma_direction_rad from `model` into params->kicks (adding entries with
 // the default widths for kicks that have none) and selects TrajectoryWidths::kKickModel.
 void UseKickModelWidths(const KickModel& model, RetrievalParams* params);
+
+// With params->reach_sigmas: sets every kick's reach_m to the roll of `model`'s kick at
+// reach_sigmas sd of its launch speed (adding entries with the default widths for kicks that have
+// none), so a case's ball path ends where its kicks end. Without: nothing changes.
+void UseKickModelReach(const KickModel& model, RetrievalParams* params);
 
 // Reads `file`; the goal line, the opponents' and the ball's radii come from `field` (the field
 // the case base is written for), not from the file, so no number is written twice.

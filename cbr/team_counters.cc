@@ -25,7 +25,9 @@ std::vector<TeamPolicy::Counter> CbrTeamCounters::List() const {
                                         {"cases_individual", static_cast<double>(individual)},
                                         {"cases_cooperative", static_cast<double>(cooperative)},
                                         {"no_case", static_cast<double>(no_case)},
-                                        {"timing_rejected", static_cast<double>(timing_rejected)}};
+                                        {"timing_rejected", static_cast<double>(timing_rejected)},
+                                        {"race_lost", static_cast<double>(race_lost)},
+                                        {"race_skipped", static_cast<double>(race_skipped)}};
   for (int i = 0; i < kAbortReasonCount; ++i) {
     c.push_back({"aborts_" + std::string(AbortReasonName(static_cast<AbortReason>(i))),
                  static_cast<double>(aborts[static_cast<std::size_t>(i)])});

@@ -25,6 +25,8 @@ struct CbrTeamCounters {
   int cooperative = 0;
   int no_case = 0;
   int timing_rejected = 0;  // candidates the timing-aware pass check turned down
+  int race_lost = 0;        // retrievals refused: an opponent reaches the ball first
+  int race_skipped = 0;     // candidates whose getter could not be the team's fastest robot
   std::array<int, kAbortReasonCount> aborts{};  // cycles aborted, by the first reason
   int last_aborted_cycle = -1;
   std::array<double, kCbrPhaseCount> phase_time_s{};  // summed over the robots

@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "cbr/ball_race.h"
 #include "cbr/pass_timing.h"
 
 namespace foresight {
@@ -38,6 +39,12 @@ struct CbrTeamParams {
   // enabled, reaction_s, samples, time_step_s and min_success; the walking speeds and reach
   // are the match's (set by whoever puts the team on a field).
   PassTimingParams pass_timing;
+  // The ball race (cbr/ball_race.h): with ball_race, a cycle starts only when the ball rests (it
+  // rolls slower than a robot walks) and the team reaches it first, and the robot that gets the
+  // ball in a reused case is the team's fastest to it. The file gives ball_race; the speed,
+  // reach and tie are the match's (set by whoever puts the team on a field).
+  bool ball_race = false;
+  RaceParams race;
 
   void Validate() const;
 };

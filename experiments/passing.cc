@@ -17,20 +17,6 @@ namespace foresight {
 namespace {
 const char* const kTeams = "reactive, cbr, both";
 
-// Every kick a case names must be one the match's kick model knows.
-void RequireCaseKicks(const LoadedCaseBase& base, const KickModel& kicks,
-                      const std::filesystem::path& kicks_file) {
-  for (const Case& c : base.cases.Defending(DefendingGoal::kCyan)) {
-    for (const CaseTeammate& tm : c.teammates) {
-      for (const CaseAction& a : tm.actions) {
-        if (a.kick.empty() || kicks.Find(a.kick)) continue;
-        throw InputError(kicks_file.string() + ": kicks: no kick '" + a.kick + "', which case " +
-                         c.name + " plays (the model has: " + kicks.Names() + ")");
-      }
-    }
-  }
-}
-
 void LoadCbrTeam(PassingSetup& s, const std::filesystem::path& models_dir) {
   s.cbr = LoadCbrTeamParams("team", models_dir);
   s.case_base = LoadCaseBase(DefaultCaseBasePath(models_dir), models_dir);
@@ -41,11 +27,17 @@ void LoadCbrTeam(PassingSetup& s, const std::filesystem::path& models_dir) {
   }
   s.retrieval = LoadRetrievalParams(ResolveModelFile("retrieval", DataFolder::kCbr, ".", models_dir),
                                     s.case_base.rules.field);
-  RequireCaseKicks(s.case_base, s.kicks, s.kicks_file);
+  RequireCaseKicks(s.case_base.cases, s.kicks, s.kicks_file);
+  // The team's kick trajectories end where the match's kicks end.
+  UseKickModelReach(s.kicks, &s.retrieval);
   // The timing check judges the match's robots: their walk and their reach.
   s.cbr.pass_timing.opponent_speed_mps = s.robot.walk_speed_mps;
   s.cbr.pass_timing.receiver_speed_mps = s.robot.walk_speed_mps;
   s.cbr.pass_timing.reach_m = s.robot.body_radius_m + s.field.ball.radius_m;
+  // The ball race judges them too; arrivals within one control step are a tie.
+  s.cbr.race.speed_mps = s.robot.walk_speed_mps;
+  s.cbr.race.reach_m = s.cbr.pass_timing.reach_m;
+  s.cbr.race.tie_s = s.sim.control_step_s;
 }
 }  // namespace
 

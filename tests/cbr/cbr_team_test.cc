@@ -42,6 +42,8 @@ class CbrTeamTest : public ::testing::Test {
         retrieval_(LoadRetrievalParams(testing::ModelsDir() / "cbr" / "retrieval.json",
                                        base_.rules.field)) {
     poses_ = {Pose2(Vec2(1.0, 0.2), 0.0), Pose2(Vec2(0.2, -1.0), 0.0)};
+    // The race's robots: the AIBO's walk (models/match/aibo_ers7.json) and body + ball radius.
+    team_params_.race = RaceParams{0.3, 0.12 + 0.042, kDt};
   }
 
   CbrTeam& MakeTeam() {
@@ -207,6 +209,35 @@ TEST_F(CbrTeamTest, AnOpponentOnTheBallAbortsAndNoCycleStartsUntilItIsFree) {
   opponents_.clear();
   Run(3);
   EXPECT_EQ(team_->CycleOf(0), cycle + 1);
+}
+
+TEST_F(CbrTeamTest, NoCycleStartsWhileAnOpponentWinsTheRaceOrTheBallRolls) {
+  // Robot 0 is 0.5 m from the ball (1.3, 0.2), robot 1 farther; an opponent 0.3 m from it, not
+  // touching it but 0.2 m (0.67 s) nearer than robot 0: the default behaviour plays.
+  poses_[0] = Pose2(Vec2(0.8, 0.2), 0.0);
+  opponents_ = {ball_ + Vec2(0.0, 0.3)};
+  MakeTeam();
+  Run(20);
+  EXPECT_TRUE(SendersOf(CbrMessageKind::kCoordinator).empty());
+  EXPECT_EQ(team_->CycleOf(0), 0);
+  // Without the race the paper's team starts a cycle at once.
+  team_params_.ball_race = false;
+  sent_.clear();
+  MakeTeam();
+  Run(3);
+  EXPECT_EQ(SendersOf(CbrMessageKind::kCoordinator), std::vector<int>{0});
+  // With it, once the opponent steps back the team wins, but not while the ball rolls.
+  team_params_.ball_race = true;
+  sent_.clear();
+  MakeTeam();
+  opponents_[0] = ball_ + Vec2(0.0, 1.0);
+  for (int k = 0; k < 10; ++k) {
+    ball_ += Vec2(0.02, 0.0);  // 0.5 m/s, faster than the robots walk
+    Run(1);
+  }
+  EXPECT_TRUE(SendersOf(CbrMessageKind::kCoordinator).empty());
+  Run(3);  // the ball rests
+  EXPECT_EQ(SendersOf(CbrMessageKind::kCoordinator), std::vector<int>{0});
 }
 
 TEST_F(CbrTeamTest, ARobotWhoseMessagesAreAllLostDoesNotStallTheOther) {

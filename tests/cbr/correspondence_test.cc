@@ -97,14 +97,20 @@ TEST(CorrespondenceTest, TooFarNamesTheRobotAndTheDistance) {
 }
 
 // Brute force over all permutations of the problem's robots (the first m of each assign).
+// With `fixed`, only the permutations that give case teammate fixed.case_index that problem
+// teammate.
 CostKey BruteForce(const Problem& p, const Case& c, CostFunction cost, double thr, bool* feasible,
-                   double* minmax) {
+                   double* minmax, FixedPair fixed = {}) {
   std::vector<int> perm(p.teammates.size());
   std::iota(perm.begin(), perm.end(), 0);
   CostKey best{std::numeric_limits<double>::infinity(), 0.0};
   *feasible = false;
   *minmax = std::numeric_limits<double>::infinity();
   do {
+    if (fixed.case_index >= 0 &&
+        perm[static_cast<std::size_t>(fixed.case_index)] != fixed.problem_index) {
+      continue;
+    }
     double sum = 0.0, max = 0.0;
     for (std::size_t i = 0; i < c.teammates.size(); ++i) {
       const double d = (p.teammates[static_cast<std::size_t>(perm[i])].pose.p_F -
@@ -165,6 +171,40 @@ TEST(CorrespondenceTest, AgreesWithBruteForceOnRandomTeams) {
     }
   }
   EXPECT_GT(feasible_count, 1000);  // both branches are exercised
+}
+
+TEST(CorrespondenceTest, AFixedRobotAgreesWithBruteForce) {
+  RandomStream rng(StreamKey(17, 0));
+  const auto point = [&] {
+    return Vec2(-2.7 + 5.4 * rng.NextUniform(), -1.8 + 3.6 * rng.NextUniform());
+  };
+  int feasible_count = 0, moved = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const int n = 2 + static_cast<int>(rng.NextBits() % 3);
+    const int m = 1 + static_cast<int>(rng.NextBits() % static_cast<std::uint64_t>(n));
+    std::vector<Vec2> robots, spots;
+    for (int i = 0; i < n; ++i) robots.push_back(point());
+    for (int i = 0; i < m; ++i) spots.push_back(point());
+    const Problem p = ProblemWith(robots, point());
+    const Case c = CaseWith(spots, point());
+    const FixedPair fixed{static_cast<int>(rng.NextBits() % static_cast<std::uint64_t>(m)),
+                          static_cast<int>(rng.NextBits() % static_cast<std::uint64_t>(n))};
+    const double thr = 1.0 + 3.0 * rng.NextUniform();
+    bool feasible = false;
+    double minmax = 0.0;
+    const CostKey best = BruteForce(p, c, CostFunction::kSum, thr, &feasible, &minmax, fixed);
+    const Correspondence k = FindCorrespondence(p, c, CostFunction::kSum, thr, fixed);
+    ASSERT_EQ(k.feasible, feasible) << "trial " << trial;
+    if (!feasible) continue;
+    ++feasible_count;
+    EXPECT_EQ(k.problem_index[static_cast<std::size_t>(fixed.case_index)], fixed.problem_index);
+    EXPECT_NEAR(k.cost.primary, best.primary, 1e-9) << "trial " << trial;
+    const Correspondence free = FindCorrespondence(p, c, CostFunction::kSum, thr);
+    EXPECT_LE(free.cost.primary, k.cost.primary + 1e-12);  // fixing a robot never helps
+    moved += free.problem_index[static_cast<std::size_t>(fixed.case_index)] != fixed.problem_index;
+  }
+  EXPECT_GT(feasible_count, 500);
+  EXPECT_GT(moved, 100);  // the constraint changed the matching in many trials
 }
 
 }  // namespace
