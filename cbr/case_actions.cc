@@ -25,13 +25,14 @@ bool Near(const Vec2& a, const Vec2& b, double tolerance_m) {
   return (a - b).norm() <= tolerance_m;
 }
 
+double AimHeading(const FuzzyTrajectory* trajectory, const KickSpec& kick, const Perception& p,
+                  const ActionContext& ctx);
+
 // A kick or pass: aim along `trajectory` with kick `kick_index`, then kick.
 ActionStep AimAndKick(const FuzzyTrajectory* trajectory, int kick_index, ActionProgress& s,
                       const Perception& p, const ActionContext& ctx) {
   ActionStep step;
   const KickSpec& kick = ctx.kicks->kicks[static_cast<std::size_t>(kick_index)];
-  const Vec2 aim_at = trajectory ? trajectory->end_F
-                                 : Vec2(p.attack_sign * ctx.retrieval->goal_x_m, 0.0);
   if (trajectory) {
     // The free-path test (sec. 3.3.1) on the trajectory from where the ball is now.
     CaseBallPath now;
@@ -46,7 +47,7 @@ ActionStep AimAndKick(const FuzzyTrajectory* trajectory, int kick_index, ActionP
       }
     }
   }
-  const double heading = HeadingTowards(p.p_F_ball, aim_at) - kick.direction_rad;
+  const double heading = AimHeading(trajectory, kick, p, ctx);
   const double error = WrapAngle(heading - p.pose.theta_rad);
   if (std::abs(error) <= ctx.aim_tolerance_rad ||
       p.time_s - s.holding_since_s >= ctx.release_after_s) {
@@ -57,6 +58,30 @@ ActionStep AimAndKick(const FuzzyTrajectory* trajectory, int kick_index, ActionP
   }
   step.command = TurnTowards(p.pose, heading, ctx.control_step_s);
   return step;
+}
+
+// The heading a kick or pass is aimed at (the trajectory's end, or the goal), for the robot
+// holding the ball at p_F_ball.
+double AimHeading(const FuzzyTrajectory* trajectory, const KickSpec& kick, const Perception& p,
+                  const ActionContext& ctx) {
+  const Vec2 aim_at = trajectory ? trajectory->end_F
+                                 : Vec2(p.attack_sign * ctx.retrieval->goal_x_m, 0.0);
+  return HeadingTowards(p.p_F_ball, aim_at) - kick.direction_rad;
+}
+
+// Whether the dribble must end now to leave the time to aim the robot's next kick or pass.
+bool TimeToAim(const CasePlay& play, int me, const ActionProgress& s, const Perception& p,
+               const ActionContext& ctx) {
+  const auto& actions = play.c->teammates[static_cast<std::size_t>(me)].actions;
+  if (s.action + 1 >= actions.size() || ctx.dribble_turn_radps <= 0.0) return false;
+  const CaseAction& next = actions[s.action + 1];
+  if (next.type != ActionType::kKick && next.type != ActionType::kPass) return false;
+  const KickSpec& kick = ctx.kicks->kicks[static_cast<std::size_t>(ctx.kicks->Find(next.kick).value_or(0))];
+  const double turn =
+      std::abs(WrapAngle(AimHeading(play.KickTrajectory(me, s.kicks_done), kick, p, ctx) -
+                         p.pose.theta_rad));
+  const double left_s = ctx.release_after_s - (p.time_s - s.holding_since_s);
+  return left_s <= turn / ctx.dribble_turn_radps + ctx.control_step_s;
 }
 
 void Advance(ActionProgress& s) {
@@ -197,7 +222,7 @@ ActionStep StepActions(const CasePlay& play, int me, ActionProgress& s, const Pe
           return step;
         }
         const Vec2 target = a.target_F ? play.Adapt(*a.target_F) : p.p_F_ball;
-        if (Near(p.p_F_ball, target, tol) ||
+        if (Near(p.p_F_ball, target, tol) || TimeToAim(play, me, s, p, ctx) ||
             p.time_s - s.holding_since_s >= ctx.release_after_s) {
           Advance(s);
           continue;

@@ -10,6 +10,21 @@ namespace {
 std::size_t At(int i) {
   return static_cast<std::size_t>(i);
 }
+
+// Why retrieval gave the team no case: the furthest any case got (cbr/team_counters.h).
+void CountNoCase(const RetrievalResult& result, CbrTeamCounters& counters) {
+  bool blocked = false, too_far = false;
+  for (const CaseEvaluation& e : result.evaluations) {
+    if (e.verdict == Verdict::kCandidate) {
+      ++counters.no_case_candidates_refused;
+      return;
+    }
+    blocked = blocked || e.verdict == Verdict::kPathBlocked;
+    too_far = too_far || e.verdict == Verdict::kTooFar;
+  }
+  ++(blocked ? counters.no_case_path_blocked
+             : too_far ? counters.no_case_too_far : counters.no_case_out_of_scope);
+}
 }  // namespace
 
 CbrTeam::CbrTeam(const CbrTeamSetup& setup, TeamPolicy& default_behaviour, int robots)
@@ -193,6 +208,7 @@ void CbrTeam::Retrieve(Robot& r, const Perception& p) {
   const std::optional<Choice> chosen = ChooseCase(cases, problem);
   if (!chosen) {
     ++counters_.no_case;
+    CountNoCase(scratch_, counters_);
     Send(r, p, CbrMessageKind::kNoCase);
     Enter(r, CbrPhase::kIdle, p.time_s);
     r.idle_until_s = p.time_s + setup_.skills.team->no_case_retry_s;

@@ -27,7 +27,12 @@ std::vector<TeamPolicy::Counter> CbrTeamCounters::List() const {
                                         {"no_case", static_cast<double>(no_case)},
                                         {"timing_rejected", static_cast<double>(timing_rejected)},
                                         {"race_lost", static_cast<double>(race_lost)},
-                                        {"race_skipped", static_cast<double>(race_skipped)}};
+                                        {"race_skipped", static_cast<double>(race_skipped)},
+                                        {"no_case_candidates_refused",
+                                         static_cast<double>(no_case_candidates_refused)},
+                                        {"no_case_path_blocked", static_cast<double>(no_case_path_blocked)},
+                                        {"no_case_too_far", static_cast<double>(no_case_too_far)},
+                                        {"no_case_out_of_scope", static_cast<double>(no_case_out_of_scope)}};
   for (int i = 0; i < kAbortReasonCount; ++i) {
     c.push_back({"aborts_" + std::string(AbortReasonName(static_cast<AbortReason>(i))),
                  static_cast<double>(aborts[static_cast<std::size_t>(i)])});

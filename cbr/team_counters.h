@@ -27,6 +27,12 @@ struct CbrTeamCounters {
   int timing_rejected = 0;  // candidates the timing-aware pass check turned down
   int race_lost = 0;        // retrievals refused: an opponent reaches the ball first
   int race_skipped = 0;     // candidates whose getter could not be the team's fastest robot
+  // Why "no case", by the furthest any case got through Algorithm 1: a candidate the team turned
+  // down (race or pass timing), a path blocked, robots too far, no ball in a scope.
+  int no_case_candidates_refused = 0;
+  int no_case_path_blocked = 0;
+  int no_case_too_far = 0;
+  int no_case_out_of_scope = 0;
   std::array<int, kAbortReasonCount> aborts{};  // cycles aborted, by the first reason
   int last_aborted_cycle = -1;
   std::array<double, kCbrPhaseCount> phase_time_s{};  // summed over the robots

@@ -135,6 +135,7 @@ CbrTeamSetup CbrSetup(const PassingSetup& setup) {
   c.skills.retrieval = &setup.retrieval;
   c.skills.kicks = &setup.kicks;
   c.skills.aim_tolerance_rad = setup.reactive.aim_tolerance_rad;
+  c.skills.dribble_turn_radps = setup.robot.dribble_turn_speed_radps;
   c.skills.release_after_s = setup.sim.ball_holding_limit_s - setup.robot.kick_launch_s;
   c.skills.control_step_s = setup.sim.control_step_s;
   c.skills.release_kick = *setup.kicks.Find(setup.reactive.shoot_kick);

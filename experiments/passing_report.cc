@@ -1,6 +1,8 @@
 #include "experiments/passing_report.h"
 
 #include <algorithm>
+#include <optional>
+#include <string_view>
 
 #include "experiments/passing_causes.h"
 #include "report/report_format.h"
@@ -166,6 +168,40 @@ std::string PassingEventsCsv(const PassingRun& run) {
   return csv;
 }
 
+namespace {
+
+// The mean per trial of the team's counter `name`, or nullopt if the team does not count it.
+std::optional<double> CounterMean(const ScenarioSummary& s, std::string_view name) {
+  for (const auto& [counter, stat] : s.team_counters) {
+    if (counter == name) return stat.mean;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::string TeamCountersText(const std::vector<ScenarioSummary>& summaries) {
+  // Ros et al. 2009, Table 3 (cases per trial, individualistic and cooperative) and what the
+  // paper calls "not significant" (sec. 5.4: the default behaviour, i.e. no case), with the
+  // aborts by reason and the seconds of trial per case retrieved.
+  const char* const kColumns[] = {"cases_individual", "cases_cooperative", "no_case", "race_lost",
+                                  "aborts_ball_lost", "aborts_ball_moved", "aborts_path_blocked",
+                                  "aborts_timeout"};
+  if (summaries.empty() || !CounterMean(summaries.front(), "cases_retrieved")) return "";
+  std::string text =
+      "per trial    indiv.  coop. | no case race lost | aborts: ball lost, moved, path blocked, "
+      "timeout | s per case\n";
+  for (const ScenarioSummary& s : summaries) {
+    std::vector<double> v;
+    for (const char* name : kColumns) v.push_back(CounterMean(s, name).value_or(0.0));
+    const double cases = CounterMean(s, "cases_retrieved").value_or(0.0);
+    text += Format("%-10s %7.2f %6.2f | %7.2f %9.2f | %16.2f %6.2f %13.2f %8.2f | %s\n",
+                   s.name.c_str(), v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7],
+                   cases > 0.0 ? Format("%.2f", s.time_s.mean / cases).c_str() : "-");
+  }
+  return text;
+}
+
 std::string PassingText(const PassingRun& run) {
   const PassingSetup& setup = *run.setup;
   std::string text = Format("passing: %s team against %s, %d trials per scenario%s\n",
@@ -204,6 +240,7 @@ std::string PassingText(const PassingRun& run) {
   };
   for (std::size_t i = 0; i < causes.size(); ++i) row(run.result.scenarios[i].name, causes[i]);
   if (causes.size() > 1) row("all", PoolCauses(causes, setup.params.confidence));
+  text += TeamCountersText(run.summaries);
   return text;
 }
 

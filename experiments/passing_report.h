@@ -25,6 +25,12 @@ struct PassingRun {
 };
 
 std::string PassingText(const PassingRun& run);
+
+// The attacking team's own counts per trial and scenario, as Ros et al. 2009 count cases in
+// Table 3: cases retrieved (individual, cooperative), "no case" (the default behaviour), races
+// lost, aborts by reason and the trial's seconds per case retrieved; "" for a team that counts no
+// cases (the reactive team).
+std::string TeamCountersText(const std::vector<ScenarioSummary>& summaries);
 nlohmann::ordered_json PassingJson(const PassingRun& run);
 // One scenario's causes (or all scenarios' pooled), as passing.json and the scorecard write them.
 nlohmann::ordered_json PassingCausesJson(const ScenarioCauses& causes);

@@ -44,7 +44,7 @@ class CbrCommandTest : public ForesightRun {
   // A settings file in the working folder listing `cases` of the shipped base.
   fs::path SmallBase(const std::vector<std::string>& cases) const {
     nlohmann::json j = {{"field", "four_legged"},
-                        {"kicks", "aibo_ers7"},
+                        {"kicks", "aibo_ers7_published"},
                         {"kick_mirrors", {{"head_kick_left", "head_kick_right"}}},
                         {"cases", nlohmann::json::array()}};
     for (const std::string& c : cases) j["cases"].push_back(ShippedCase(c).string());
@@ -69,7 +69,7 @@ TEST_F(CbrCommandTest, ExampleProblemsRetrieveWhatTheirNotesSay) {
       EXPECT_THAT(notes, HasSubstr("nothing is retrieved"));
       EXPECT_THAT(r.out, HasSubstr("retrieved: none (no case fits the problem)"));
       EXPECT_THAT(r.out, HasSubstr("candidates: 0"));
-      EXPECT_THAT(r.out, HasSubstr("rejected: ball_out_of_scope 67 path_blocked 1\n"));
+      EXPECT_THAT(r.out, HasSubstr("rejected: ball_out_of_scope 71 path_blocked 1\n"));
     } else {
       EXPECT_THAT(notes, ::testing::AnyOf(::testing::ContainsRegex("Retrieves " + e.retrieved +
                                                                    "[:( ]"),
@@ -100,7 +100,7 @@ TEST_F(CbrCommandTest, JsonIsTheWholeResultAndTheSameBytesTwice) {
   const nlohmann::json j = nlohmann::json::parse(a.out);
   EXPECT_EQ(j.at("command"), "cbr retrieve");
   EXPECT_EQ(j.at("case_base"), "cases");
-  EXPECT_EQ(j.at("cases"), 68);
+  EXPECT_EQ(j.at("cases"), 72);
   const nlohmann::json& r = j.at("retrieved");
   EXPECT_EQ(r.at("name"), "front_pass_dg");
   EXPECT_EQ(r.at("band"), "H");
@@ -116,7 +116,7 @@ TEST_F(CbrCommandTest, JsonIsTheWholeResultAndTheSameBytesTwice) {
   int rejected = 0;
   for (const auto& [verdict, n] : j.at("rejections").items()) rejected += n.get<int>();
   EXPECT_EQ(rejected, static_cast<int>(j.at("rejected").size()));
-  EXPECT_EQ(rejected + static_cast<int>(j.at("candidates").size()), 68);
+  EXPECT_EQ(rejected + static_cast<int>(j.at("candidates").size()), 72);
   for (const nlohmann::json& x : j.at("rejected")) {
     EXPECT_THAT(x.at("explanation").get<std::string>(),
                 StartsWith("case " + x.at("name").get<std::string>() + ": "));
@@ -160,10 +160,12 @@ TEST_F(CbrCommandTest, BadProblemFileIsOneLineExitTwoAndNoFileLeft) {
 TEST_F(CbrCommandTest, CheckOnTheShippedBaseCountsAndPasses) {
   const RunResult r = Cbr({"check"});
   EXPECT_EQ(r.err, "");
-  EXPECT_THAT(r.out, HasSubstr("hand-written cases: 34\n"));
-  EXPECT_THAT(r.out, HasSubstr("stored cases: 136 (68 defending cyan, 68 defending yellow)\n"));
+  EXPECT_THAT(r.out, HasSubstr("hand-written cases: 36\n"));
+  EXPECT_THAT(r.out, HasSubstr("stored cases: 144 (72 defending cyan, 72 defending yellow)\n"));
   EXPECT_THAT(r.out, HasSubstr("overlapping stored cases: 0\n"));
-  EXPECT_THAT(r.out, HasSubstr("cases blocked by their own opponents: 0 of 34\n"));
+  EXPECT_THAT(r.out, HasSubstr("cases blocked by their own opponents: 0 of 36\n"));
+  EXPECT_THAT(r.out, HasSubstr("cases asking more than their kicks carry (aibo_ers7, reach at 2 "
+                               "sd): 0 of 36\n"));
   EXPECT_THAT(r.out, HasSubstr("case base OK\n"));
   EXPECT_EQ(r.exit_code, 0);
 }
@@ -186,6 +188,44 @@ TEST_F(CbrCommandTest, CheckFailsOnACaseBlockedByItsOwnOpponent) {
                                "(2.45, 0.00) is on its ball path"));
   EXPECT_THAT(r.out, HasSubstr("cases blocked by their own opponents: 1 of 1\n"));
   EXPECT_EQ(r.exit_code, 1);
+}
+
+// A case that asks the power kick for a 4.6 m shot (its reach at 2 sd is 4.0 m) and a head-kick
+// pass to a receiver 1.1 m away (the head kick's mean roll stops 0.3 m short of its body) is a
+// plan the robot cannot play: check fails on both and names them; --kicks checks another model.
+TEST_F(CbrCommandTest, CheckFailsOnKicksBeyondTheirReach) {
+  nlohmann::json far = nlohmann::json::parse(ReadFile(ShippedCase("back_deep")));
+  far["name"] = "shoots_from_afar";
+  far["teammates"][0]["actions"][1] = {{"type", "kick"}, {"kick", "forward"}, {"at", "goal"}};
+  Write("far.json", far.dump());
+  nlohmann::json wide = nlohmann::json::parse(ReadFile(ShippedCase("front_pass_dg")));
+  wide["name"] = "passes_too_wide";
+  wide["teammates"][1]["y_m"] = 1.3;  // the receiver 1.1 m to the left of the ball
+  Write("wide.json", wide.dump());
+  nlohmann::json base = nlohmann::json::parse(ReadFile(SmallBase({})));
+  base["cases"] = {(work() / "far.json").string(), (work() / "wide.json").string()};
+  Write("reach_base.json", base.dump());
+  const RunResult r = Cbr({"check", "--case-base", (work() / "reach_base.json").string()});
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_THAT(r.out, HasSubstr("error: case shoots_from_afar: kick forward (trajectory 0) of "
+                               "4.64 m is beyond the kick's reach 3.98 m at 2 sd (mean roll "
+                               "2.22 m)\n"));
+  EXPECT_THAT(r.out, HasSubstr("error: case passes_too_wide: pass head_kick_left (trajectory 0) of "
+                               "1.10 m is beyond the kick's reach 0.89 m"));
+  EXPECT_THAT(r.out, HasSubstr("cases asking more than their kicks carry (aibo_ers7, reach at 2 "
+                               "sd): 2 of 2\n"));
+  EXPECT_THAT(r.out, HasSubstr("case base FAILED\n"));
+  // The physics-calibrated model's forward kick is shorter still; a model without a kick the
+  // cases play is refused in one line.
+  const RunResult physics = Cbr({"check", "--case-base", (work() / "reach_base.json").string(),
+                                 "--kicks", "aibo_ers7"});
+  EXPECT_EQ(physics.exit_code, 1);
+  EXPECT_THAT(physics.out, HasSubstr("beyond the kick's reach 1.97 m"));
+  const RunResult nao = Cbr({"check", "--kicks", "nao"});
+  EXPECT_EQ(nao.exit_code, 2);
+  EXPECT_THAT(nao.err, StartsWith("foresight: error: "));
+  EXPECT_THAT(nao.err, HasSubstr("nao.json: kicks: no kick 'head_kick_left'"));
+  EXPECT_EQ(CountOf(nao.err, "\n"), 1);
 }
 
 TEST_F(CbrCommandTest, CheckPassesOnCasesThatAreFreeAndWarnsOfOverlaps) {
@@ -227,10 +267,10 @@ TEST_F(CbrCommandTest, CheckOfABrokenCaseBaseIsOneLineExitTwo) {
 TEST_F(CbrCommandTest, AtlasWritesOneSelfContainedPage) {
   const RunResult r = Cbr({"atlas", "--out", "atlas"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_THAT(r.out, HasSubstr("atlas of 34 hand-written cases (136 stored)"));
+  EXPECT_THAT(r.out, HasSubstr("atlas of 36 hand-written cases (144 stored)"));
   const std::string html = ReadFile(work() / "atlas" / "atlas.html");
   EXPECT_THAT(html, StartsWith("<!DOCTYPE html>"));
-  EXPECT_EQ(CountOf(html, "<figure>"), 34);
+  EXPECT_EQ(CountOf(html, "<figure>"), 36);
   // (find, not HasSubstr: a failure would print the whole page)
   EXPECT_NE(html.find(">front_pass_dg (defending cyan)</text>"), std::string::npos);
   EXPECT_NE(html.find("/mirror_y (cyan), /mirror_x, /mirror_xy (yellow)"), std::string::npos);

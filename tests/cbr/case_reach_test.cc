@@ -1,0 +1,97 @@
+// A case's kicks against the kick model (cbr/case_reach.h): the lengths along the case's own ball
+// path, the reach at z sd and the pass that stops short, at their exact edges.
+#include "cbr/case_reach.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/error.h"
+#include "planner/kick_reach.h"
+
+namespace foresight {
+namespace {
+
+KickModel Kicks() {
+  KickModel m;
+  m.robot = "test";
+  m.rolling_deceleration_mps2 = 0.25;
+  m.kicks = {{"forward", 1.0, 0.1, 0.0, 0.1, 0.0}, {"head_kick_left", 0.5, 0.05, kPi / 2, 0.05, 0.0}};
+  return m;
+}
+
+RetrievalParams Params() {
+  RetrievalParams p;
+  p.reach_sigmas = 2.0;
+  p.opponent_radius_m = 0.12;
+  p.ball_radius_m = 0.04;
+  return p;
+}
+
+// One robot at (0, 0) with the ball at (0.3, 0): a kick to (0.3 + length, 0).
+Case Shot(double length_m) {
+  Case c;
+  c.name = "shot";
+  c.p_F_ball = Vec2(0.3, 0.0);
+  CaseAction get, kick;
+  get.type = ActionType::kGetBall;
+  kick.type = ActionType::kKick;
+  kick.kick = "forward";
+  kick.target_F = Vec2(0.3 + length_m, 0.0);
+  c.teammates.push_back({1, Vec2(0.0, 0.0), {get, kick}});
+  return c;
+}
+
+// A head-kick pass from the ball at (0.3, 0) to a receiver `length_m` to its left.
+Case Pass(double length_m) {
+  Case c;
+  c.name = "pass";
+  c.p_F_ball = Vec2(0.3, 0.0);
+  CaseAction get, pass, receive;
+  get.type = ActionType::kGetBall;
+  pass.type = ActionType::kPass;
+  pass.kick = "head_kick_left";
+  pass.teammate = 2;
+  receive.type = ActionType::kReceive;
+  receive.teammate = 1;
+  c.teammates.push_back({1, Vec2(0.0, 0.0), {get, pass}});
+  c.teammates.push_back({2, Vec2(0.3, length_m), {receive}});
+  return c;
+}
+
+TEST(CaseReachTest, AKickFitsUpToItsReachAndNoFurther) {
+  const double reach = RollDistanceAtSigmas(Kicks().kicks[0], 0.25, 2.0);  // 1.2^2 / 0.5 = 2.88
+  EXPECT_NEAR(reach, 2.88, 1e-12);
+  EXPECT_TRUE(CheckCaseReach(Shot(reach - 1e-6), Kicks(), Params()).empty());
+  const std::vector<ReachFinding> f = CheckCaseReach(Shot(reach + 1e-6), Kicks(), Params());
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].fault, ReachFault::kBeyondReach);
+  EXPECT_EQ(f[0].kick, "forward");
+  EXPECT_NEAR(f[0].length_m, reach, 1e-5);
+  EXPECT_NEAR(f[0].mean_roll_m, (1.0 + 0.01) / 0.5, 1e-12);
+}
+
+TEST(CaseReachTest, APassMustCarryToTheReceiversBody) {
+  // Mean roll (0.25 + 0.0025) / 0.5 = 0.505 m; the ball stops on the body 0.16 m before the
+  // receiver's centre, so the pass may be 0.665 m long; the reach is 0.6^2 / 0.5 = 0.72 m.
+  EXPECT_TRUE(CheckCaseReach(Pass(0.664), Kicks(), Params()).empty());
+  std::vector<ReachFinding> f = CheckCaseReach(Pass(0.666), Kicks(), Params());
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].fault, ReachFault::kPassShort);
+  EXPECT_EQ(f[0].action, ActionType::kPass);
+  f = CheckCaseReach(Pass(0.73), Kicks(), Params());
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].fault, ReachFault::kBeyondReach);  // beyond reach is said first
+  EXPECT_EQ(DescribeFinding(f[0], Params()),
+            "pass head_kick_left (trajectory 0) of 0.73 m is beyond the kick's reach 0.72 m at 2 "
+            "sd (mean roll 0.51 m)");
+}
+
+TEST(CaseReachTest, TheCheckNeedsAReach) {
+  RetrievalParams p = Params();
+  p.reach_sigmas.reset();
+  EXPECT_THROW(CheckCaseReach(Shot(1.0), Kicks(), p), InputError);
+}
+
+}  // namespace
+}  // namespace foresight
