@@ -113,6 +113,7 @@
 #include "models/situation.h"
 #include "models/team_policy.h"
 #include "models/walk_command.h"
+#include "physics/ball_placement.h"
 #include "physics/ball_state.h"
 #include "physics/bullet_convert.h"
 #include "physics/bullet_world.h"

@@ -212,7 +212,8 @@ Json CalibrationJson(const CalibrationRun& run) {
 std::string CalibrationObservationsCsv(const CalibrationRun& run) {
   std::string out =
       "kick,index,launch_speed_mps,launch_direction_deg,roll_distance_m,rolling_samples,"
-      "placement_dx_m,placement_dy_m,placement_dtheta_deg,speed_factor,carpet_factor\n";
+      "placement_dx_m,placement_dy_m,placement_dtheta_deg,speed_factor,carpet_factor,"
+      "placement_redraws\n";
   for (const CalibratedKick& kick : run.kicks) {
     for (std::size_t i = 0; i < kick.observations.size(); ++i) {
       const KickObservation& o = kick.observations[i];
@@ -224,9 +225,9 @@ std::string CalibrationObservationsCsv(const CalibrationRun& run) {
         const TrialDraw& d = kick.draws[i];
         out += Fixed(d.placement_dx_m, 6) + "," + Fixed(d.placement_dy_m, 6) + "," +
                Fixed(d.placement_dtheta_rad * kRadToDeg, 4) + "," + Fixed(d.speed_factor, 6) + "," +
-               Fixed(d.carpet_factor, 6) + "\n";
+               Fixed(d.carpet_factor, 6) + "," + std::to_string(d.placement_redraws) + "\n";
       } else {
-        out += ",,,,\n";
+        out += ",,,,,\n";
       }
     }
   }
