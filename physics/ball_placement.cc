@@ -23,8 +23,7 @@ struct DeepestOverlap : btCollisionWorld::ContactResultCallback {
 
 }  // namespace
 
-StanceClearance::StanceClearance(const Robot& robot, const KickMotion& motion,
-                                 double ball_radius_m)
+StanceClearance::StanceClearance(const Robot& robot, const KickMotion& motion, double ball_radius_m)
     : StanceClearance(robot, robot.StandingPositions(motion), robot.BaseHeightM(motion),
                       ball_radius_m) {}
 
@@ -34,8 +33,8 @@ StanceClearance::StanceClearance(const Robot& robot, std::span<const double> q_r
       ball_radius_m_(ball_radius_m) {
   const std::vector<Eigen::Isometry3d> poses = LinkPoses(robot.model, q_rad);
   btCompoundShape* body = MakeRobotShape(*world_, robot.model, poses);
-  body_ = world_->AddStatic(body, ToBt(PlanarPose(0.0, 0.0, base_height_m, 0.0)),
-                            BodyTag::kKicker, Material{});
+  body_ = world_->AddStatic(body, ToBt(PlanarPose(0.0, 0.0, base_height_m, 0.0)), BodyTag::kKicker,
+                            Material{});
   auto* ball_shape = world_->Own(std::make_unique<btSphereShape>(ball_radius_m));
   ball_ = world_->AddStatic(ball_shape, btTransform::getIdentity(), BodyTag::kBall, Material{});
 }

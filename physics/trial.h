@@ -31,7 +31,7 @@ struct TrialDraw {
 // Whether a placement error (x, y in R) leaves the ball clear of the robot.
 using PlacementClear = std::function<bool(const Vec2& placement_error_m)>;
 // A trial that has rejected this many placements in a row stops with an InputError: the
-// motion's nominal spot itself must lie (nearly) inside the robot.
+// motion's nominal spot then lies deeper inside the robot than its placement error reaches.
 inline constexpr int kMaxPlacementDraws = 1000;
 
 // Draws the placement (x, y, heading; again while `clear` says no), then the playback speed

@@ -128,6 +128,7 @@
 #include "physics/physics_setup.h"
 #include "physics/physics_simulator.h"
 #include "physics/rigid_groups.h"
+#include "physics/robot_impact.h"
 #include "physics/robot_kinematics.h"
 #include "physics/robot_shapes.h"
 #include "physics/trial.h"

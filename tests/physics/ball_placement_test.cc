@@ -30,17 +30,16 @@ constexpr double kTouchToleranceM = 1e-5;
 
 // The deepest overlap between the ball and any link of the kicking robot in the kick phase's
 // world at t = 0, as Bullet's collision detection finds it (0: none).
-double DepthAtStart(const PhysicsScene& scene, const KickRequest& request,
-                    const KickStart& start) {
+double DepthAtStart(const PhysicsScene& scene, const KickRequest& request, const KickStart& start) {
   const Robot& robot = *scene.robot;
   const KickMotion& motion = robot.motions[request.motion_index];
   BulletWorld world(BulletWorld::Kind::kMultiBody, {10, 0.02});
   AddStatics(world, scene);
   const double r = scene.field->ball.radius_m;
   auto* shape = world.Own(std::make_unique<btSphereShape>(r));
-  btRigidBody* ball = world.AddDynamic(shape, 1.0, btVector3(1, 1, 1), btTransform::getIdentity(),
-                                       BodyTag::kBall, kBallMaterial, kGroupBall,
-                                       kGroupStatic | kGroupKicker);
+  btRigidBody* ball =
+      world.AddDynamic(shape, 1.0, btVector3(1, 1, 1), btTransform::getIdentity(), BodyTag::kBall,
+                       kBallMaterial, kGroupBall, kGroupStatic | kGroupKicker);
   WriteBall(*ball, RollingBall(request.state.p_F_ball, r, 0.0, 0.0));
   KickingRobot kicker(world, robot, start.pose_F_root, robot.StandingPositions(motion),
                       MovingJoints(robot.model, motion.joints), scene.params);
@@ -86,8 +85,8 @@ TEST_P(BallPlacementTest, NoTrialStartsWithTheBallInsideTheRobot) {
     }
     const std::string& name = data->robot->motions[m].name;
     EXPECT_LE(deepest, kTouchToleranceM) << name;
-    std::printf("%s %s: %d of %d first draws overlapped; deepest start %.2e m\n",
-                GetParam().robot, name.c_str(), redrawn, kDraws, deepest);
+    std::printf("%s %s: %d of %d first draws overlapped; deepest start %.2e m\n", GetParam().robot,
+                name.c_str(), redrawn, kDraws, deepest);
   }
 }
 
