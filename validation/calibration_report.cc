@@ -1,5 +1,6 @@
 #include "validation/calibration_report.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/geometry.h"
@@ -54,10 +55,20 @@ Json LaunchOffsetJson(const LaunchOffsetFit& fit) {
               {"rest_distance_m", fit.rest_distance_m}};
 }
 
+// How many of the kick's trials drew their placement again because the ball lay inside the
+// robot (physics/ball_placement.h); 0 for a CSV log.
+int PlacementRedrawn(const CalibratedKick& kick) {
+  return static_cast<int>(std::count_if(kick.draws.begin(), kick.draws.end(),
+                                        [](const TrialDraw& d) { return d.placement_redraws > 0; }));
+}
+
 Json KickJson(const CalibrationRun& run, const CalibratedKick& kick) {
   const KickCalibration& c = kick.fit;
   const double level = run.settings.normality_level;
-  Json j{{"name", c.kick}, {"observations", c.observations}, {"missed", kick.missed}};
+  Json j{{"name", c.kick},
+         {"observations", c.observations},
+         {"missed", kick.missed},
+         {"placement_redrawn", PlacementRedrawn(kick)}};
   if (const auto i = run.base.Find(c.kick)) j["committed"] = KickSpecJson(run.base.kicks[*i]);
   j["speed"] = Json{{"mean_mps", c.speed.mean},
                     {"mean_ci_mps", IntervalJson(c.speed.mean_ci)},
@@ -162,6 +173,10 @@ std::string CalibrationText(const CalibrationRun& run) {
       out += "; launch offset " + Fixed(c.launch_offset->offset_m, 3) + " m (+- " +
              Fixed(c.launch_offset->standard_error_m, 3) + ", launch point at " +
              Fixed(c.launch_offset->launch_point_m, 3) + " m)";
+    }
+    if (const int redrawn = PlacementRedrawn(kick); redrawn > 0) {
+      out += "; placement drawn again (ball inside the robot) in " + std::to_string(redrawn) +
+             " trials";
     }
     out += "\n";
   }
