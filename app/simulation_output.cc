@@ -61,6 +61,9 @@ std::string SimulationText(const SimulationRun& run) {
   out << Format("rest: mean (%.3f, %.3f) m, sd (%.3f, %.3f) m; mean time %.2f s; settled %d/%d\n",
                 s.rest_mean_F.x(), s.rest_mean_F.y(), s.rest_sd_F.x(), s.rest_sd_F.y(),
                 s.time_mean_s, s.settled, s.trials);
+  out << Format("placement: %d/%d trials drew the ball inside the robot first and drew again "
+                "(%d draws rejected)\n",
+                s.placement_redrawn, s.trials, s.placement_redraws);
   return out.str();
 }
 
@@ -90,6 +93,8 @@ nlohmann::ordered_json SimulationJson(const SimulationRun& run) {
                   {"touched", s.touched},
                   {"launched", s.launched},
                   {"settled", s.settled},
+                  {"placement_redrawn", s.placement_redrawn},
+                  {"placement_redraws", s.placement_redraws},
                   {"launch_speed_mean_mps", s.launch_speed_mean_mps},
                   {"launch_speed_sd_mps", s.launch_speed_sd_mps},
                   {"launch_direction_mean_deg", s.launch_direction_mean_rad * kRadToDeg},
@@ -113,7 +118,8 @@ nlohmann::ordered_json SimulationJson(const SimulationRun& run) {
                  {"placement_dy_m", r.draw.placement_dy_m},
                  {"placement_dtheta_deg", r.draw.placement_dtheta_rad * kRadToDeg},
                  {"motion_speed_factor", r.draw.speed_factor},
-                 {"carpet_factor", r.draw.carpet_factor}};
+                 {"carpet_factor", r.draw.carpet_factor},
+                 {"placement_redraws", r.draw.placement_redraws}};
     trials.push_back(t);
   }
   j["trials_detail"] = trials;

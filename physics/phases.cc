@@ -84,7 +84,7 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
 }
 
 PhaseEnd RunRollPhase(const PhysicsScene& scene, const Carpet& carpet, const BallState& start,
-                      double t_start_s, BallMonitor& monitor) {
+                      double t_start_s, BallMonitor& monitor, const RollStepObserver& observer) {
   const StepParams& steps = scene.params.steps;
   const double radius = scene.field->ball.radius_m;
   BulletWorld world(BulletWorld::Kind::kRigid, SolverOf(steps));
@@ -108,6 +108,7 @@ PhaseEnd RunRollPhase(const PhysicsScene& scene, const Carpet& carpet, const Bal
     end.t_s += dt;
     end.ball = ReadBall(*ball);
     monitor.Observe(end.t_s, end.ball, ContactsOf(*world.world().getDispatcher(), *ball));
+    if (observer) observer(*world.world().getDispatcher(), *ball);
   }
   return end;
 }

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <functional>
 
 #include "models/kick_motion.h"
 #include "physics/ball_state.h"
@@ -33,7 +34,13 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
                       const Eigen::Isometry3d& pose_F_root, double speed_factor,
                       const BallState& ball, BallMonitor& monitor);
 
+// Called after every roll step with the world's dispatcher (its contact manifolds) and the ball's
+// collision object: probes that need more than the ball's state (robot_impact.h).
+using RollStepObserver =
+    std::function<void(btDispatcher& dispatcher, const btCollisionObject& ball)>;
+
 PhaseEnd RunRollPhase(const PhysicsScene& scene, const Carpet& carpet, const BallState& ball,
-                      double t_start_s, BallMonitor& monitor);
+                      double t_start_s, BallMonitor& monitor,
+                      const RollStepObserver& observer = {});
 
 }  // namespace foresight

@@ -35,6 +35,8 @@ TrialSummary Summarize(std::span<const TrialResult> results) {
     ++s.first_contacts[static_cast<int>(r.outcome.first_contact)];
     s.launched += r.launched;
     s.settled += r.settled;
+    s.placement_redrawn += r.draw.placement_redraws > 0;
+    s.placement_redraws += r.draw.placement_redraws;
     rest_x.push_back(r.outcome.p_F_rest.x());
     rest_y.push_back(r.outcome.p_F_rest.y());
     times.push_back(r.outcome.time_s);

@@ -41,6 +41,10 @@ struct TrialSummary {
   int touched = 0;
   int launched = 0;
   int settled = 0;
+  // Trials whose first placement draw put the ball inside the robot, and the rejected draws in
+  // all (trial.h: such draws are drawn again).
+  int placement_redrawn = 0;
+  int placement_redraws = 0;
   Vec2 rest_mean_F{0.0, 0.0};
   Vec2 rest_sd_F{0.0, 0.0};            // per axis, sample standard deviation
   double launch_speed_mean_mps = 0.0;  // over the touched trials

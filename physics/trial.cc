@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/error.h"
 #include "common/random.h"
+#include "physics/ball_placement.h"
 #include "physics/bullet_convert.h"
 #include "physics/phases.h"
 
@@ -33,33 +35,56 @@ Outcome Finish(const BallMonitor& monitor, const PhaseEnd& end, double t_zero_s)
 }  // namespace
 
 TrialDraw DrawTrial(const TrialVariation& variation, const CarpetParams& carpet,
-                    std::uint64_t stream_key) {
+                    std::uint64_t stream_key, const PlacementClear& clear) {
   RandomStream stream(stream_key);
   TrialDraw draw;
-  draw.placement_dx_m = variation.placement_sigma_x_m * ClippedNormal(stream);
-  draw.placement_dy_m = variation.placement_sigma_y_m * ClippedNormal(stream);
-  draw.placement_dtheta_rad = variation.placement_sigma_theta_rad * ClippedNormal(stream);
+  for (int k = 0;; ++k) {
+    // The whole placement is drawn again: x, y and heading are one stance of the robot.
+    draw.placement_dx_m = variation.placement_sigma_x_m * ClippedNormal(stream);
+    draw.placement_dy_m = variation.placement_sigma_y_m * ClippedNormal(stream);
+    draw.placement_dtheta_rad = variation.placement_sigma_theta_rad * ClippedNormal(stream);
+    if (!clear || clear(Vec2(draw.placement_dx_m, draw.placement_dy_m))) break;
+    if (k + 1 >= kMaxPlacementDraws) {
+      throw InputError("trial placement: the ball lay inside the robot in " +
+                       std::to_string(kMaxPlacementDraws) +
+                       " draws in a row; the motion's ball spot must lie clear of the robot");
+    }
+    draw.placement_redraws = k + 1;
+  }
   draw.speed_factor = 1.0 + variation.motion_speed_sigma_rel * ClippedNormal(stream);
   draw.carpet_factor = 1.0 + carpet.deceleration_sigma_rel * ClippedNormal(stream);
   return draw;
 }
 
-TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request) {
+KickStart DrawKickStart(const PhysicsScene& scene, const KickRequest& request) {
   const Robot& robot = *scene.robot;
   const KickMotion& motion = robot.motions[request.motion_index];
+  const StanceClearance clearance(robot, motion, scene.field->ball.radius_m);
+  KickStart start;
+  start.draw = DrawTrial(robot.spec.variation, scene.params.carpet, request.stream,
+                         [&](const Vec2& error_m) {
+                           return clearance.DepthInsideM(motion.p_R_ball + error_m) <= 0.0;
+                         });
+  const TrialDraw& d = start.draw;
+  // The robot stands so the ball lies at the motion's nominal spot, give or take its placement.
+  start.intended_heading_rad = request.state.robot.theta_rad + request.rotation_rad;
+  const double heading = start.intended_heading_rad + d.placement_dtheta_rad;
+  const Vec2 p_R_ball = motion.p_R_ball + Vec2(d.placement_dx_m, d.placement_dy_m);
+  const Vec2 p_F_root = request.state.p_F_ball - Eigen::Rotation2Dd(heading) * p_R_ball;
+  start.pose_F_root = PlanarPose(p_F_root.x(), p_F_root.y(), robot.BaseHeightM(motion), heading);
+  return start;
+}
+
+TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request) {
+  const KickMotion& motion = scene.robot->motions[request.motion_index];
+  const KickStart start = DrawKickStart(scene, request);
   TrialResult result;
-  result.draw = DrawTrial(robot.spec.variation, scene.params.carpet, request.stream);
+  result.draw = start.draw;
   const TrialDraw& d = result.draw;
   const Carpet carpet(scene.params.carpet, d.carpet_factor);
-
-  // The robot stands so the ball lies at the motion's nominal spot, give or take its placement.
-  const double intended_heading = request.state.robot.theta_rad + request.rotation_rad;
-  const double heading = intended_heading + d.placement_dtheta_rad;
-  const Vec2 p_R_ball = motion.p_R_ball + Vec2(d.placement_dx_m, d.placement_dy_m);
+  const double intended_heading = start.intended_heading_rad;
+  const Eigen::Isometry3d& pose_F_root = start.pose_F_root;
   const Vec2 p_F_ball = request.state.p_F_ball;
-  const Vec2 p_F_root = p_F_ball - Eigen::Rotation2Dd(heading) * p_R_ball;
-  const Eigen::Isometry3d pose_F_root =
-      PlanarPose(p_F_root.x(), p_F_root.y(), robot.BaseHeightM(motion), heading);
 
   const double radius = scene.field->ball.radius_m;
   BallMonitor monitor(scene.lines, p_F_ball, request.record_trace);

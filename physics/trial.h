@@ -3,10 +3,13 @@
 // The variation between trials comes only from physical causes, drawn from the trial's own
 // stream (docs/ARCHITECTURE.md, "One physics trial": never from the kick model's sigmas): the
 // robot's placement relative to the ball (x, y in R, heading), the motion's playback speed, and the
-// carpet's deceleration factor.
+// carpet's deceleration factor. A placement that would put the ball inside the robot is drawn
+// again (physics/ball_placement.h says why), and the trial counts the rejected draws.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "models/outcome.h"
@@ -21,10 +24,21 @@ struct TrialDraw {
   double placement_dtheta_rad = 0.0;
   double speed_factor = 1.0;   // motion playback speed (1 = as written)
   double carpet_factor = 1.0;  // factor on the carpet's deceleration
+  // Placement draws rejected before this one because they put the ball inside the robot.
+  int placement_redraws = 0;
 };
 
+// Whether a placement error (x, y in R) leaves the ball clear of the robot.
+using PlacementClear = std::function<bool(const Vec2& placement_error_m)>;
+// A trial that has rejected this many placements in a row stops with an InputError: the
+// motion's nominal spot then lies deeper inside the robot than its placement error reaches.
+inline constexpr int kMaxPlacementDraws = 1000;
+
+// Draws the placement (x, y, heading; again while `clear` says no), then the playback speed
+// and the carpet factor, in that order from the trial's stream. Without `clear` every
+// placement is accepted.
 TrialDraw DrawTrial(const TrialVariation& variation, const CarpetParams& carpet,
-                    std::uint64_t stream);
+                    std::uint64_t stream, const PlacementClear& clear = {});
 
 struct TrialResult {
   Outcome outcome;
@@ -51,6 +65,15 @@ struct KickRequest {
   std::uint64_t stream = 0;
   bool record_trace = false;
 };
+
+// A kick trial's start: its draw and where the robot's root frame stands in F (the ball lies at
+// request.state.p_F_ball, at the motion's nominal spot plus the placement error in R).
+struct KickStart {
+  TrialDraw draw;
+  Eigen::Isometry3d pose_F_root = Eigen::Isometry3d::Identity();
+  double intended_heading_rad = 0.0;  // the robot's heading after the turn, before the error
+};
+KickStart DrawKickStart(const PhysicsScene& scene, const KickRequest& request);
 
 TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request);
 

@@ -65,6 +65,7 @@ py::dict Simulate(const std::string& situation, const std::string& kick, const p
       Column<double>(r, [](T t) { return t.draw.placement_dtheta_rad * kRadToDeg; });
   out["speed_factor"] = Column<double>(r, [](T t) { return t.draw.speed_factor; });
   out["carpet_factor"] = Column<double>(r, [](T t) { return t.draw.carpet_factor; });
+  out["placement_redraws"] = Column<std::int32_t>(r, [](T t) { return t.draw.placement_redraws; });
   // The names of the enum codes, index = code (models/outcome.h).
   std::vector<std::string> categories, contacts, statuses;
   for (int c = 0; c < kCategoryCount; ++c)

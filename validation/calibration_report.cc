@@ -1,5 +1,6 @@
 #include "validation/calibration_report.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/geometry.h"
@@ -54,10 +55,20 @@ Json LaunchOffsetJson(const LaunchOffsetFit& fit) {
               {"rest_distance_m", fit.rest_distance_m}};
 }
 
+// How many of the kick's trials drew their placement again because the ball lay inside the
+// robot (physics/ball_placement.h); 0 for a CSV log.
+int PlacementRedrawn(const CalibratedKick& kick) {
+  return static_cast<int>(std::count_if(kick.draws.begin(), kick.draws.end(),
+                                        [](const TrialDraw& d) { return d.placement_redraws > 0; }));
+}
+
 Json KickJson(const CalibrationRun& run, const CalibratedKick& kick) {
   const KickCalibration& c = kick.fit;
   const double level = run.settings.normality_level;
-  Json j{{"name", c.kick}, {"observations", c.observations}, {"missed", kick.missed}};
+  Json j{{"name", c.kick},
+         {"observations", c.observations},
+         {"missed", kick.missed},
+         {"placement_redrawn", PlacementRedrawn(kick)}};
   if (const auto i = run.base.Find(c.kick)) j["committed"] = KickSpecJson(run.base.kicks[*i]);
   j["speed"] = Json{{"mean_mps", c.speed.mean},
                     {"mean_ci_mps", IntervalJson(c.speed.mean_ci)},
@@ -163,6 +174,10 @@ std::string CalibrationText(const CalibrationRun& run) {
              Fixed(c.launch_offset->standard_error_m, 3) + ", launch point at " +
              Fixed(c.launch_offset->launch_point_m, 3) + " m)";
     }
+    if (const int redrawn = PlacementRedrawn(kick); redrawn > 0) {
+      out += "; placement drawn again (ball inside the robot) in " + std::to_string(redrawn) +
+             " trials";
+    }
     out += "\n";
   }
   if (run.deceleration) {
@@ -212,7 +227,8 @@ Json CalibrationJson(const CalibrationRun& run) {
 std::string CalibrationObservationsCsv(const CalibrationRun& run) {
   std::string out =
       "kick,index,launch_speed_mps,launch_direction_deg,roll_distance_m,rolling_samples,"
-      "placement_dx_m,placement_dy_m,placement_dtheta_deg,speed_factor,carpet_factor\n";
+      "placement_dx_m,placement_dy_m,placement_dtheta_deg,speed_factor,carpet_factor,"
+      "placement_redraws\n";
   for (const CalibratedKick& kick : run.kicks) {
     for (std::size_t i = 0; i < kick.observations.size(); ++i) {
       const KickObservation& o = kick.observations[i];
@@ -224,9 +240,9 @@ std::string CalibrationObservationsCsv(const CalibrationRun& run) {
         const TrialDraw& d = kick.draws[i];
         out += Fixed(d.placement_dx_m, 6) + "," + Fixed(d.placement_dy_m, 6) + "," +
                Fixed(d.placement_dtheta_rad * kRadToDeg, 4) + "," + Fixed(d.speed_factor, 6) + "," +
-               Fixed(d.carpet_factor, 6) + "\n";
+               Fixed(d.carpet_factor, 6) + "," + std::to_string(d.placement_redraws) + "\n";
       } else {
-        out += ",,,,\n";
+        out += ",,,,,\n";
       }
     }
   }

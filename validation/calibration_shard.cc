@@ -16,7 +16,7 @@ nlohmann::json TrialJson(const KickObservation& o, const TrialDraw& d) {
           rolling,
           {ExactJson(d.placement_dx_m), ExactJson(d.placement_dy_m),
            ExactJson(d.placement_dtheta_rad), ExactJson(d.speed_factor),
-           ExactJson(d.carpet_factor)},
+           ExactJson(d.carpet_factor), d.placement_redraws},
           o.has_launch_offset ? ExactJson(o.launch_offset_m) : nlohmann::json(nullptr)};
 }
 
@@ -34,9 +34,9 @@ void ReadTrial(const ShardValue& v, PhysicsKickTrials& kick, int trial) {
   for (std::size_t i = 0; i < rolling.Size(); i += 2)
     o.rolling.push_back({rolling.At(i).Double(), rolling.At(i + 1).Double()});
   const ShardValue draw = v.At(4);
-  if (draw.Size() != 5) draw.Fail("must be the 5 perturbations");
+  if (draw.Size() != 6) draw.Fail("must be the 5 perturbations and the placement redraws");
   TrialDraw d{draw.At(0).Double(), draw.At(1).Double(), draw.At(2).Double(), draw.At(3).Double(),
-              draw.At(4).Double()};
+              draw.At(4).Double(), draw.At(5).Int()};
   o.has_launch_offset = !v.At(5).IsNull();
   if (o.has_launch_offset) o.launch_offset_m = v.At(5).Double();
   kick.observations.push_back(std::move(o));

@@ -12,6 +12,7 @@
 #include "models/field_spec.h"
 #include "models/model_paths.h"
 #include "physics/physics_scene.h"
+#include "physics/robot_impact.h"
 #include "physics/trial.h"
 #include "report/report_format.h"
 #include "stats/statistics.h"
@@ -127,6 +128,43 @@ CheckResult Run(const ReboundCheck& c, const CheckSpec& spec, const std::filesys
                         std::to_string(c.phases) + " phases per speed: " + detail);
 }
 
+CheckResult Run(const RobotReboundCheck& c, const CheckSpec& spec,
+                const std::filesystem::path& models, int) {
+  const UniformWorld w = LoadUniformWorld(c.field, spec, models);
+  const Robot robot = LoadRobot(c.robot, models);
+  const double e = w.params.materials.restitution.robot;
+  const double mu = w.params.materials.friction.robot;
+  const BallSpec& ball = w.field.ball;
+  constexpr double kGapM = 0.01;  // the roll starts 1 cm before the first touch
+  bool ok = true;
+  std::string detail;
+  for (double v : c.speeds_mps) {
+    const RobotImpactResult r = RollIntoRobot(w.field, w.params, robot, c.link, v, kGapM);
+    if (!r.touched) {
+      ok = false;
+      detail += (detail.empty() ? "" : "; ") + Fixed(v, 1) + " m/s: never touched";
+      continue;
+    }
+    const double approach = -r.before.v_F.x();
+    const RigidImpact theory =
+        PredictRigidImpact(r.before, r.n_F, ball.radius_m, ball.inertia_factor, e, mu);
+    const double back_error = std::abs(r.after.v_F.x() - theory.v_F.x()) / approach;
+    const double up_error = std::abs(r.after.v_F.z() - theory.v_F.z()) / approach;
+    const double e_error = std::abs(r.NormalRestitution() - e) / e;
+    ok = ok && e_error <= c.max_error_rel && back_error <= c.max_error_rel &&
+         up_error <= c.max_error_rel;
+    detail += (detail.empty() ? "" : "; ") + Fixed(v, 1) + " m/s: normal " +
+              Fixed(std::asin(std::clamp(r.n_F.z(), -1.0, 1.0)) * kRadToDeg, 1) +
+              " deg up, e realised " + Fixed(r.NormalRestitution(), 3) + ", back " +
+              Fixed(r.ReboundRatio(), 3) + " v (theory " + Fixed(theory.v_F.x() / approach, 3) +
+              "), up " + Fixed(r.after.v_F.z() / approach, 3) + " v (theory " +
+              Fixed(theory.v_F.z() / approach, 3) + "), hop " + Fixed(r.max_height_m * 1000.0, 1) +
+              " mm";
+  }
+  return Result(ok, c.robot + " " + c.link + ", e = " + Fixed(e, 3) + ", mu = " + Fixed(mu, 2) +
+                        ": " + detail);
+}
+
 // The calibration situation of the spec's robot with the spec's kick model, as `foresight
 // calibrate --kicks` plays it.
 PhysicsCalibrationSettings CalibrationSettingsOf(const std::string& robot, const std::string& kicks,
@@ -235,6 +273,12 @@ void ReboundCheck::Validate() const {
   RequireInRange("phases", phases, 1, kMaxCheckPhases);
   RequireInRange("max_error_rel", max_error_rel, 0.0, 1.0);
   RequireInRange("min_error_mps", min_error_mps, 0.0, 1.0);
+}
+
+void RobotReboundCheck::Validate() const {
+  if (speeds_mps.empty()) throw InputError("speeds_mps: must list at least one speed");
+  for (double v : speeds_mps) RequireInRange("speeds_mps", v, 0.05, 20.0);
+  RequireInRange("max_error_rel", max_error_rel, 0.0, 1.0);
 }
 
 void KickDirectionCheck::Validate() const {

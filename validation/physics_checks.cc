@@ -82,6 +82,16 @@ CheckKind ReadRebound(const JsonObject& item) {
   return c;
 }
 
+CheckKind ReadRobotRebound(const JsonObject& item) {
+  RobotReboundCheck c;
+  c.field = item.String("field");
+  c.robot = item.String("robot");
+  c.link = item.String("link");
+  c.speeds_mps = item.NumberArray("speeds_mps");
+  c.max_error_rel = item.Number("max_error_rel");
+  return c;
+}
+
 CheckKind ReadKickDirection(const JsonObject& item) {
   KickDirectionCheck c;
   c.robot = item.String("robot");
@@ -135,6 +145,9 @@ const std::vector<KindReader>& Readers() {
       {ReboundCheck::kKind,
        {"field", "target", "speeds_mps", "phases", "max_error_rel", "min_error_mps"},
        ReadRebound},
+      {RobotReboundCheck::kKind,
+       {"field", "robot", "link", "speeds_mps", "max_error_rel"},
+       ReadRobotRebound},
       {KickDirectionCheck::kKind,
        {"robot", "kick", "kicks", "trials", "max_error_deg"},
        ReadKickDirection},

@@ -75,6 +75,7 @@ def test_simulate_arrays_have_one_entry_per_trial_and_match_the_cli():
     for name in ("category", "first_contact", "status"):
         assert trials[name].dtype == np.int8
     assert trials["touched"].dtype == np.bool_
+    assert trials["placement_redraws"].dtype == np.int32  # placements that put the ball inside
     assert trials["category_names"] == ["infield", "opp_goal", "own_goal", "out"]
     assert trials["contact_names"] == ["none", "post", "net", "obstacle", "robot"]
     assert trials["status_names"] == ["ok", "missed", "not_settled"]
@@ -96,6 +97,7 @@ def test_simulate_arrays_have_one_entry_per_trial_and_match_the_cli():
         assert trials["speed_factor"][i] == trial["draw"]["motion_speed_factor"]
         assert trials["carpet_factor"][i] == trial["draw"]["carpet_factor"]
         assert trials["placement_dx_m"][i] == trial["draw"]["placement_dx_m"]
+        assert trials["placement_redraws"][i] == trial["draw"]["placement_redraws"]
     # Launch speeds of a NAO forward kick: a few tenths of a metre per second to a few m/s.
     speeds = trials["launch_speed_mps"][trials["touched"]]
     assert speeds.size > 0 and np.all((speeds > 0.1) & (speeds < 10.0))

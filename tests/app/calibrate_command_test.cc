@@ -82,6 +82,10 @@ TEST_F(CalibrateCommandTest, PhysicsCalibrationWritesModelAndReport) {
   ASSERT_EQ(j["kicks"].size(), 1u);
   EXPECT_EQ(j["kicks"][0]["name"], "side_kick_left");
   EXPECT_EQ(j["kicks"][0]["observations"].get<int>() + j["kicks"][0]["missed"].get<int>(), 40);
+  // Trials whose placement put the ball inside the robot and were drawn again (about 1 % for
+  // the side kick): counted, never more than the trials.
+  EXPECT_GE(j["kicks"][0]["placement_redrawn"].get<int>(), 0);
+  EXPECT_LE(j["kicks"][0]["placement_redrawn"].get<int>(), 40);
   const std::string kicks_csv = ReadFile(report / "calibration_kicks.csv");
   EXPECT_EQ(CountOf(kicks_csv, "\n"), 41) << kicks_csv.substr(0, 300);
   EXPECT_THAT(kicks_csv, StartsWith("kick,"));

@@ -31,6 +31,7 @@ TEST(CheckKindsTest, KindNamesAreTheSpecsWords) {
   EXPECT_EQ(KindName(CalibrationBandCheck{}), "calibration_band");
   EXPECT_EQ(KindName(FidelityFloorCheck{}), "fidelity_floor");
   EXPECT_EQ(KindName(ReboundCheck{}), "rebound");
+  EXPECT_EQ(KindName(RobotReboundCheck{}), "robot_rebound");
   EXPECT_EQ(ImpactTargetName(ImpactTarget::kPost), "post");
   EXPECT_EQ(ImpactTargetName(ImpactTarget::kBackNet), "back_net");
   EXPECT_EQ(ImpactTargetName(ImpactTarget::kSideNet), "side_net");

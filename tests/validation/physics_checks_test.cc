@@ -58,6 +58,11 @@ TEST(PhysicsChecksTest, ShippedSpecLoads) {
   EXPECT_EQ(net.phases, 20);
   const auto& rebound = std::get<ReboundCheck>(Named(suite, "spl_post_rebound").kind);
   EXPECT_EQ(rebound.speeds_mps, (std::vector<double>{0.3, 1.0, 2.0, 5.0, 10.0}));
+  const auto& foot = std::get<RobotReboundCheck>(Named(suite, "nao_foot_rebound").kind);
+  EXPECT_EQ(foot.link, "r_foot");
+  EXPECT_EQ(foot.speeds_mps, (std::vector<double>{0.5, 1.0, 2.0}));
+  EXPECT_EQ(foot.max_error_rel, 0.1);  // issue 29's bound
+  EXPECT_EQ(std::get<RobotReboundCheck>(Named(suite, "aibo_paw_rebound").kind).robot, "aibo_ers7");
   const auto& band = std::get<CalibrationBandCheck>(Named(suite, "nao_calibration_band").kind);
   EXPECT_EQ(band.robot, "nao");
   EXPECT_EQ(band.trials, 1000);  // the calibration's own run: a drift guard (issue 12)
@@ -143,6 +148,27 @@ TEST(PhysicsChecksTest, ReboundPassesWithTheMaterialsAndFailsWithoutATolerance) 
   const CheckResult strict =
       RunChecks(LoadCheckSuite(Spec("rebound0.json", with("0", "0"))), testing::ModelsDir(), 1, {})[0];
   EXPECT_FALSE(strict.passed) << strict.detail;
+}
+
+TEST(PhysicsChecksTest, RobotReboundPassesWithTheMaterialsAndFailsWithoutATolerance) {
+  const std::string rebound =
+      R"({"name": "paw", "kind": "robot_rebound", "field": "four_legged", "robot": "aibo_ers7", "link": "rf_lower", "speeds_mps": [1], "max_error_rel": TOL})";
+  const auto with = [&](const char* tol) {
+    std::string text = rebound;
+    text.replace(text.find("TOL"), 3, tol);
+    return text;
+  };
+  const CheckResult pass = RunChecks(LoadCheckSuite(Spec("paw.json", with("0.1"))),
+                                     testing::ModelsDir(), 1, {})[0];
+  EXPECT_TRUE(pass.passed) << pass.detail;
+  EXPECT_THAT(pass.detail, HasSubstr("aibo_ers7 rf_lower, e = 0.180, mu = 0.48"));
+  EXPECT_THAT(pass.detail, HasSubstr("hop"));
+  const CheckResult strict = RunChecks(LoadCheckSuite(Spec("paw0.json", with("0"))),
+                                       testing::ModelsDir(), 1, {})[0];
+  EXPECT_FALSE(strict.passed) << strict.detail;
+  const std::string bad_link = R"({"name": "paw", "kind": "robot_rebound", "field": "four_legged", "robot": "aibo_ers7", "link": "tail", "speeds_mps": [1], "max_error_rel": 0.1})";
+  EXPECT_THROW(RunChecks(LoadCheckSuite(Spec("tail.json", bad_link)), testing::ModelsDir(), 1, {}),
+               InputError);
 }
 
 TEST(PhysicsChecksTest, JUnitXmlCountsFailuresAndEscapes) {
