@@ -220,7 +220,8 @@ TEST_F(CbrCommandTest, CheckFailsOnKicksBeyondTheirReach) {
   const RunResult physics = Cbr({"check", "--case-base", (work() / "reach_base.json").string(),
                                  "--kicks", "aibo_ers7"});
   EXPECT_EQ(physics.exit_code, 1);
-  EXPECT_THAT(physics.out, HasSubstr("beyond the kick's reach 1.97 m"));
+  EXPECT_THAT(physics.out, HasSubstr("error: case shoots_from_afar: kick forward (trajectory 0) of "
+                                     "4.64 m is beyond the kick's reach 1."));
   const RunResult nao = Cbr({"check", "--kicks", "nao"});
   EXPECT_EQ(nao.exit_code, 2);
   EXPECT_THAT(nao.err, StartsWith("foresight: error: "));
