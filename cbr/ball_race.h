@@ -5,8 +5,8 @@
 // moving towards the ball, the defender may reach the ball first" (sec. 5.3.1). The model:
 // every robot walks straight at speed_mps until its body touches the ball,
 //   t_i = max(0, |p_i - B| - reach_m) / speed_mps,     reach_m = body radius + ball radius,
-// and the team wins when its fastest robot is not beaten by an opponent by more than tie_s:
-//   min_team t <= min_opponents t + tie_s.
+// and a robot wins when no opponent beats it by more than tie_s (t <= min_opponents t + tie_s);
+// the team wins when its fastest robot does.
 // tie_s is one control step: robots that arrive within one step of each other arrive together
 // as far as any robot can act on it. Decision: a tie goes to the team, whose robot is already on
 // its way (no case is needed to get the ball). Turning towards the ball is left out for both
@@ -31,5 +31,12 @@ struct BallRace {
 };
 
 BallRace RunBallRace(const Problem& problem, const RaceParams& params);
+
+// t of a robot at p_F (the formula above).
+double TimeToBall(const Vec2& p_F, const Vec2& ball_F, const RaceParams& params);
+
+// Whether problem teammate `index` reaches the ball no later than race.opponents_s + tie_s.
+bool TeammateWins(const Problem& problem, int index, const BallRace& race,
+                  const RaceParams& params);
 
 }  // namespace foresight

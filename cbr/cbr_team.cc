@@ -242,7 +242,8 @@ std::optional<CbrTeam::Choice> CbrTeam::ChooseCase(std::span<const Case> cases,
     Choice choice{index, e.correspondence};
     const int getter = BallGetter(c);
     if (team.ball_race && getter >= 0 &&
-        choice.correspondence.problem_index[At(getter)] != race.fastest) {
+        !TeammateWins(problem, choice.correspondence.problem_index[At(getter)], race, team.race)) {
+      // The getter loses the race: the same case with the team's fastest robot getting the ball.
       choice.correspondence = FindCorrespondence(problem, c, retrieval.cost, retrieval.thr_cost_m,
                                                  FixedPair{getter, race.fastest});
       if (!choice.correspondence.feasible) {

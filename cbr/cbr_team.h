@@ -31,10 +31,14 @@
 // rests (rolls slower than the robots walk: a ball at walking speed rolls on at most v^2 / 2a,
 // inside a case's ball scope) and the team reaches it first; meanwhile, and after an abort for a
 // lost ball until then, the default behaviour plays (so a team that has just lost the ball does
-// not retrieve a case and abort it again at once). In a reused case the robot that gets the ball
-// is the team's fastest to it: a candidate whose best correspondence sends another robot is
-// matched again with that robot fixed (sec. 3.2's cost among those matchings, within thr_c) or
-// passed over for the next candidate.
+// not retrieve a case and abort it again at once). A candidate whose correspondence sends a
+// robot for the ball that an opponent beats to it is matched again with the team's fastest robot
+// as its getter (sec. 3.2's cost among those matchings, within thr_c) or passed over for the
+// next candidate. Without this check the correspondence alone chose the getter, and a robot
+// holding the ball could be sent to wait as the receiver while its teammate walked up to "get"
+// it; the holding rule then made the holder kick the power kick blind, which in 2D, where a ball
+// in the penalty area counts as to goal, scored: 2D scenarios 1-4 at 7.5, 9.5, 28 and 57.5 % to
+// goal without the check, 1.5, 8, 0.5 and 18 % with it (200 trials, seed 1).
 #pragma once
 
 #include <array>

@@ -29,6 +29,16 @@ TEST(BallRaceTest, TimesAreTheWalkToTouchingTheBall) {
   EXPECT_TRUE(r.won);
 }
 
+TEST(BallRaceTest, EachTeammateAgainstTheFastestOpponent) {
+  const Problem p = RaceProblem({{-0.3, 0.0}, {1.5, 0.0}}, {{0.0, 0.8}});
+  const BallRace r = RunBallRace(p, kRace);
+  EXPECT_TRUE(r.won);
+  EXPECT_TRUE(TeammateWins(p, 0, r, kRace));   // 0.3 m against 0.8 m
+  EXPECT_FALSE(TeammateWins(p, 1, r, kRace));  // 1.5 m: the opponent is there 2.3 s earlier
+  EXPECT_NEAR(TimeToBall(p.teammates[1].pose.p_F, p.p_F_ball, kRace), (1.5 - 0.162) / 0.3,
+              1e-12);
+}
+
 TEST(BallRaceTest, ARobotTouchingTheBallNeedsNoTime) {
   const BallRace r = RunBallRace(RaceProblem({{-0.1, 0.0}}, {{0.15, 0.0}}), kRace);
   EXPECT_EQ(r.team_s, 0.0);
