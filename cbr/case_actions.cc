@@ -25,8 +25,14 @@ bool Near(const Vec2& a, const Vec2& b, double tolerance_m) {
   return (a - b).norm() <= tolerance_m;
 }
 
+// The heading a kick or pass is aimed at (the trajectory's end, or the goal), for the robot
+// holding the ball at p_F_ball.
 double AimHeading(const FuzzyTrajectory* trajectory, const KickSpec& kick, const Perception& p,
-                  const ActionContext& ctx);
+                  const ActionContext& ctx) {
+  const Vec2 aim_at = trajectory ? trajectory->end_F
+                                 : Vec2(p.attack_sign * ctx.retrieval->goal_x_m, 0.0);
+  return HeadingTowards(p.p_F_ball, aim_at) - kick.direction_rad;
+}
 
 // A kick or pass: aim along `trajectory` with kick `kick_index`, then kick.
 ActionStep AimAndKick(const FuzzyTrajectory* trajectory, int kick_index, ActionProgress& s,
@@ -60,15 +66,6 @@ ActionStep AimAndKick(const FuzzyTrajectory* trajectory, int kick_index, ActionP
   return step;
 }
 
-// The heading a kick or pass is aimed at (the trajectory's end, or the goal), for the robot
-// holding the ball at p_F_ball.
-double AimHeading(const FuzzyTrajectory* trajectory, const KickSpec& kick, const Perception& p,
-                  const ActionContext& ctx) {
-  const Vec2 aim_at = trajectory ? trajectory->end_F
-                                 : Vec2(p.attack_sign * ctx.retrieval->goal_x_m, 0.0);
-  return HeadingTowards(p.p_F_ball, aim_at) - kick.direction_rad;
-}
-
 // Whether the dribble must end now to leave the time to aim the robot's next kick or pass.
 bool TimeToAim(const CasePlay& play, int me, const ActionProgress& s, const Perception& p,
                const ActionContext& ctx) {
@@ -76,7 +73,8 @@ bool TimeToAim(const CasePlay& play, int me, const ActionProgress& s, const Perc
   if (s.action + 1 >= actions.size() || ctx.dribble_turn_radps <= 0.0) return false;
   const CaseAction& next = actions[s.action + 1];
   if (next.type != ActionType::kKick && next.type != ActionType::kPass) return false;
-  const KickSpec& kick = ctx.kicks->kicks[static_cast<std::size_t>(ctx.kicks->Find(next.kick).value_or(0))];
+  const int kick_index = ctx.kicks->Find(next.kick).value_or(0);
+  const KickSpec& kick = ctx.kicks->kicks[static_cast<std::size_t>(kick_index)];
   const double turn =
       std::abs(WrapAngle(AimHeading(play.KickTrajectory(me, s.kicks_done), kick, p, ctx) -
                          p.pose.theta_rad));

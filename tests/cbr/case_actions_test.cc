@@ -108,5 +108,37 @@ TEST_F(CaseActionsTest, TheReceiverWaitsForThePassHeardOrSeen) {
   EXPECT_EQ(StepActions(play_, 1, unheard, p, ctx_).command.kind, CommandKind::kGetBall);
 }
 
+// A dribble ends once the holding time left is what turning the ball to the next kick's aim
+// takes (at dribble_turn_radps) plus a control step, so the kick is aimed, not forced.
+TEST_F(CaseActionsTest, ADribbleEndsInTimeToAimTheKickAfterIt) {
+  CaseAction get, dribble, kick;
+  get.type = ActionType::kGetBall;
+  dribble.type = ActionType::kDribble;
+  dribble.target_F = Vec2(0.0, 2.0);  // far: never reached in the test
+  kick.type = ActionType::kKick;
+  kick.kick = "forward";
+  kick.at_goal = true;
+  Case c = c_;
+  c.name = c.source = "dribble_then_shoot";
+  c.teammates = {{1, Vec2(-0.2, 0.0), {get, dribble, kick}}};
+  const CasePlay play = MakeCasePlay(c, 0, 1, Vec2(0.0, 0.0), {0, -1, -1, -1}, retrieval_);
+  ctx_.dribble_turn_radps = 45.0 * kDegToRad;
+  // Facing +y, the goal straight along +x: a quarter turn, 2 s at 45 deg/s; with the step,
+  // the dribble may last 2.7 - 2.04 = 0.66 s.
+  const auto step_after = [&](double held_s) {
+    ActionProgress progress;
+    progress.action = 1;
+    progress.was_holding = true;
+    Perception p = Holding(0.5 * kPi);
+    progress.holding_since_s = p.time_s - held_s;
+    StepActions(play, 0, progress, p, ctx_);
+    return progress.action;
+  };
+  EXPECT_EQ(step_after(0.60), 1u);  // still dribbling
+  EXPECT_EQ(step_after(0.70), 2u);  // on to the kick, which turns to aim
+  ctx_.dribble_turn_radps = 0.0;    // without the rule the dribble runs to the holding limit
+  EXPECT_EQ(step_after(0.70), 1u);
+}
+
 }  // namespace
 }  // namespace foresight
