@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "common/error.h"
 #include "models/walk_command.h"
 
 namespace foresight {
@@ -29,6 +30,12 @@ void CountNoCase(const RetrievalResult& result, CbrTeamCounters& counters) {
 
 CbrTeam::CbrTeam(const CbrTeamSetup& setup, TeamPolicy& default_behaviour, int robots)
     : setup_(setup), default_(&default_behaviour), robots_(At(robots)) {
+  const CbrTeamParams& team = *setup.skills.team;
+  if (team.ball_race && !(team.race.speed_mps > 0.0 && team.race.reach_m >= 0.0)) {
+    throw InputError(team.file.string() +
+                     ": ball_race: the race needs the robots' walking speed and reach "
+                     "(CbrTeamParams::race), which whoever puts the team on a field sets");
+  }
   for (Robot& r : robots_) {
     // Until a teammate reports, its distance to the ball is unknown: never the closest.
     r.team.assign(At(robots), TeammateBelief{false, std::numeric_limits<double>::infinity()});

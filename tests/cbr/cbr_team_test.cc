@@ -11,6 +11,7 @@
 
 #include "cbr/retrieval_params.h"
 #include "cbr/team_params.h"
+#include "common/error.h"
 #include "models/model_paths.h"
 #include "tests/support/temp_files.h"
 
@@ -238,6 +239,13 @@ TEST_F(CbrTeamTest, NoCycleStartsWhileAnOpponentWinsTheRaceOrTheBallRolls) {
   EXPECT_TRUE(SendersOf(CbrMessageKind::kCoordinator).empty());
   Run(3);  // the ball rests
   EXPECT_EQ(SendersOf(CbrMessageKind::kCoordinator), std::vector<int>{0});
+}
+
+TEST_F(CbrTeamTest, TheRaceWithoutTheRobotsSpeedIsRefused) {
+  team_params_.race = RaceParams{};
+  EXPECT_THROW(MakeTeam(), InputError);
+  team_params_.ball_race = false;  // the paper's team needs no speed
+  EXPECT_NO_THROW(MakeTeam());
 }
 
 TEST_F(CbrTeamTest, ARobotWhoseMessagesAreAllLostDoesNotStallTheOther) {
