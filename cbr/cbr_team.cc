@@ -31,10 +31,18 @@ void CountNoCase(const RetrievalResult& result, CbrTeamCounters& counters) {
 CbrTeam::CbrTeam(const CbrTeamSetup& setup, TeamPolicy& default_behaviour, int robots)
     : setup_(setup), default_(&default_behaviour), robots_(At(robots)) {
   const CbrTeamParams& team = *setup.skills.team;
-  if (team.ball_race && !(team.race.speed_mps > 0.0 && team.race.reach_m >= 0.0)) {
+  const bool race_set = team.race.speed_mps > 0.0 && team.race.reach_m >= 0.0;
+  if (team.ball_race && !race_set) {
     throw InputError(team.file.string() +
                      ": ball_race: the race needs the robots' walking speed and reach "
                      "(CbrTeamParams::race), which whoever puts the team on a field sets");
+  }
+  if (team.kick_race && !(race_set && team.hold.dribble_speed_mps > 0.0 &&
+                          team.hold.dribble_turn_radps > 0.0 && team.hold.grab_s >= 0.0 &&
+                          team.hold.hold_limit_s >= 0.0 && team.hold.launch_s >= 0.0)) {
+    throw InputError(team.file.string() +
+                     ": kick_race: the race needs the robots' speeds and times with the ball "
+                     "(CbrTeamParams::race and ::hold), which whoever puts the team on a field sets");
   }
   for (Robot& r : robots_) {
     // Until a teammate reports, its distance to the ball is unknown: never the closest.
@@ -258,13 +266,20 @@ std::optional<CbrTeam::Choice> CbrTeam::ChooseCase(std::span<const Case> cases,
         continue;
       }
     }
+    if (!team.kick_race && !team.pass_timing.enabled) return choice;
+    const CaseBallPath path =
+        BuildBallPath(problem, c,
+                      std::span<const Vec2>(choice.correspondence.adapted_F.data(),
+                                            At(choice.correspondence.count)),
+                      retrieval);
+    if (team.kick_race && !RunKickRace(problem, c, choice.correspondence, getter, path,
+                                       *setup_.skills.kicks, team.race, team.hold)
+                               .won) {
+      ++counters_.kick_race_lost;
+      continue;
+    }
     if (team.pass_timing.enabled) {
       // The timing-aware check: the best-ranked candidate whose passes are likely to arrive.
-      const CaseBallPath path =
-          BuildBallPath(problem, c,
-                        std::span<const Vec2>(choice.correspondence.adapted_F.data(),
-                                              At(choice.correspondence.count)),
-                        retrieval);
       if (PassSuccess(path, problem.opponents, *setup_.skills.kicks, team.pass_timing) <
           team.pass_timing.min_success) {
         ++counters_.timing_rejected;

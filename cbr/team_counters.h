@@ -27,6 +27,7 @@ struct CbrTeamCounters {
   int timing_rejected = 0;  // candidates the timing-aware pass check turned down
   int race_lost = 0;        // retrievals refused: an opponent reaches the ball first
   int race_skipped = 0;     // candidates whose getter could not be the team's fastest robot
+  int kick_race_lost = 0;   // candidates whose getter would not play the ball away in time
   // Why "no case", by the furthest any case got through Algorithm 1: a candidate the team turned
   // down (race or pass timing), a path blocked, robots too far, no ball in a scope.
   int no_case_candidates_refused = 0;

@@ -42,12 +42,12 @@ CbrTeamParams LoadCbrTeamParams(const std::string& reference,
                           "presence_timeout_s", "await_case_timeout_s", "adapt_timeout_s",
                           "execute_timeout_s", "wait_end_timeout_s", "no_case_retry_s",
                           "arrive_tolerance_m", "ball_lost_margin_m",
-                          "pass_seen_m", "keep_close_m", "pass_timing", "ball_race"});
+                          "pass_seen_m", "keep_close_m", "pass_timing", "ball_race", "kick_race"});
   RequireSources(root, {"retrievers", "positioning", "belief_period_s", "presence_timeout_s",
                         "await_case_timeout_s", "adapt_timeout_s", "execute_timeout_s",
                         "wait_end_timeout_s", "no_case_retry_s", "arrive_tolerance_m",
                         "ball_lost_margin_m", "pass_seen_m", "keep_close_m",
-                        "pass_timing", "ball_race"});
+                        "pass_timing", "ball_race", "kick_race"});
   p.retrievers = root.Integer("retrievers");
   const std::string positioning = root.String("positioning");
   if (auto parsed = ParsePositioning(positioning)) {
@@ -68,6 +68,7 @@ CbrTeamParams LoadCbrTeamParams(const std::string& reference,
   p.pass_seen_m = root.Number("pass_seen_m");
   p.keep_close_m = root.Number("keep_close_m");
   p.ball_race = root.Bool("ball_race");
+  p.kick_race = root.Bool("kick_race");
   const JsonObject timing = root.Object("pass_timing");
   timing.RejectUnknownKeys({"enabled", "reaction_s", "samples", "time_step_s", "min_success"});
   p.pass_timing.enabled = timing.BoolOr("enabled", false);

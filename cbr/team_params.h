@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "cbr/ball_race.h"
+#include "cbr/kick_race.h"
 #include "cbr/pass_timing.h"
 
 namespace foresight {
@@ -45,6 +46,11 @@ struct CbrTeamParams {
   // reach and tie are the match's (set by whoever puts the team on a field).
   bool ball_race = false;
   RaceParams race;
+  // The kick race (cbr/kick_race.h): with kick_race, a case whose getter would not play the ball
+  // away before an opponent reaches it is not reused. The file gives kick_race; the robot's
+  // times and speeds are the match's (set by whoever puts the team on a field).
+  bool kick_race = false;
+  HoldParams hold;
 
   void Validate() const;
 };

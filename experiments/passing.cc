@@ -38,6 +38,13 @@ void LoadCbrTeam(PassingSetup& s, const std::filesystem::path& models_dir) {
   s.cbr.race.speed_mps = s.robot.walk_speed_mps;
   s.cbr.race.reach_m = s.cbr.pass_timing.reach_m;
   s.cbr.race.tie_s = s.sim.control_step_s;
+  // The kick race: the robot's grab, dribble, turn with the ball and launch, and the rules'
+  // holding limit (the kick starts kick_launch_s before it, as the teams' holding rule has it).
+  s.cbr.hold.grab_s = s.robot.grab_time_s;
+  s.cbr.hold.dribble_speed_mps = s.robot.dribble_speed_mps;
+  s.cbr.hold.dribble_turn_radps = s.robot.dribble_turn_speed_radps;
+  s.cbr.hold.hold_limit_s = s.sim.ball_holding_limit_s - s.robot.kick_launch_s;
+  s.cbr.hold.launch_s = s.robot.kick_launch_s;
 }
 }  // namespace
 

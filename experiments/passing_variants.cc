@@ -37,7 +37,7 @@ void ReadRetrieval(const JsonObject& o, PassingVariant& v) {
 }
 
 void ReadTeam(const JsonObject& o, PassingVariant& v) {
-  o.RejectUnknownKeys({"positioning", "retrievers", "pass_timing"});
+  o.RejectUnknownKeys({"positioning", "retrievers", "pass_timing", "ball_race", "kick_race"});
   if (o.Has("positioning")) {
     const std::string name = o.String("positioning");
     v.positioning = ParsePositioning(name);
@@ -52,6 +52,8 @@ void ReadTeam(const JsonObject& o, PassingVariant& v) {
     }
   }
   if (o.Has("pass_timing")) v.pass_timing = o.BoolOr("pass_timing", false);
+  if (o.Has("ball_race")) v.ball_race = o.BoolOr("ball_race", true);
+  if (o.Has("kick_race")) v.kick_race = o.BoolOr("kick_race", true);
 }
 
 void ReadSimulation(const JsonObject& o, PassingVariant& v) {
@@ -79,6 +81,8 @@ PassingSetup PassingVariant::Apply(const PassingSetup& base) const {
   if (positioning) s.cbr.positioning = *positioning;
   if (retrievers) s.cbr.retrievers = *retrievers;
   if (pass_timing) s.cbr.pass_timing.enabled = *pass_timing;
+  if (ball_race) s.cbr.ball_race = *ball_race;
+  if (kick_race) s.cbr.kick_race = *kick_race;
   if (message_loss_rate) s.sim.message_loss_rate = *message_loss_rate;
   if (ball_noise_sigma_m) s.sim.ball_noise_sigma_m = *ball_noise_sigma_m;
   if (robot_noise_sigma_m) s.sim.robot_noise_sigma_m = *robot_noise_sigma_m;

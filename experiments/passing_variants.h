@@ -9,7 +9,8 @@
 //   retrieval:  cost ("sum", "max", "max_then_sum"), order (the three criteria), free_path and
 //               opponent_similarity (true/false);
 //   team:       positioning ("dependent", "independent"), retrievers (1-4), pass_timing (true:
-//               the timing-aware pass check of cbr/pass_timing.h);
+//               the timing-aware pass check of cbr/pass_timing.h), ball_race and kick_race
+//               (true/false: cbr/ball_race.h, cbr/kick_race.h);
 //   simulation: message_loss_rate, ball_noise_sigma_m, robot_noise_sigma_m.
 // Names are unique; the first variant is the reference the others are compared with.
 #pragma once
@@ -34,6 +35,8 @@ struct PassingVariant {
   std::optional<Positioning> positioning;
   std::optional<int> retrievers;
   std::optional<bool> pass_timing;
+  std::optional<bool> ball_race;
+  std::optional<bool> kick_race;
   std::optional<double> message_loss_rate;
   std::optional<double> ball_noise_sigma_m;
   std::optional<double> robot_noise_sigma_m;

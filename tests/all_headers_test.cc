@@ -29,6 +29,7 @@
 #include "app/strategies_command.h"
 #include "app/variation_fit_output.h"
 #include "cbr/ball_race.h"
+#include "cbr/kick_race.h"
 #include "cbr/ball_scope_index.h"
 #include "cbr/case.h"
 #include "cbr/case_actions.h"

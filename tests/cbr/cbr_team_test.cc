@@ -248,6 +248,34 @@ TEST_F(CbrTeamTest, TheRaceWithoutTheRobotsSpeedIsRefused) {
   EXPECT_NO_THROW(MakeTeam());
 }
 
+TEST_F(CbrTeamTest, TheKickRacePassesOverACaseAnOpponentBreaksBeforeItsFirstKick) {
+  // Robot 0 is 0.3 m behind the ball, an opponent 0.35 m beside it: robot 0 wins the ball race
+  // (0.46 s against 0.63 s) but no case kicks the ball away within 0.63 s (the grab and the
+  // launch alone take 0.6 s after the 0.46 s walk).
+  poses_[0] = Pose2(ball_ + Vec2(-0.3, 0.0), 0.0);
+  opponents_ = {ball_ + Vec2(0.0, -0.35)};
+  team_params_.hold = HoldParams{0.3, 0.15, 45.0 * kDegToRad, 2.4, 0.3};
+  team_params_.kick_race = false;
+  MakeTeam();
+  Run(5);
+  ASSERT_FALSE(SendersOf(CbrMessageKind::kCase).empty());  // without it a case is reused
+  team_params_.kick_race = true;
+  sent_.clear();
+  MakeTeam();
+  Run(5);
+  EXPECT_TRUE(SendersOf(CbrMessageKind::kCase).empty());
+  EXPECT_GT(Counter("kick_race_lost"), 0.0);
+  EXPECT_EQ(SendersOf(CbrMessageKind::kNoCase), std::vector<int>{0});
+}
+
+TEST_F(CbrTeamTest, TheKickRaceWithoutTheRobotsTimesIsRefused) {
+  team_params_.kick_race = true;
+  team_params_.hold = HoldParams{};
+  EXPECT_THROW(MakeTeam(), InputError);
+  team_params_.hold = HoldParams{0.3, 0.15, 45.0 * kDegToRad, 2.4, 0.3};
+  EXPECT_NO_THROW(MakeTeam());
+}
+
 TEST_F(CbrTeamTest, ARobotWhoseMessagesAreAllLostDoesNotStallTheOther) {
   drop = [](const TeamMessage& m) { return m.sender == 0; };
   std::swap(poses_[0], poses_[1]);  // robot 1 is closest: robot 0 would name it, but is unheard
