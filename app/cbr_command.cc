@@ -9,12 +9,14 @@
 #include "app/cli_values.h"
 #include "app/report_text.h"
 #include "cbr/case_base.h"
+#include "cbr/case_holding.h"
 #include "cbr/case_reach.h"
 #include "cbr/own_situation.h"
 #include "cbr/problem.h"
 #include "cbr/retrieval.h"
 #include "cbr/retrieval_params.h"
 #include "common/error.h"
+#include "experiments/passing.h"
 #include "models/model_paths.h"
 #include "report/atomic_file.h"
 
@@ -153,7 +155,20 @@ int RunCheck(const CbrOptions& o, const fs::path& models) {
     s += Format("cases asking more than their kicks carry (%s, reach at %g sd): %d of %zu\n",
                 kicks.robot.c_str(), *params.reach_sigmas, unplayable, cases.HandWrittenCount());
   }
-  const bool ok = blocked == 0 && unplayable == 0;
+  // A case that holds the ball longer than the rules allow is a plan the robot cannot play.
+  const HoldParams hold = DefaultHoldParams(models);
+  int overheld = 0;
+  for (const Case& c : cases.Defending(DefendingGoal::kCyan)) {
+    if (c.transform != CaseTransform::kOriginal) continue;  // mirrors turn and walk as far
+    const std::vector<HoldingFinding> findings = CheckCaseHolding(c, kicks, params, hold);
+    overheld += findings.empty() ? 0 : 1;
+    for (const HoldingFinding& f : findings) {
+      s += "error: case " + c.name + ": " + DescribeFinding(f, hold) + "\n";
+    }
+  }
+  s += Format("cases holding the ball beyond the holding limit (%.2f s): %d of %zu\n",
+              hold.hold_limit_s, overheld, cases.HandWrittenCount());
+  const bool ok = blocked == 0 && unplayable == 0 && overheld == 0;
   s += ok ? "case base OK\n" : "case base FAILED\n";
   Print(s);
   return ok ? 0 : 1;

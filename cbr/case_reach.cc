@@ -1,5 +1,7 @@
 #include "cbr/case_reach.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "cbr/own_situation.h"
@@ -10,10 +12,29 @@
 namespace foresight {
 namespace {
 
-constexpr EnumNames<ReachFault, 2> kFaultNames{{{
+constexpr EnumNames<ReachFault, 3> kFaultNames{{{
     {ReachFault::kBeyondReach, "beyond_reach"},
     {ReachFault::kPassShort, "pass_short"},
+    {ReachFault::kLeavesField, "leaves_field"},
 }}};
+
+// A shot: at the goal, or at a target on the goal line (the cases' far and near corners).
+bool IsShot(const CaseAction& kick, const RetrievalParams& params) {
+  return kick.at_goal || (kick.target_F && std::abs(kick.target_F->x()) >= params.goal_x_m);
+}
+
+// How far beyond a side line the ball rests when kick `t` is launched z sd of direction to either
+// side of its aim and rolls its mean roll (<= 0: inside the field).
+double BeyondSideLine(const FuzzyTrajectory& t, const KickSpec& spec, double mean_roll_m, double z,
+                      double half_width_m) {
+  const double aim = std::atan2(t.u.y(), t.u.x());
+  double out = -half_width_m;
+  for (double side : {-1.0, 1.0}) {
+    const double y = t.start_F.y() + mean_roll_m * std::sin(aim + side * z * spec.sigma_direction_rad);
+    out = std::max(out, std::abs(y) - half_width_m);
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -50,6 +71,12 @@ std::vector<ReachFinding> CheckCaseReach(const Case& c, const KickModel& kicks,
     } else if (t.action == ActionType::kPass && f.length_m - contact_m > f.mean_roll_m) {
       f.fault = ReachFault::kPassShort;
       out.push_back(f);
+    } else if (t.action == ActionType::kKick && !IsShot(*t.kick, params)) {
+      f.out_m = BeyondSideLine(t, spec, f.mean_roll_m, *params.reach_sigmas, params.half_width_m);
+      if (f.out_m > 0.0) {
+        f.fault = ReachFault::kLeavesField;
+        out.push_back(f);
+      }
     }
   }
   return out;
@@ -64,6 +91,12 @@ std::string DescribeFinding(const ReachFinding& f, const RetrievalParams& params
                   "(mean roll %.2f m)",
                   std::string(ActionTypeName(f.action)).c_str(), f.kick.c_str(), f.trajectory,
                   f.length_m, f.reach_m, params.reach_sigmas.value_or(0.0), f.mean_roll_m);
+  } else if (f.fault == ReachFault::kLeavesField) {
+    std::snprintf(text, sizeof text,
+                  "kick %s (trajectory %d): launched %g sd of its direction off its aim, its mean "
+                  "roll %.2f m rests %.2f m beyond the side line",
+                  f.kick.c_str(), f.trajectory, params.reach_sigmas.value_or(0.0), f.mean_roll_m,
+                  f.out_m);
   } else {
     std::snprintf(text, sizeof text,
                   "pass %s (trajectory %d) of %.2f m: the mean roll %.2f m stops %.2f m short "

@@ -7,8 +7,14 @@
 //                 retrieval parameters' reach_sigmas; with z = 2 one kick in 44 rolls further);
 //   pass short:   a pass whose mean roll E[d] does not carry the ball to the receiver's body,
 //                 l - (R + r_b) > E[d] (R the robots' radius, r_b the ball's: the ball stops
-//                 on touching the receiver, so it need not roll to its centre).
-// `foresight cbr check` reports both and fails on them.
+//                 on touching the receiver, so it need not roll to its centre);
+//   leaves field: a kick to a target (not a pass, not a shot: at the goal or at a target on the
+//                 goal line) whose mean roll,
+//                 launched z = reach_sigmas sd of its direction to either side of its aim, comes
+//                 to rest beyond a side line (|y| > half_width_m): a plan that kicks the ball out
+//                 about one time in 44 per side or more. Shots are left out: their aim is on the
+//                 goal line, beside which a wide shot goes out whatever the plan.
+// `foresight cbr check` reports all three and fails on them.
 #pragma once
 
 #include <string_view>
@@ -20,7 +26,7 @@
 
 namespace foresight {
 
-enum class ReachFault { kBeyondReach, kPassShort };
+enum class ReachFault { kBeyondReach, kPassShort, kLeavesField };
 std::string_view ReachFaultName(ReachFault fault);
 
 struct ReachFinding {
@@ -31,6 +37,7 @@ struct ReachFinding {
   double length_m = 0.0;       // what the case asks
   double mean_roll_m = 0.0;    // E[d] of the kick
   double reach_m = 0.0;        // d(reach_sigmas)
+  double out_m = 0.0;          // leaves field: how far beyond the side line the wider rest lies
 };
 
 // The faults of case `c` (empty when it is playable). Precondition: params.reach_sigmas is set

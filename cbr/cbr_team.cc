@@ -162,6 +162,10 @@ void CbrTeam::HearProtocol(Robot& r, const Perception& p, const TeamMessage& m) 
       return;
     case CbrMessageKind::kEnd:
     case CbrMessageKind::kAbort:
+      if (*CbrKind(m) == CbrMessageKind::kAbort &&
+          m.words[1] == static_cast<int>(AbortReason::kTimeout) && r.play) {
+        r.timed_out = r.play;
+      }
       r.cycle = cycle;
       r.play.reset();
       Enter(r, CbrPhase::kIdle, p.time_s);
@@ -208,8 +212,12 @@ Problem CbrTeam::PerceivedProblem(const Robot& r, const Perception& p) const {
   return problem;
 }
 
-bool CbrTeam::MayStartCycle(const Robot& r, const Perception& p) const {
+bool CbrTeam::MayStartCycle(Robot& r, const Perception& p) const {
   const CbrTeamParams& params = *setup_.skills.team;
+  if (r.timed_out && (p.holding_ball || BallLeftScope(*r.timed_out, p, setup_.skills))) {
+    r.timed_out.reset();
+  }
+  if (r.timed_out) return false;
   if (OpponentHasBall(p, setup_.skills)) return false;
   if (!params.ball_race) return true;
   return r.ball_speed_mps < params.race.speed_mps &&
@@ -306,6 +314,7 @@ void CbrTeam::Adopt(Robot& r, const Perception& p, int cycle, int case_index,
 
 void CbrTeam::Abort(Robot& r, const Perception& p, AbortReason reason) {
   counters_.CountAbort(r.cycle, reason);
+  if (reason == AbortReason::kTimeout && r.play) r.timed_out = r.play;
   Send(r, p, CbrMessageKind::kAbort, static_cast<int>(reason));
   r.play.reset();
   Enter(r, CbrPhase::kIdle, p.time_s);

@@ -80,7 +80,17 @@ CaseBallPath BuildBallPath(const Problem& problem, const Case& c, std::span<cons
         if (a.at_goal) {
           add(Vec2(AttackSign(c.defending) * params.goal_x_m, 0.0), a, -1);
         } else if (a.target_F) {
-          add(*a.target_F + shift, a, -1);
+          // A kick of fixed strength does not stop at its target: its corridor runs on to the
+          // kick's reach; the gameplay goes on from the target, as the case plans it.
+          const Vec2 target = *a.target_F + shift;
+          const double reach = params.TrajectoryFor(a.kick).reach_m;
+          const double to_target = (target - ball).norm();
+          if (reach > to_target && to_target > 0.0) {
+            add(ball + (target - ball) * (reach / to_target), a, -1);
+            ball = target;
+          } else {
+            add(target, a, -1);
+          }
         }
         break;
       case ActionType::kPass: {

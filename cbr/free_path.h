@@ -27,14 +27,17 @@
 //          before its receive action, to that target, adapted); the walk continues with the
 //          receiver after its receive action;
 //   kick:  at goal: to the centre of the attacked goal (AttackSign(defending) * goal_x_m, 0);
-//          to a target: to the target adapted like a position (target - B^c + B^p). Decision:
+//          to a target: towards the target adapted like a position (target - B^c + B^p), and,
+//          when the kick has a reach (reach_m > 0) beyond the target, on to that reach: a kick of
+//          fixed strength rolls as far as it rolls, whatever the target (the walk goes on from
+//          the target, where the case plans the ball). Decision:
 //          targets are part of the case's pattern around the ball, so they move with it exactly as
 //          the teammates do (Fig. 5); a fixed field point would turn a pass-to-space into a kick
 //          to somewhere unrelated when the ball is elsewhere in its scope;
 //   dribble to a target: moves the ball there (adapted) without a trajectory (no kick);
 //   others: no ball movement.
 // A kick's entry with reach_m > 0 cuts its trajectory to that length; the ball then continues
-// from where the trajectory ends.
+// from where the trajectory ends. Passes end at their receiver, whose body stops the ball.
 #pragma once
 
 #include <array>

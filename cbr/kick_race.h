@@ -44,6 +44,22 @@ struct HoldParams {
   double launch_s = 0.0;           // from the kick's start until the ball leaves
 };
 
+// How long a robot holds the ball before the kick of `kick_trajectory` starts: actions
+// [from_action, the kick) of case teammate `teammate` (turn, dribble; anything else: not judged),
+// from heading_rad with the ball at ball_F, case points moved by shift_F (B^p - B^c). The ball's
+// held path runs from ball_F through the dribble targets to the kick spot.
+struct HoldPlan {
+  double hold_s = 0.0;      // uncapped
+  double turns_rad = 0.0;   // summed turns with the ball, the aim included
+  double dribble_m = 0.0;   // summed dribbles
+  std::array<Vec2, kMaxTrajectories + 2> held{};
+  std::size_t points = 0;
+  bool judged = false;
+};
+HoldPlan PlanHold(const Case& c, int teammate, std::size_t from_action,
+                  const FuzzyTrajectory& kick_trajectory, double heading_rad, const Vec2& ball_F,
+                  const Vec2& shift_F, const KickModel& kicks, const HoldParams& hold);
+
 struct KickRace {
   double kick_s = 0.0;       // t_kick, from now
   double hold_s = 0.0;       // min(t_hold, hold_limit_s)

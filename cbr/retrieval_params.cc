@@ -103,6 +103,7 @@ void RetrievalParams::Validate() const {
     }
   }
   RequirePositive("goal_x_m", goal_x_m);
+  RequirePositive("half_width_m", half_width_m);
   RequireInRange("width_sigmas", width_sigmas, 0.0, 5.0);
   if (reach_sigmas) RequireInRange("reach_sigmas", *reach_sigmas, -5.0, 5.0);
   RequireNonNegative("opponent_radius_m", opponent_radius_m);
@@ -190,6 +191,7 @@ RetrievalParams LoadRetrievalParams(const std::filesystem::path& file, const Fie
   p.opponent_similarity = root.BoolOr("opponent_similarity", true);
   if (root.Has("reach_sigmas")) p.reach_sigmas = root.Number("reach_sigmas");
   p.goal_x_m = field.HalfLength();
+  p.half_width_m = field.HalfWidth();
   p.opponent_radius_m = field.default_obstacle_radius_m;
   p.ball_radius_m = field.ball.radius_m;
   p.default_kick = ReadKick(root.Object("default_kick"), "");

@@ -71,6 +71,7 @@ struct RetrievalParams {
   // the two radii below are set from the field by LoadRetrievalParams; the defaults are the
   // Four-Legged field's (models/fields/four_legged.json) for parameters built in code.
   double goal_x_m = 2.7;
+  double half_width_m = 1.8;        // the side lines' |y| (four_legged.json field_width_m / 2)
   TrajectoryWidths widths = TrajectoryWidths::kData;
   double width_sigmas = 1.0;        // k of the kick-model widths
   double opponent_radius_m = 0.12;  // four_legged.json default_obstacle_radius_m

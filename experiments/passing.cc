@@ -38,15 +38,26 @@ void LoadCbrTeam(PassingSetup& s, const std::filesystem::path& models_dir) {
   s.cbr.race.speed_mps = s.robot.walk_speed_mps;
   s.cbr.race.reach_m = s.cbr.pass_timing.reach_m;
   s.cbr.race.tie_s = s.sim.control_step_s;
-  // The kick race: the robot's grab, dribble, turn with the ball and launch, and the rules'
-  // holding limit (the kick starts kick_launch_s before it, as the teams' holding rule has it).
-  s.cbr.hold.grab_s = s.robot.grab_time_s;
-  s.cbr.hold.dribble_speed_mps = s.robot.dribble_speed_mps;
-  s.cbr.hold.dribble_turn_radps = s.robot.dribble_turn_speed_radps;
-  s.cbr.hold.hold_limit_s = s.sim.ball_holding_limit_s - s.robot.kick_launch_s;
-  s.cbr.hold.launch_s = s.robot.kick_launch_s;
+  s.cbr.hold = HoldParamsFor(s.robot, s.sim);
 }
 }  // namespace
+
+HoldParams HoldParamsFor(const RobotParams& robot, const SimulationParams& sim) {
+  HoldParams h;
+  h.grab_s = robot.grab_time_s;
+  h.dribble_speed_mps = robot.dribble_speed_mps;
+  h.dribble_turn_radps = robot.dribble_turn_speed_radps;
+  // The teams start the kick kick_launch_s before the limit, so the ball leaves by then.
+  h.hold_limit_s = sim.ball_holding_limit_s - robot.kick_launch_s;
+  h.launch_s = robot.kick_launch_s;
+  return h;
+}
+
+HoldParams DefaultHoldParams(const std::filesystem::path& models_dir) {
+  const SimulationParams sim =
+      LoadSimulationParams(LoadPassingParams("passing", models_dir).simulation, models_dir);
+  return HoldParamsFor(LoadRobotParams(sim.robot, models_dir), sim);
+}
 
 void PassingParams::Validate() const {
   RequireInRange("confidence", confidence, 0.5, 0.999);

@@ -47,6 +47,13 @@ struct PassingParams {
 PassingParams LoadPassingParams(const std::string& reference,
                                 const std::filesystem::path& models_dir);
 
+// How the match's robot holds the ball under its rules (cbr/kick_race.h): grab, dribble and turn
+// with the ball, the holding limit less the launch (the teams start the kick then), the launch.
+HoldParams HoldParamsFor(const RobotParams& robot, const SimulationParams& sim);
+// The same for the passing experiment's default simulation ("passing"): the robot and rules the
+// shipped cases are played under, which `foresight cbr check` judges them by.
+HoldParams DefaultHoldParams(const std::filesystem::path& models_dir);
+
 // Every input of one run, loaded and checked.
 struct PassingSetup {
   PassingParams params;

@@ -34,6 +34,7 @@
 #include "cbr/case.h"
 #include "cbr/case_actions.h"
 #include "cbr/case_base.h"
+#include "cbr/case_holding.h"
 #include "cbr/case_file.h"
 #include "cbr/case_play.h"
 #include "cbr/case_reach.h"

@@ -173,10 +173,10 @@ TEST_F(CbrCommandTest, CheckOnTheShippedBaseCountsAndPasses) {
 // The shipped "dg" cases once shot at the goal's centre through their own goalie: such a case is
 // never retrieved where it was written for, and check fails on it.
 TEST_F(CbrCommandTest, CheckFailsOnACaseBlockedByItsOwnOpponent) {
-  nlohmann::json c = nlohmann::json::parse(ReadFile(ShippedCase("front_dg")));
+  nlohmann::json c = nlohmann::json::parse(ReadFile(ShippedCase("front_pass_dg")));
   c["name"] = "shoots_through_the_goalie";
   c["opponents"][1]["y_m"] = 0.0;
-  nlohmann::json& kick = c["teammates"][0]["actions"][2];
+  nlohmann::json& kick = c["teammates"][1]["actions"][1];
   kick.erase("target");
   kick["at"] = "goal";
   Write("blocked.json", c.dump());
@@ -187,6 +187,30 @@ TEST_F(CbrCommandTest, CheckFailsOnACaseBlockedByItsOwnOpponent) {
   EXPECT_THAT(r.out, HasSubstr("error: case shoots_through_the_goalie: its own opponent 2 at "
                                "(2.45, 0.00) is on its ball path"));
   EXPECT_THAT(r.out, HasSubstr("cases blocked by their own opponents: 1 of 1\n"));
+  EXPECT_EQ(r.exit_code, 1);
+}
+
+// A case whose robot dribbles 0.67 m round a defender and then turns to shoot holds the ball 8.3
+// s, beyond the 2.7 s the holding rule leaves (models/match/simulation.json, aibo_ers7.json):
+// check fails on it and gives the figures.
+TEST_F(CbrCommandTest, CheckFailsOnACaseThatHoldsTheBallTooLong) {
+  nlohmann::json c = nlohmann::json::parse(ReadFile(ShippedCase("front_dg")));
+  c["name"] = "dribbles_too_far";
+  c["teammates"][0]["actions"] = {
+      {{"type", "get_ball"}},
+      {{"type", "dribble"}, {"target", {{"x_m", 1.6}, {"y_m", 0.8}}}},
+      {{"type", "kick"}, {"kick", "forward"}, {"target", {{"x_m", 2.7}, {"y_m", -0.3}}}}};
+  Write("held.json", c.dump());
+  nlohmann::json base = nlohmann::json::parse(ReadFile(SmallBase({})));
+  base["cases"] = {(work() / "held.json").string()};
+  Write("held_base.json", base.dump());
+  const RunResult r = Cbr({"check", "--case-base", (work() / "held_base.json").string()});
+  EXPECT_THAT(r.out, HasSubstr("error: case dribbles_too_far: teammate 1 holds the ball 8.29 s "
+                               "before its kick forward (trajectory 0): dribbles 0.67 m at 0.15 "
+                               "m/s and turns 172 deg at 45 deg/s, beyond the ball-holding limit "
+                               "2.70 s\n"));
+  EXPECT_THAT(r.out, HasSubstr("cases holding the ball beyond the holding limit (2.70 s): 1 of 1\n"));
+  EXPECT_THAT(r.out, HasSubstr("case base FAILED"));
   EXPECT_EQ(r.exit_code, 1);
 }
 

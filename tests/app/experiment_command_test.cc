@@ -253,7 +253,7 @@ TEST_F(ExperimentCommandTest, AblationsPlayEveryVariantAndRejectABadVariantsFile
                                   "3", "--out", "abl"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(ReadFile(work() / "abl" / "ablations.json"));
-  EXPECT_EQ(j["variants"].size(), 15u);
+  EXPECT_EQ(j["variants"].size(), 17u);
   EXPECT_EQ(j["variants"][0]["name"], "paper");
   EXPECT_TRUE(fs::exists(work() / "abl" / "ablations.svg"));
   const fs::path bad = Write("variants.json",

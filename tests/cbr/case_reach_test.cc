@@ -87,6 +87,30 @@ TEST(CaseReachTest, APassMustCarryToTheReceiversBody) {
             "sd (mean roll 0.51 m)");
 }
 
+// A kick along +x from (0.3, y0): mean roll (1 + 0.01) / 0.5 = 2.02 m; launched 2 sd (0.2 rad) to
+// the left it rests at y0 + 2.02 sin 0.2 = y0 + 0.4013, inside the side line (1.8 m) up to
+// y0 = 1.3987.
+Case KickUpTheWing(double y0, double target_x_m) {
+  Case c = Shot(1.0);
+  c.p_F_ball = Vec2(0.3, y0);
+  c.teammates[0].p_F = Vec2(0.0, y0);
+  c.teammates[0].actions[1].target_F = Vec2(target_x_m, y0);
+  return c;
+}
+
+TEST(CaseReachTest, AKickWhoseWideLaunchRestsBeyondTheSideLineFails) {
+  EXPECT_TRUE(CheckCaseReach(KickUpTheWing(1.39, 2.3), Kicks(), Params()).empty());
+  const std::vector<ReachFinding> f = CheckCaseReach(KickUpTheWing(1.41, 2.3), Kicks(), Params());
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].fault, ReachFault::kLeavesField);
+  EXPECT_NEAR(f[0].out_m, 1.41 + 2.02 * std::sin(0.2) - 1.8, 1e-12);
+  EXPECT_EQ(DescribeFinding(f[0], Params()),
+            "kick forward (trajectory 0): launched 2 sd of its direction off its aim, its mean "
+            "roll 2.02 m rests 0.01 m beyond the side line");
+  // The same kick at a target on the goal line is a shot: a wide shot goes out whatever the plan.
+  EXPECT_TRUE(CheckCaseReach(KickUpTheWing(1.41, 2.7), Kicks(), Params()).empty());
+}
+
 TEST(CaseReachTest, TheCheckNeedsAReach) {
   RetrievalParams p = Params();
   p.reach_sigmas.reset();

@@ -180,7 +180,16 @@ TEST_F(CbrTeamTest, AdaptingPastItsTimeoutAborts) {
   Run(10);
   EXPECT_EQ(Counter("aborts_timeout"), 1.0);
   EXPECT_EQ(SendersOf(CbrMessageKind::kAbort).size(), 1u);
-  EXPECT_GE(team_->CycleOf(0), 2);  // a new cycle began
+  // The same situation would time out again: the default behaviour plays while the ball stays in
+  // the case's scope, however long, and no new cycle begins...
+  const int cycle = team_->CycleOf(0);
+  Run(static_cast<int>(3.0 * team_params_.adapt_timeout_s / kDt));
+  EXPECT_EQ(team_->CycleOf(0), cycle);
+  EXPECT_EQ(Counter("aborts_timeout"), 1.0);
+  // ...until the ball has left it.
+  ball_ += Vec2(0.0, 1.2);
+  Run(3);
+  EXPECT_GT(team_->CycleOf(0), cycle);
 }
 
 TEST_F(CbrTeamTest, ABallThatLeftTheCaseScopeAborts) {

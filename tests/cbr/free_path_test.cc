@@ -141,7 +141,35 @@ TEST(FreePathTest, ReachCutsATrajectoryAndTheNextStartsWhereItEnds) {
   ASSERT_EQ(path.count, 2);
   EXPECT_NEAR(path.trajectories[0].length_m, 1.5, 1e-12);
   EXPECT_TRUE(path.trajectories[1].start_F.isApprox(Vec2(1.5, 0.0)));
-  EXPECT_TRUE(path.trajectories[1].end_F.isApprox(Vec2(2.0, 1.0)));  // 1.12 m: within reach
+  // 1.12 m to the target, within reach: the kick rolls on, its corridor runs to the reach.
+  EXPECT_NEAR(path.trajectories[1].length_m, 1.5, 1e-12);
+  EXPECT_TRUE(path.trajectories[1].end_F.isApprox(Vec2(1.5, 0.0) +
+                                                  1.5 / std::sqrt(1.25) * Vec2(0.5, 1.0)));
+}
+
+TEST(FreePathTest, AKickShortOfItsReachRunsOnAndTheGameplayGoesOnFromItsTarget) {
+  Problem p;
+  p.p_F_ball = Vec2(0.0, 0.0);
+  Case c;
+  c.p_F_ball = Vec2(0.0, 0.0);
+  CaseAction kick = Act(ActionType::kKick);
+  kick.target_F = Vec2(1.0, 0.0);
+  CaseAction shoot = Act(ActionType::kKick);
+  shoot.at_goal = true;
+  c.teammates.push_back({1, {-0.2, 0.0}, {Act(ActionType::kGetBall), kick, shoot}});
+  RetrievalParams params;
+  params.kicks.push_back({"forward", 0.1, 0.3, 2.5, 0.0});
+  const std::vector<Vec2> adapted{Vec2(-0.2, 0.0)};
+  const CaseBallPath path = BuildBallPath(p, c, adapted, params);
+  ASSERT_EQ(path.count, 2);
+  EXPECT_TRUE(path.trajectories[0].end_F.isApprox(Vec2(2.5, 0.0)));
+  // An opponent 2 m out, past the target but inside the kick's roll, blocks it.
+  EXPECT_FALSE(CheckFreePath(path, std::vector<Vec2>{Vec2(2.0, 0.05)}, params.thr_trajectory).free);
+  EXPECT_TRUE(path.trajectories[1].start_F.isApprox(Vec2(1.0, 0.0)));
+  // Without a reach the trajectory ends at the target, as the paper draws it.
+  params.kicks.clear();
+  const CaseBallPath paper = BuildBallPath(p, c, adapted, params);
+  EXPECT_TRUE(paper.trajectories[0].end_F.isApprox(Vec2(1.0, 0.0)));
 }
 
 }  // namespace
