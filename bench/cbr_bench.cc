@@ -41,8 +41,9 @@ std::vector<Case> CaseBase(int count, int near, RandomStream& rng) {
     c.name = "c";
     c.name += std::to_string(i);
     const bool close = i < near;
-    c.p_F_ball = close ? Vec2(0.4 * rng.NextUniform() - 0.2, 0.4 * rng.NextUniform() - 0.2)
-                       : Vec2(1.5 + rng.NextUniform(), 1.0 + rng.NextUniform());
+    const double u = rng.NextUniform();  // one draw per statement: argument order is unspecified
+    const double v = rng.NextUniform();
+    c.p_F_ball = close ? Vec2(0.4 * u - 0.2, 0.4 * v - 0.2) : Vec2(1.5 + u, 1.0 + v);
     c.ball_scope = {0.5 + 0.5 * rng.NextUniform(), 0.4 + 0.4 * rng.NextUniform()};
     CaseAction shoot = Act(ActionType::kKick);
     shoot.at_goal = true;

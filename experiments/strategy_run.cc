@@ -73,10 +73,17 @@ std::string_view RunEndName(RunEnd end) {
 StartPosition DrawStart(const FieldSpec& field, std::uint64_t seed, int start) {
   RandomStream rng(StreamKey(seed, static_cast<std::uint64_t>(start), kStartDomain));
   auto uniform = [&](double half) { return (2.0 * rng.NextUniform() - 1.0) * half; };
+  // y before x in each point, one statement per draw: the order of a constructor's arguments is
+  // unspecified, and y first is the order GCC gave the expressions these were before, so the
+  // recorded starts keep their bytes and every compiler draws alike.
   StartPosition s;
-  s.robot.p_F = Vec2(uniform(field.HalfLength()), uniform(field.HalfWidth()));
+  const double robot_y = uniform(field.HalfWidth());
+  const double robot_x = uniform(field.HalfLength());
+  s.robot.p_F = Vec2(robot_x, robot_y);
   s.robot.theta_rad = WrapAngle(uniform(kPi));
-  s.p_F_ball = Vec2(uniform(field.HalfLength()), uniform(field.HalfWidth()));
+  const double ball_y = uniform(field.HalfWidth());
+  const double ball_x = uniform(field.HalfLength());
+  s.p_F_ball = Vec2(ball_x, ball_y);
   return s;
 }
 

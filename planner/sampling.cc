@@ -12,8 +12,13 @@ DrawnSample DrawSample(const StateEstimate& estimate, std::uint64_t seed, std::u
   robot.p_F.x() = estimate.robot.p_F.x() + estimate.sigma_robot_x_m * rng.NextNormal();
   robot.p_F.y() = estimate.robot.p_F.y() + estimate.sigma_robot_y_m * rng.NextNormal();
   robot.theta_rad = estimate.robot.theta_rad + estimate.sigma_robot_theta_rad * rng.NextNormal();
-  const Vec2 p_R_ball(estimate.p_R_ball.x() + estimate.sigma_ball_x_m * rng.NextNormal(),
-                      estimate.p_R_ball.y() + estimate.sigma_ball_y_m * rng.NextNormal());
+  // y before x, in two statements: the order of a constructor's arguments is unspecified, and
+  // y first is the order GCC gave the one expression this was before, so results recorded with
+  // GCC builds keep their bytes and every compiler now draws alike.
+  const double ball_noise_y = rng.NextNormal();
+  const double ball_noise_x = rng.NextNormal();
+  const Vec2 p_R_ball(estimate.p_R_ball.x() + estimate.sigma_ball_x_m * ball_noise_x,
+                      estimate.p_R_ball.y() + estimate.sigma_ball_y_m * ball_noise_y);
   sample.state.p_F_ball = robot.ToField(p_R_ball);
   sample.z_speed = rng.NextNormal();
   sample.z_direction = rng.NextNormal();

@@ -108,7 +108,8 @@ TEST(BallScopeIndexTest, AQueryHoldsEveryCaseWhoseScopeContainsTheBall) {
     for (int t = 0; t < 5000; ++t) {
       Problem p;
       // Also balls off the field and on the boxes' edges (an exact scope edge point).
-      p.p_F_ball = Vec2(-3.5 + 7.0 * rng.NextUniform(), -2.5 + 5.0 * rng.NextUniform());
+      const double x = -3.5 + 7.0 * rng.NextUniform();  // x, then y: one draw per statement
+      p.p_F_ball = Vec2(x, -2.5 + 5.0 * rng.NextUniform());
       if (t % 5 == 0) {
         const Case& c = cases[static_cast<std::size_t>(t) % cases.size()];
         p.p_F_ball = c.p_F_ball + Vec2(c.ball_scope.tau_x_m * std::sqrt(-std::log(thr)), 0.0);

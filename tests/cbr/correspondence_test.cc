@@ -132,7 +132,8 @@ CostKey BruteForce(const Problem& p, const Case& c, CostFunction cost, double th
 TEST(CorrespondenceTest, AgreesWithBruteForceOnRandomTeams) {
   RandomStream rng(StreamKey(13, 0));
   const auto point = [&] {
-    return Vec2(-2.7 + 5.4 * rng.NextUniform(), -1.8 + 3.6 * rng.NextUniform());
+    const double x = -2.7 + 5.4 * rng.NextUniform();  // x, then y: one draw per statement
+    return Vec2(x, -1.8 + 3.6 * rng.NextUniform());
   };
   int feasible_count = 0;
   for (int trial = 0; trial < 2000; ++trial) {
@@ -176,7 +177,8 @@ TEST(CorrespondenceTest, AgreesWithBruteForceOnRandomTeams) {
 TEST(CorrespondenceTest, AFixedRobotAgreesWithBruteForce) {
   RandomStream rng(StreamKey(17, 0));
   const auto point = [&] {
-    return Vec2(-2.7 + 5.4 * rng.NextUniform(), -1.8 + 3.6 * rng.NextUniform());
+    const double x = -2.7 + 5.4 * rng.NextUniform();  // x, then y: one draw per statement
+    return Vec2(x, -1.8 + 3.6 * rng.NextUniform());
   };
   int feasible_count = 0, moved = 0;
   for (int trial = 0; trial < 2000; ++trial) {

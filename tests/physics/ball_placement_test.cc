@@ -74,8 +74,10 @@ TEST_P(BallPlacementTest, NoTrialStartsWithTheBallInsideTheRobot) {
     for (int i = 0; i < kDraws; ++i) {
       RandomStream rng(StreamKey(77, static_cast<std::uint64_t>(i)));
       KickRequest request;
-      request.state = {Pose2{Vec2(0, 0), (2.0 * rng.NextUniform() - 1.0) * kPi},
-                       Vec2(2.0 * rng.NextUniform() - 1.0, 2.0 * rng.NextUniform() - 1.0)};
+      const double theta = (2.0 * rng.NextUniform() - 1.0) * kPi;  // one draw per statement
+      const double ball_x = 2.0 * rng.NextUniform() - 1.0;
+      const double ball_y = 2.0 * rng.NextUniform() - 1.0;
+      request.state = {Pose2{Vec2(0, 0), theta}, Vec2(ball_x, ball_y)};
       request.motion_index = static_cast<int>(m);
       request.rotation_rad = (2.0 * rng.NextUniform() - 1.0) * 0.5 * kPi;
       request.stream = StreamKey(5, static_cast<std::uint64_t>(i));

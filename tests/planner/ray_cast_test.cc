@@ -40,10 +40,14 @@ TEST(RayCastTest, CapsuleEntryAgreesWithMarching) {
   RandomStream rng(StreamKey(7, 0));
   int hits = 0;
   for (int i = 0; i < 300; ++i) {
-    const Vec2 start(4.0 * rng.NextUniform() - 2.0, 4.0 * rng.NextUniform() - 2.0);
+    // One draw per statement: the order of a call's arguments is unspecified.
+    const double start_x = 4.0 * rng.NextUniform() - 2.0;
+    const Vec2 start(start_x, 4.0 * rng.NextUniform() - 2.0);
     const Vec2 dir = UnitVector(2.0 * kPi * rng.NextUniform());
-    const Vec2 a(rng.NextUniform(), rng.NextUniform()),
-        b(rng.NextUniform() + 0.5, -rng.NextUniform());
+    const double a_x = rng.NextUniform();
+    const Vec2 a(a_x, rng.NextUniform());
+    const double b_x = rng.NextUniform() + 0.5;
+    const Vec2 b(b_x, -rng.NextUniform());
     const double r = 0.05 + 0.2 * rng.NextUniform();
     const double exact = RayCapsuleEntry(start, dir, a, b, r);
     const double marched = MarchCapsule(start, dir, a, b, r);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "common/random.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {
@@ -54,6 +55,24 @@ TEST(SamplingTest, BallIsPlacedRelativeToTheDrawnRobot) {
   const DrawnSample d = DrawSample(s.state, 3, 0);  // no state noise: exact
   EXPECT_NEAR(d.state.p_F_ball.x(), 1.0, 1e-12);
   EXPECT_NEAR(d.state.p_F_ball.y(), 2.2, 1e-12);
+}
+
+// The draws of one sample come in a written order (robot x, y, theta, ball y, ball x, speed,
+// direction), whatever the compiler: two draws as arguments of one call would be in an
+// unspecified order (GCC and Clang differ).
+TEST(SamplingTest, TheDrawsComeInTheirWrittenOrder) {
+  StateEstimate e;
+  e.p_R_ball = Vec2(0.5, -0.25);
+  e.sigma_ball_x_m = 0.1;
+  e.sigma_ball_y_m = 0.2;
+  const DrawnSample d = DrawSample(e, 7, 3);
+  RandomStream rng(StreamKey(7, 3));
+  double n[7];
+  for (double& v : n) v = rng.NextNormal();
+  EXPECT_EQ(d.state.p_F_ball.x(), 0.5 + 0.1 * n[4]);
+  EXPECT_EQ(d.state.p_F_ball.y(), -0.25 + 0.2 * n[3]);
+  EXPECT_EQ(d.z_speed, n[5]);
+  EXPECT_EQ(d.z_direction, n[6]);
 }
 
 TEST(SamplingTest, SampleIDependsOnlyOnSeedAndI) {
