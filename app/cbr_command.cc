@@ -26,6 +26,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The hand-written cases, whichever goal each defends (the mirrors turn, walk and kick as far).
+std::vector<Case> HandWritten(const CaseBase& cases) {
+  std::vector<Case> out;
+  for (const DefendingGoal goal : {DefendingGoal::kCyan, DefendingGoal::kYellow}) {
+    for (const Case& c : cases.Defending(goal)) {
+      if (c.transform == CaseTransform::kOriginal) out.push_back(c);
+    }
+  }
+  return out;
+}
+
 fs::path ModelsDir(const std::string& models_dir) {
   return models_dir.empty() ? DefaultModelsDir() : fs::path(models_dir);
 }
@@ -144,8 +155,7 @@ int RunCheck(const CbrOptions& o, const fs::path& models) {
   if (!params.reach_sigmas) {
     s += "kick reach: not checked (the retrieval parameters set no reach_sigmas)\n";
   } else {
-    for (const Case& c : cases.Defending(DefendingGoal::kCyan)) {
-      if (c.transform != CaseTransform::kOriginal) continue;  // mirrors have the same lengths
+    for (const Case& c : HandWritten(cases)) {
       const std::vector<ReachFinding> findings = CheckCaseReach(c, kicks, params);
       unplayable += findings.empty() ? 0 : 1;
       for (const ReachFinding& f : findings) {
@@ -158,8 +168,7 @@ int RunCheck(const CbrOptions& o, const fs::path& models) {
   // A case that holds the ball longer than the rules allow is a plan the robot cannot play.
   const HoldParams hold = DefaultHoldParams(models);
   int overheld = 0;
-  for (const Case& c : cases.Defending(DefendingGoal::kCyan)) {
-    if (c.transform != CaseTransform::kOriginal) continue;  // mirrors turn and walk as far
+  for (const Case& c : HandWritten(cases)) {
     const std::vector<HoldingFinding> findings = CheckCaseHolding(c, kicks, params, hold);
     overheld += findings.empty() ? 0 : 1;
     for (const HoldingFinding& f : findings) {

@@ -42,8 +42,9 @@ void Trapezoid(FieldCanvas& canvas, const FuzzyTrajectory& t) {
   if (t.length_m <= 0.0) return;
   const Vec2 n(-t.u.y(), t.u.x());
   const Vec2 end = t.start_F + t.length_m * t.u;
-  const Vec2 corners[4] = {t.start_F + t.r_start_m * n, end + t.r_end_m * n, end - t.r_end_m * n,
-                           t.start_F - t.r_start_m * n};
+  const Vec2 knee = t.start_F + (t.knee_m > 0.0 ? t.knee_m : t.length_m) * t.u;
+  const Vec2 corners[6] = {t.start_F + t.r_start_m * n, knee + t.r_end_m * n, end + t.r_end_m * n,
+                           end - t.r_end_m * n,         knee - t.r_end_m * n, t.start_F - t.r_start_m * n};
   std::string d;
   for (const Vec2& p : corners) {
     d += (d.empty() ? "M " : " L ") + SvgWriter::Num(canvas.X(p.x())) + " " +

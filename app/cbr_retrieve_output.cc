@@ -54,9 +54,11 @@ std::string TrajectoryText(const CbrRetrieveRun& run, const FuzzyTrajectory& t) 
                         ? Format("pass robot %d -> robot %d", RobotId(run, t.kicker),
                                  RobotId(run, t.receiver))
                         : Format("kick by robot %d", RobotId(run, t.kicker));
-  return who + " from " + Xy(t.start_F) + " to " + Xy(t.end_F) +
-         Format(", %.2f m, exp(-1) half-widths %.2f -> %.2f m", t.length_m, t.r_start_m,
-                t.r_end_m);
+  std::string text = who + " from " + Xy(t.start_F) + " to " + Xy(t.end_F) +
+                     Format(", %.2f m, exp(-1) half-widths %.2f -> %.2f m", t.length_m,
+                            t.r_start_m, t.r_end_m);
+  if (t.knee_m > 0.0) text += Format(" at its target %.2f m out", t.knee_m);
+  return text;
 }
 
 int Rejected(const CbrRetrieveRun& run, Verdict verdict) {
@@ -234,6 +236,7 @@ nlohmann::ordered_json CbrRetrieveJson(const CbrRetrieveRun& run) {
       tj["length_m"] = Metres(t.length_m);
       tj["r_start_m"] = Metres(t.r_start_m);
       tj["r_end_m"] = Metres(t.r_end_m);
+      tj["knee_m"] = Metres(t.knee_m);  // 0: rho grows over the whole length
       r["ball_path"].push_back(tj);
     }
     j["retrieved"] = r;

@@ -1,5 +1,7 @@
 #include "cbr/case.h"
 
+#include <cmath>
+
 #include "common/enum_names.h"
 
 namespace foresight {
@@ -57,6 +59,10 @@ int BallGetter(const Case& c) {
     }
   }
   return -1;
+}
+
+bool IsShot(const CaseAction& kick, double goal_x_m) {
+  return kick.at_goal || (kick.target_F && std::abs(kick.target_F->x()) >= goal_x_m);
 }
 
 double AttackSign(DefendingGoal defending) {

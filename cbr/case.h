@@ -95,6 +95,10 @@ std::string_view CaseTransformName(CaseTransform transform);
 // case order (sec. 2.2: "at least one robot has as its first action to get the ball"), or -1.
 int BallGetter(const Case& c);
 
+// A shot: a kick at the goal, or at a target on (or beyond) a goal line, |x| >= goal_x_m (the
+// cases' far and near corners). Every other kick with a target is a kick into the field.
+bool IsShot(const CaseAction& kick, double goal_x_m);
+
 // The goal the team of `defending` attacks: yellow (+x) for cyan, cyan (-x) for yellow; +1 or -1.
 double AttackSign(DefendingGoal defending);
 

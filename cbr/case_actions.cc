@@ -29,7 +29,7 @@ bool Near(const Vec2& a, const Vec2& b, double tolerance_m) {
 // holding the ball at p_F_ball.
 double AimHeading(const FuzzyTrajectory* trajectory, const KickSpec& kick, const Perception& p,
                   const ActionContext& ctx) {
-  const Vec2 aim_at = trajectory ? trajectory->end_F
+  const Vec2 aim_at = trajectory ? trajectory->aim_F
                                  : Vec2(p.attack_sign * ctx.retrieval->goal_x_m, 0.0);
   return HeadingTowards(p.p_F_ball, aim_at) - kick.direction_rad;
 }
@@ -43,8 +43,11 @@ ActionStep AimAndKick(const FuzzyTrajectory* trajectory, int kick_index, ActionP
     // The free-path test (sec. 3.3.1) on the trajectory from where the ball is now.
     CaseBallPath now;
     now.count = 1;
-    now.trajectories[0] = MakeTrajectory(p.p_F_ball, trajectory->end_F,
-                                         ctx.retrieval->TrajectoryFor(kick.name), *ctx.retrieval);
+    const KickTrajectory& widths = ctx.retrieval->TrajectoryFor(kick.name);
+    now.trajectories[0] =
+        trajectory->knee_m > 0.0
+            ? MakeKickTrajectory(p.p_F_ball, trajectory->aim_F, widths, *ctx.retrieval)
+            : MakeTrajectory(p.p_F_ball, trajectory->aim_F, widths, *ctx.retrieval);
     for (const Pose2& o : p.opponents) {  // one at a time: no copy of the positions per step
       if (!CheckFreePath(now, std::span<const Vec2>(&o.p_F, 1), ctx.retrieval->thr_trajectory)
                .free) {

@@ -34,8 +34,8 @@ struct HoldingFinding {
 std::vector<HoldingFinding> CheckCaseHolding(const Case& c, const KickModel& kicks,
                                              const RetrievalParams& params, const HoldParams& hold);
 
-// "teammate 1 holds the ball 4.30 s before its kick forward (trajectory 0): dribbles 0.85 m at
-// 0.15 m/s and turns 120 deg at 45 deg/s, beyond the ball-holding limit 2.40 s".
+// "teammate 1 holds the ball 8.29 s before its kick forward (trajectory 0): dribbles 0.67 m at
+// 0.15 m/s and turns 172 deg at 45 deg/s, beyond the ball-holding limit 2.70 s".
 std::string DescribeFinding(const HoldingFinding& f, const HoldParams& hold);
 
 }  // namespace foresight

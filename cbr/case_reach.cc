@@ -6,6 +6,7 @@
 
 #include "cbr/own_situation.h"
 #include "common/enum_names.h"
+#include "common/geometry.h"
 #include "common/error.h"
 #include "planner/kick_reach.h"
 
@@ -18,19 +19,17 @@ constexpr EnumNames<ReachFault, 3> kFaultNames{{{
     {ReachFault::kLeavesField, "leaves_field"},
 }}};
 
-// A shot: at the goal, or at a target on the goal line (the cases' far and near corners).
-bool IsShot(const CaseAction& kick, const RetrievalParams& params) {
-  return kick.at_goal || (kick.target_F && std::abs(kick.target_F->x()) >= params.goal_x_m);
-}
-
 // How far beyond a side line the ball rests when kick `t` is launched z sd of direction to either
 // side of its aim and rolls its mean roll (<= 0: inside the field).
 double BeyondSideLine(const FuzzyTrajectory& t, const KickSpec& spec, double mean_roll_m, double z,
                       double half_width_m) {
   const double aim = std::atan2(t.u.y(), t.u.x());
+  const double spread = z * spec.sigma_direction_rad;
+  // |y| is largest at an end of the spread, or at +-90 deg when the spread holds it.
   double out = -half_width_m;
-  for (double side : {-1.0, 1.0}) {
-    const double y = t.start_F.y() + mean_roll_m * std::sin(aim + side * z * spec.sigma_direction_rad);
+  for (double direction : {aim - spread, aim + spread, kPi / 2.0, -kPi / 2.0}) {
+    if (std::abs(WrapAngle(direction - aim)) > spread + 1e-12) continue;
+    const double y = t.start_F.y() + mean_roll_m * std::sin(direction);
     out = std::max(out, std::abs(y) - half_width_m);
   }
   return out;
@@ -71,7 +70,7 @@ std::vector<ReachFinding> CheckCaseReach(const Case& c, const KickModel& kicks,
     } else if (t.action == ActionType::kPass && f.length_m - contact_m > f.mean_roll_m) {
       f.fault = ReachFault::kPassShort;
       out.push_back(f);
-    } else if (t.action == ActionType::kKick && !IsShot(*t.kick, params)) {
+    } else if (t.action == ActionType::kKick && !IsShot(*t.kick, params.goal_x_m)) {
       f.out_m = BeyondSideLine(t, spec, f.mean_roll_m, *params.reach_sigmas, params.half_width_m);
       if (f.out_m > 0.0) {
         f.fault = ReachFault::kLeavesField;

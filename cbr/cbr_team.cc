@@ -163,8 +163,8 @@ void CbrTeam::HearProtocol(Robot& r, const Perception& p, const TeamMessage& m) 
     case CbrMessageKind::kEnd:
     case CbrMessageKind::kAbort:
       if (*CbrKind(m) == CbrMessageKind::kAbort &&
-          m.words[1] == static_cast<int>(AbortReason::kTimeout) && r.play) {
-        r.timed_out = r.play;
+          m.words[1] == static_cast<int>(AbortReason::kTimeout) && r.play && cycle == r.cycle) {
+        r.timed_out = r.play;  // the case of this cycle, not an older one this robot still has
       }
       r.cycle = cycle;
       r.play.reset();
@@ -212,11 +212,8 @@ Problem CbrTeam::PerceivedProblem(const Robot& r, const Perception& p) const {
   return problem;
 }
 
-bool CbrTeam::MayStartCycle(Robot& r, const Perception& p) const {
+bool CbrTeam::MayStartCycle(const Robot& r, const Perception& p) const {
   const CbrTeamParams& params = *setup_.skills.team;
-  if (r.timed_out && (p.holding_ball || BallLeftScope(*r.timed_out, p, setup_.skills))) {
-    r.timed_out.reset();
-  }
   if (r.timed_out) return false;
   if (OpponentHasBall(p, setup_.skills)) return false;
   if (!params.ball_race) return true;
@@ -323,6 +320,10 @@ void CbrTeam::Abort(Robot& r, const Perception& p, AbortReason reason) {
 
 RobotCommand CbrTeam::Act(Robot& r, const Perception& p) {
   const CbrTeamParams& params = *setup_.skills.team;
+  // Every robot, selector or not, forgets a timed-out case once the situation has changed.
+  if (r.timed_out && (p.holding_ball || BallLeftScope(*r.timed_out, p, setup_.skills))) {
+    r.timed_out.reset();
+  }
   if (r.phase == CbrPhase::kIdle && p.time_s >= r.idle_until_s &&
       Selector(r.team) == p.self && MayStartCycle(r, p)) {
     StartCycle(r, p);

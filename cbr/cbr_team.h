@@ -40,9 +40,11 @@
 // in the penalty area counts as to goal, scored: 2D scenarios 1-4 at 7.5, 9.5, 28 and 57.5 % to
 // goal without the check, 1.5, 8, 0.5 and 18 % with it (200 trials, seed 1).
 // After an abort for a timeout no cycle starts while the ball stays in that case's ball scope
-// around the ball it was retrieved for and no robot of the team holds it: the same situation
+// around the ball it was retrieved for, until the deciding robot holds it: the same situation
 // would retrieve the same case, which would time out again. The default behaviour plays until the
-// ball has moved (no number of its own: the scope is sec. 3.1's). Without it a case whose getter
+// ball has moved (no number of its own: the scope is sec. 3.1's). Every robot of the case
+// remembers the case from its own abort or the abort message of the same cycle (a robot that
+// missed the message, or was not in the case, may retrieve it once more). Without it a case whose getter
 // could not reach its adapted position (the defender standing on it at its region's edge) was
 // retrieved and timed out every 10 s until the DG trial's 600 s safety cap (DG, seed 1: 3 of 2000
 // trials after the cases' holding revision).
@@ -128,7 +130,7 @@ class CbrTeam final : public TeamPolicy {
   // The problem robot `r` perceives: the ball, the present teammates, the opponents.
   Problem PerceivedProblem(const Robot& r, const Perception& p) const;
   // Whether a cycle may start now (the ball free, and with ball_race at rest and won).
-  bool MayStartCycle(Robot& r, const Perception& p) const;
+  bool MayStartCycle(const Robot& r, const Perception& p) const;
   // The case to reuse and its correspondence: the best-ranked candidate (with ball_race, whose
   // getter is the team's fastest robot; with the timing-aware pass check, whose estimated pass
   // success reaches min_success); nullopt for none.

@@ -1,5 +1,6 @@
 #include "cbr/free_path.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -22,7 +23,8 @@ double TrajectoryExponent(const FuzzyTrajectory& t, const Vec2& p_F) {
   const double along = d.dot(t.u);
   if (along < 0.0 || along > t.length_m) return kOutside;
   const double across = t.u.x() * d.y() - t.u.y() * d.x();  // d . (-u_y, u_x)
-  const double rho = t.r_start_m + (t.r_end_m - t.r_start_m) * (along / t.length_m);
+  const double planned = t.knee_m > 0.0 ? t.knee_m : t.length_m;
+  const double rho = t.r_start_m + (t.r_end_m - t.r_start_m) * std::min(along / planned, 1.0);
   const double q = across / rho;
   return q * q;
 }
@@ -41,12 +43,24 @@ FuzzyTrajectory MakeTrajectory(const Vec2& start_F, const Vec2& end_F, const Kic
   if (kick.reach_m > 0.0 && length > kick.reach_m) length = kick.reach_m;
   t.length_m = length;
   t.end_F = start_F + t.u * length;
+  t.aim_F = t.end_F;
   if (params.widths == TrajectoryWidths::kKickModel && kick.sigma_direction_rad > 0.0) {
     t.r_start_m = params.opponent_radius_m + params.ball_radius_m;
     t.r_end_m = t.r_start_m + length * std::tan(params.width_sigmas * kick.sigma_direction_rad);
   } else {
     t.r_start_m = kick.r_min_m;
     t.r_end_m = kick.r_max_m;
+  }
+  return t;
+}
+
+FuzzyTrajectory MakeKickTrajectory(const Vec2& start_F, const Vec2& target_F,
+                                   const KickTrajectory& kick, const RetrievalParams& params) {
+  FuzzyTrajectory t = MakeTrajectory(start_F, target_F, kick, params);
+  if (kick.reach_m > t.length_m && t.length_m > 0.0) {
+    t.knee_m = t.length_m;
+    t.length_m = kick.reach_m;
+    t.end_F = start_F + t.u * t.length_m;
   }
   return t;
 }
@@ -61,12 +75,15 @@ CaseBallPath BuildBallPath(const Problem& problem, const Case& c, std::span<cons
   Vec2 ball = problem.p_F_ball;
   const Vec2 shift = problem.p_F_ball - c.p_F_ball;
   const auto add = [&](const Vec2& end, const CaseAction& a, int receiver) {
-    FuzzyTrajectory t = MakeTrajectory(ball, end, params.TrajectoryFor(a.kick), params);
+    const KickTrajectory& k = params.TrajectoryFor(a.kick);
+    const bool into_field = a.type == ActionType::kKick && !IsShot(a, params.goal_x_m);
+    FuzzyTrajectory t = into_field ? MakeKickTrajectory(ball, end, k, params)
+                                   : MakeTrajectory(ball, end, k, params);
     t.action = a.type;
     t.kicker = robot;
     t.receiver = receiver;
     t.kick = &a;
-    ball = t.end_F;
+    ball = t.aim_F;  // the gameplay goes on from where the case plans the ball
     if (path.count == kMaxTrajectories) {
       path.overflow = true;
     } else {
@@ -80,17 +97,7 @@ CaseBallPath BuildBallPath(const Problem& problem, const Case& c, std::span<cons
         if (a.at_goal) {
           add(Vec2(AttackSign(c.defending) * params.goal_x_m, 0.0), a, -1);
         } else if (a.target_F) {
-          // A kick of fixed strength does not stop at its target: its corridor runs on to the
-          // kick's reach; the gameplay goes on from the target, as the case plans it.
-          const Vec2 target = *a.target_F + shift;
-          const double reach = params.TrajectoryFor(a.kick).reach_m;
-          const double to_target = (target - ball).norm();
-          if (reach > to_target && to_target > 0.0) {
-            add(ball + (target - ball) * (reach / to_target), a, -1);
-            ball = target;
-          } else {
-            add(target, a, -1);
-          }
+          add(*a.target_F + shift, a, -1);
         }
         break;
       case ActionType::kPass: {

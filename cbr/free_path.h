@@ -27,10 +27,11 @@
 //          before its receive action, to that target, adapted); the walk continues with the
 //          receiver after its receive action;
 //   kick:  at goal: to the centre of the attacked goal (AttackSign(defending) * goal_x_m, 0);
-//          to a target: towards the target adapted like a position (target - B^c + B^p), and,
-//          when the kick has a reach (reach_m > 0) beyond the target, on to that reach: a kick of
-//          fixed strength rolls as far as it rolls, whatever the target (the walk goes on from
-//          the target, where the case plans the ball). Decision:
+//          to a target: to the target adapted like a position (target - B^c + B^p); a kick into
+//          the field (not a shot, cbr/case.h IsShot) whose reach (reach_m > 0) lies beyond its
+//          target runs on to that reach past a knee at the target (MakeKickTrajectory): a kick
+//          of fixed strength rolls as far as it rolls, whatever the target (the walk goes on from
+//          the target, where the case plans the ball; the robot aims at the target). Decision:
 //          targets are part of the case's pattern around the ball, so they move with it exactly as
 //          the teammates do (Fig. 5); a fixed field point would turn a pass-to-space into a kick
 //          to somewhere unrelated when the ball is elsewhere in its scope;
@@ -59,20 +60,30 @@ struct FuzzyTrajectory {
   Vec2 u{1.0, 0.0};  // unit direction (start -> end); (1, 0) when length is 0
   double length_m = 0.0;
   double r_start_m = 0.0;                 // rho(0)
-  double r_end_m = 0.0;                   // rho(l)
+  double r_end_m = 0.0;                   // rho(l), or rho(knee_m) and beyond
+  // > 0: rho grows from r_start_m to r_end_m over the planned knee_m (the case's target) and
+  // stays at r_end_m to length_m (the kick's reach; MakeKickTrajectory).
+  double knee_m = 0.0;
+  Vec2 aim_F{0.0, 0.0};  // where the kick is aimed: end_F, or the target before the knee
   ActionType action = ActionType::kKick;  // kKick or kPass
   int kicker = -1;                        // case teammate index
   int receiver = -1;                      // case teammate index for a pass
   const CaseAction* kick = nullptr;       // the kick or pass action (points into the case)
 };
 
-// mu of sec. 3.3.1 at p_F, and its exponent (y'/rho)^2 (+infinity where mu = 0).
+// mu of sec. 3.3.1 at p_F, and its exponent (y'/rho)^2 (+infinity where mu = 0); with a knee,
+// rho(x') = r_start + (r_end - r_start) min(x' / knee, 1).
 double TrajectoryExponent(const FuzzyTrajectory& t, const Vec2& p_F);
 double TrajectoryMembership(const FuzzyTrajectory& t, const Vec2& p_F);
 
 // A trajectory from start to end (cut to reach_m when > 0) with widths of `kick` per `params`.
 FuzzyTrajectory MakeTrajectory(const Vec2& start_F, const Vec2& end_F, const KickTrajectory& kick,
                                const RetrievalParams& params);
+// A kick into the field, aimed at target_F: MakeTrajectory's, and when the kick's reach lies
+// beyond the target, run on to it with the knee at the target (the widths of the planned part
+// stay those of a trajectory to the target; past it rho stays r_end_m).
+FuzzyTrajectory MakeKickTrajectory(const Vec2& start_F, const Vec2& target_F,
+                                   const KickTrajectory& kick, const RetrievalParams& params);
 
 struct CaseBallPath {
   std::array<FuzzyTrajectory, kMaxTrajectories> trajectories{};

@@ -48,7 +48,7 @@ HoldPlan PlanHold(const Case& c, int teammate, std::size_t from_action,
     if (&a == kick_trajectory.kick) {
       const auto index = kicks.Find(a.kick);
       const double direction = index ? kicks.kicks[static_cast<std::size_t>(*index)].direction_rad : 0.0;
-      turn_to(HeadingTowards(kick_trajectory.start_F, kick_trajectory.end_F) - direction);
+      turn_to(HeadingTowards(kick_trajectory.start_F, kick_trajectory.aim_F) - direction);
       if (plan.points < plan.held.size()) plan.held[plan.points++] = kick_trajectory.start_F;
       plan.judged = true;
       return plan;
@@ -82,9 +82,15 @@ KickRace RunKickRace(const Problem& problem, const Case& c, const Correspondence
   if (getter < 0 || getter >= match.count) return result;
   const FuzzyTrajectory* first = FirstKickOf(path, getter);
   if (first == nullptr || first->kick == nullptr) return result;
+  // As the team plays it: the getter walks to its adapted position behind the ball (sec. 4.2),
+  // then to the ball, and grabs it facing the way it came from there.
   const Pose2& pose = problem.teammates[static_cast<std::size_t>(match.problem_index[getter])].pose;
-  const double get_s = TimeToBall(pose.p_F, problem.p_F_ball, race);
-  const double heading = get_s > 0.0 ? HeadingTowards(pose.p_F, problem.p_F_ball) : pose.theta_rad;
+  const Vec2& adapted = match.adapted_F[static_cast<std::size_t>(getter)];
+  const double get_s = (adapted - pose.p_F).norm() / race.speed_mps +
+                       TimeToBall(adapted, problem.p_F_ball, race);
+  const double heading = (problem.p_F_ball - adapted).norm() > 1e-9
+                             ? HeadingTowards(adapted, problem.p_F_ball)
+                             : pose.theta_rad;
   const HoldPlan plan = PlanHold(c, getter, 0, *first, heading, problem.p_F_ball,
                                  problem.p_F_ball - c.p_F_ball, kicks, hold);
   if (!plan.judged) return result;

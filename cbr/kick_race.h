@@ -5,14 +5,16 @@
 // (ball_lost, cbr/case_actions.h). Ros et al. 2009 name this failure (sec. 5.3.1: "the defender
 // may reach the ball first") and give the robots no measure of it; the model below is ours.
 //
-// The getter (problem teammate at p, heading theta) and the ball B, every time from the match's
-// robot (models/match/<robot>.json) and the rules:
-//   t_get    = TimeToBall(p, B)                                     (cbr/ball_race.h)
-//   heading  = the direction p -> B if the robot walks, else theta
+// The getter (problem teammate at p, heading theta, adapted position A) and the ball B, every
+// time from the match's robot (models/match/<robot>.json) and the rules; the getter walks to A
+// (next to the ball, sec. 4.2), then to the ball, as the team plays it:
+//   t_get    = |A - p| / speed_mps + TimeToBall(A, B)               (cbr/ball_race.h)
+//   heading  = the direction A -> B (theta when A is on the ball)
 //   t_hold   = for each action before its first kick or pass, in case order:
-//                turn:          |turn| / dribble_turn_radps
-//                dribble/go_to: |turn to the target| / dribble_turn_radps + |d| / dribble_speed_mps
-//                               (target adapted like the case's positions, cbr/case_play.h)
+//                turn:    |turn| / dribble_turn_radps
+//                dribble: |turn to the target| / dribble_turn_radps + |d| / dribble_speed_mps
+//                         (target adapted like the case's positions, cbr/case_play.h)
+//                a walk, wait or receive before the kick: not judged
 //            + the aim: |turn to (trajectory end - kick direction)| / dribble_turn_radps
 //   t_hold runs from the grab's end, as the ball-holding rule's clock does, and is capped at
 //   hold_limit_s (the rule kicks the ball away then, aimed or not); the ball leaves launch_s

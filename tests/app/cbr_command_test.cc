@@ -166,8 +166,36 @@ TEST_F(CbrCommandTest, CheckOnTheShippedBaseCountsAndPasses) {
   EXPECT_THAT(r.out, HasSubstr("cases blocked by their own opponents: 0 of 36\n"));
   EXPECT_THAT(r.out, HasSubstr("cases asking more than their kicks carry (aibo_ers7, reach at 2 "
                                "sd): 0 of 36\n"));
+  EXPECT_THAT(r.out, HasSubstr("cases holding the ball beyond the holding limit (2.70 s): 0 of 36\n"));
   EXPECT_THAT(r.out, HasSubstr("case base OK\n"));
   EXPECT_EQ(r.exit_code, 0);
+}
+
+// A kick straight up the wing from near the side line: launched two sd (29 deg) of its direction
+// off its aim, the power kick's 2.2 m mean roll rests beyond the side line. The same case written
+// for the other goal fails the same way.
+TEST_F(CbrCommandTest, CheckFailsOnAKickWhoseWideLaunchLeavesTheField) {
+  nlohmann::json c = nlohmann::json::parse(ReadFile(ShippedCase("side_individual")));
+  c["name"] = "kicks_along_the_line";
+  c["teammates"][0]["actions"][1]["target"] = {{"x_m", 2.0}, {"y_m", 1.4}};
+  Write("wing.json", c.dump());
+  c["name"] = "kicks_along_the_line_yellow";
+  c["defending"] = "yellow";
+  c["ball"]["x_m"] = -c["ball"]["x_m"].get<double>();
+  c["teammates"][0]["x_m"] = -c["teammates"][0]["x_m"].get<double>();
+  c["teammates"][0]["actions"][1]["target"]["x_m"] = -2.0;
+  Write("wing_yellow.json", c.dump());
+  nlohmann::json base = nlohmann::json::parse(ReadFile(SmallBase({})));
+  base["cases"] = {(work() / "wing.json").string(), (work() / "wing_yellow.json").string()};
+  Write("wing_base.json", base.dump());
+  const RunResult r = Cbr({"check", "--case-base", (work() / "wing_base.json").string()});
+  EXPECT_THAT(r.out, HasSubstr("error: case kicks_along_the_line: kick forward (trajectory 0): "
+                               "launched 2 sd of its direction off its aim, its mean roll 2.22 m "
+                               "rests "));
+  EXPECT_THAT(r.out, HasSubstr("error: case kicks_along_the_line_yellow: kick forward"));
+  EXPECT_THAT(r.out, HasSubstr("cases asking more than their kicks carry (aibo_ers7, reach at 2 "
+                               "sd): 2 of 2\n"));
+  EXPECT_EQ(r.exit_code, 1);
 }
 
 // The shipped "dg" cases once shot at the goal's centre through their own goalie: such a case is

@@ -92,8 +92,8 @@ TEST(CaseHoldingTest, AReceiverFacesThePassAndTurnsToShoot) {
   EXPECT_EQ(f[0].teammate, 2);
   EXPECT_EQ(f[0].trajectory, 1);
   EXPECT_NEAR(f[0].hold_s, 4.0, 1e-9);
-  // The passer's own hold: it walked from (-0.3, 0) along +x and its head kick leaves to the
-  // left, so it aims by a quarter turn right: 2 s, within the limit, not reported.
+  // The passer's own hold: it walked from (-0.3, 0) along +x and its head kick leaves 90 deg to
+  // its left, along +y, where the pass goes: no turn, not reported.
 }
 
 }  // namespace

@@ -111,6 +111,19 @@ TEST(CaseReachTest, AKickWhoseWideLaunchRestsBeyondTheSideLineFails) {
   EXPECT_TRUE(CheckCaseReach(KickUpTheWing(1.41, 2.7), Kicks(), Params()).empty());
 }
 
+TEST(CaseReachTest, AKickAtTheSideLineIsJudgedByItsWidestRestNotItsEnds) {
+  // Aimed straight at the side line (+y) from y0 = 1.0 with a 0.5 rad sd: the spread's ends
+  // (+-1 rad) rest 2.02 sin(0.57) = 1.10 m further out, the straight kick 2.02 m.
+  KickModel wide = Kicks();
+  wide.kicks[0].sigma_direction_rad = 0.5;
+  Case c = KickUpTheWing(1.0, 0.3);
+  c.teammates[0].p_F = Vec2(0.3, 0.7);
+  c.teammates[0].actions[1].target_F = Vec2(0.3, 1.5);
+  const std::vector<ReachFinding> f = CheckCaseReach(c, wide, Params());
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_NEAR(f[0].out_m, 1.0 + 2.02 - 1.8, 1e-12);
+}
+
 TEST(CaseReachTest, TheCheckNeedsAReach) {
   RetrievalParams p = Params();
   p.reach_sigmas.reset();

@@ -192,6 +192,23 @@ TEST_F(CbrTeamTest, AdaptingPastItsTimeoutAborts) {
   EXPECT_GT(team_->CycleOf(0), cycle);
 }
 
+TEST_F(CbrTeamTest, AfterATimeoutTheTeammateHoldsOffTooUntilItHoldsTheBall) {
+  poses_[0] = Pose2(Vec2(0.6, 0.6), 0.0);
+  MakeTeam();
+  Run(3);
+  Run(static_cast<int>(team_params_.adapt_timeout_s / kDt) + 5);
+  ASSERT_EQ(Counter("aborts_timeout"), 1.0);
+  // Robot 0 falls silent: robot 1, which heard the abort, becomes the selector and holds off
+  // while the ball stays in the case's scope...
+  const int cycle = team_->CycleOf(1);
+  Run(static_cast<int>(3.0 * team_params_.presence_timeout_s / kDt), {1});
+  EXPECT_EQ(team_->CycleOf(1), cycle);
+  // ...until it holds the ball itself.
+  holding_[1] = true;
+  Run(3, {1});
+  EXPECT_GT(team_->CycleOf(1), cycle);
+}
+
 TEST_F(CbrTeamTest, ABallThatLeftTheCaseScopeAborts) {
   poses_[0] = Pose2(Vec2(0.6, 0.6), 0.0);
   MakeTeam();

@@ -162,14 +162,42 @@ TEST(FreePathTest, AKickShortOfItsReachRunsOnAndTheGameplayGoesOnFromItsTarget) 
   const std::vector<Vec2> adapted{Vec2(-0.2, 0.0)};
   const CaseBallPath path = BuildBallPath(p, c, adapted, params);
   ASSERT_EQ(path.count, 2);
-  EXPECT_TRUE(path.trajectories[0].end_F.isApprox(Vec2(2.5, 0.0)));
-  // An opponent 2 m out, past the target but inside the kick's roll, blocks it.
+  const FuzzyTrajectory& t = path.trajectories[0];
+  EXPECT_TRUE(t.end_F.isApprox(Vec2(2.5, 0.0)));
+  EXPECT_TRUE(t.aim_F.isApprox(Vec2(1.0, 0.0)));  // the robot aims at the target
+  EXPECT_NEAR(t.knee_m, 1.0, 1e-12);
+  // An opponent 2 m out, past the target but inside the kick's roll, blocks it; the width there
+  // is r_max (0.3 m) ...
   EXPECT_FALSE(CheckFreePath(path, std::vector<Vec2>{Vec2(2.0, 0.05)}, params.thr_trajectory).free);
+  EXPECT_NEAR(TrajectoryExponent(t, Vec2(2.0, 0.3)), 1.0, 1e-12);
+  // ... and before the target the corridor is the one to the target: 0.2 m half-width halfway,
+  // not the 0.14 m of a trapezoid stretched to 2.5 m.
+  EXPECT_NEAR(TrajectoryExponent(t, Vec2(0.5, 0.2)), 1.0, 1e-12);
+  EXPECT_FALSE(CheckFreePath(path, std::vector<Vec2>{Vec2(0.5, 0.19)}, params.thr_trajectory).free);
   EXPECT_TRUE(path.trajectories[1].start_F.isApprox(Vec2(1.0, 0.0)));
   // Without a reach the trajectory ends at the target, as the paper draws it.
   params.kicks.clear();
   const CaseBallPath paper = BuildBallPath(p, c, adapted, params);
   EXPECT_TRUE(paper.trajectories[0].end_F.isApprox(Vec2(1.0, 0.0)));
+}
+
+TEST(FreePathTest, AShotAtAGoalLineTargetIsNotRunOn) {
+  Problem p;
+  p.p_F_ball = Vec2(0.0, 0.0);
+  Case c;
+  c.p_F_ball = Vec2(0.0, 0.0);
+  CaseAction kick = Act(ActionType::kKick);
+  kick.target_F = Vec2(2.7, 0.0);  // on the goal line (goal_x_m 2.7): a shot
+  c.teammates.push_back({1, {-0.2, 0.0}, {Act(ActionType::kGetBall), kick}});
+  RetrievalParams params;
+  params.kicks.push_back({"forward", 0.1, 0.3, 4.0, 0.0});
+  const std::vector<Vec2> adapted{Vec2(-0.2, 0.0)};
+  const FuzzyTrajectory t = BuildBallPath(p, c, adapted, params).trajectories[0];
+  EXPECT_NEAR(t.length_m, 2.7, 1e-12);
+  EXPECT_EQ(t.knee_m, 0.0);
+  // The same kick at a target 0.1 m short of the line runs on to its 4 m reach.
+  c.teammates[0].actions[1].target_F = Vec2(2.6, 0.0);
+  EXPECT_NEAR(BuildBallPath(p, c, adapted, params).trajectories[0].length_m, 4.0, 1e-12);
 }
 
 }  // namespace

@@ -121,6 +121,20 @@ TEST(KickRaceTest, AnOpponentBesideTheDribbleIsMeasuredFromTheSegment) {
   EXPECT_FALSE(r.won);
 }
 
+TEST(KickRaceTest, TheGetterGoesByItsAdaptedPositionAndAimsASideKickOffItsHeading) {
+  const Case c = OneKick({}, "side");
+  Played p = Play(c, Vec2(-1.0, 0.0), {});
+  p.match.adapted_F[0] = Vec2(-0.1, -0.1);  // next to the ball, on its lower left
+  const HoldParams long_hold{0.3, 0.15, kPi / 4.0, 10.0, 0.3};
+  const KickRace r = RunKickRace(p.problem, c, p.match, 0, p.path, Kicks(), kRace, long_hold);
+  // It grabs facing +45 deg (from its adapted position); the side kick leaves 90 deg to the
+  // robot's left, so to kick along +x it faces -90 deg: a 135 deg turn, 3 s (45 deg the other
+  // way, had the kick's direction the wrong sign).
+  EXPECT_NEAR(r.hold_s, 3.0, 1e-9);
+  const double walk_s = std::sqrt(0.9 * 0.9 + 0.1 * 0.1) / 0.3;  // to (-0.1, -0.1), at the ball
+  EXPECT_NEAR(r.kick_s, walk_s + 0.3 + 3.0 + 0.3, 1e-9);
+}
+
 TEST(KickRaceTest, WithoutOpponentsTheGetterWins) {
   const Case c = OneKick({}, "side");
   const Played p = Play(c, Vec2(-1.0, 0.0), {});
