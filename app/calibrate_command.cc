@@ -4,6 +4,7 @@
 #include <iostream>
 #include <map>
 
+#include "app/base_flag.h"
 #include "app/cli_values.h"
 #include "app/report_text.h"
 #include "app/shard_output.h"
@@ -44,6 +45,7 @@ void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem
   settings.situation_file = options.situation_file;
   settings.kicks_file = options.kicks_file;
   settings.physics_file = options.physics_file;
+  settings.base = ParseBaseFlag(options.base);
   settings.progress = [](const std::string& kick) {
     return TerminalProgress("calibrate " + kick + ":", "trials");
   };
@@ -57,6 +59,7 @@ void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem
   run.source = "physics";
   run.provenance.SetInput("situation", DisplayPath(physics.situation_file, models));
   run.provenance.SetInput("physics", DisplayPath(physics.physics_file, models));
+  run.provenance.SetInput("robot_base", std::string(RobotBaseName(physics.base)));
   run.carpet_deceleration_mps2 = physics.carpet_deceleration_mps2;
   run.trials_per_kick = settings.trials;
   for (PhysicsKickTrials& trials : physics.kicks) {
@@ -65,6 +68,7 @@ void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem
     kick.observations = std::move(trials.observations);
     kick.draws = std::move(trials.draws);
     kick.missed = trials.missed;
+    kick.fell = trials.fell;
     kick.clearance = trials.clearance;
     run.kicks.push_back(std::move(kick));
   }
@@ -164,6 +168,7 @@ void AddCalibrateCommand(CLI::App& app, CalibrateOptions& options) {
                   "Kick model to start from (default: MODELS/kicks/<robot>.json)");
   cmd->add_option("--physics", options.physics_file,
                   "Physics file (default: MODELS/physics/<field>.json)");
+  AddBaseOption(*cmd, options.base);
   cmd->add_option("--from-csv", options.from_csv,
                   "Fit observed kicks from this CSV instead of running physics")
       ->excludes(trials);
@@ -260,7 +265,7 @@ constexpr char kCalibrateCommand[] = "calibrate";
 nlohmann::ordered_json CalibrateSettings(const CalibrateOptions& o) {
   return {{"--robot", o.robot},       {"--kick", o.kick},         {"--all", o.all},
           {"--trials", o.trials},     {"--seed", o.seed},         {"--situation", o.situation_file},
-          {"--kicks", o.kicks_file},  {"--physics", o.physics_file},
+          {"--kicks", o.kicks_file},  {"--physics", o.physics_file}, {"--base", o.base},
           {"--confidence", o.confidence}, {"--resamples", o.resamples}};
 }
 
@@ -282,6 +287,7 @@ int RunCalibrationShard(const CalibrateOptions& options, const Shard& shard,
   settings.situation_file = options.situation_file;
   settings.kicks_file = options.kicks_file;
   settings.physics_file = options.physics_file;
+  settings.base = ParseBaseFlag(options.base);
   settings.shard = shard;
   const PhysicsCalibration part = RunPhysicsCalibration(settings, models);
   const ShardHeader header{kCalibrateCommand, FORESIGHT_VERSION, shard, CalibrateSettings(options),
@@ -316,6 +322,7 @@ int MergeCalibrationCommand(const std::vector<ShardPart>& parts, const std::stri
   options.situation_file = SettingString(first, "--situation");
   options.kicks_file = SettingString(first, "--kicks");
   options.physics_file = SettingString(first, "--physics");
+  options.base = SettingString(first, "--base");
   options.confidence = SettingString(first, "--confidence");
   options.resamples = SettingString(first, "--resamples");
   // What `calibrate --report DIR --out DIR/ROBOT_calibrated.json` writes.

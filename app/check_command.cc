@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "app/base_flag.h"
 #include "app/cli_values.h"
 #include "common/error.h"
 #include "models/model_paths.h"
@@ -17,6 +18,7 @@ void AddCheckCommand(CLI::App& app, CheckOptions& options) {
   cmd->add_option("--junit", options.junit_file, "Write the results as JUnit XML");
   cmd->add_option("--threads", options.threads, "Worker threads (0: all cores)")
       ->capture_default_str();
+  AddBaseOption(*cmd, options.base);
 }
 
 int RunCheckCommand(const CheckOptions& options, const std::string& models_dir) {
@@ -26,7 +28,9 @@ int RunCheckCommand(const CheckOptions& options, const std::string& models_dir) 
   const std::filesystem::path spec_file = options.spec_file.empty()
                                               ? DataFile(models, DataFolder::kCheckSpecs, "default")
                                               : std::filesystem::path(options.spec_file);
-  const CheckSuite suite = LoadCheckSuite(spec_file);
+  const std::optional<RobotBase> base = ParseBaseFlag(options.base);
+  CheckSuite suite = LoadCheckSuite(spec_file);
+  for (CheckSpec& check : suite.checks) check.base = base;
   int failed = 0;
   const std::vector<CheckResult> results =
       RunChecks(suite, models, threads, [&](const CheckResult& r) {

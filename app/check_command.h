@@ -11,6 +11,7 @@ struct CheckOptions {
   std::string spec_file;  // default: MODELS/check_specs/default.json
   std::string junit_file;
   std::string threads = "0";
+  std::string base;  // --base: empty, the physics files'
 };
 
 void AddCheckCommand(CLI::App& app, CheckOptions& options);

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <iostream>
 
+#include "app/base_flag.h"
 #include "app/cli_values.h"
 #include "app/report_text.h"
 #include "app/shard_output.h"
@@ -33,6 +34,7 @@ void AddFidelityCommand(CLI::App& app, FidelityOptions& options) {
   cmd->add_option("--kicks", options.kicks_file, "Kick model replacing every situation's");
   cmd->add_option("--physics", options.physics_file,
                   "Physics file (default: MODELS/physics/<field>.json)");
+  AddBaseOption(*cmd, options.base);
   cmd->add_option("--class", options.situation_class,
                   "Only the set's situations of this class (e.g. near_posts)");
   cmd->add_option("--coarse-rebounds", options.coarse_rebounds,
@@ -50,7 +52,7 @@ nlohmann::ordered_json FidelitySettingsOf(const FidelityOptions& o) {
           {"--samples", o.samples},       {"--converged", o.converged},
           {"--seed", o.seed},             {"--kicks", o.kicks_file},
           {"--physics", o.physics_file},  {"--class", o.situation_class},
-          {"--coarse-rebounds", o.coarse_rebounds}};
+          {"--coarse-rebounds", o.coarse_rebounds}, {"--base", o.base}};
 }
 
 // The run's settings, its set and its provenance (run time aside), the report folder checked.
@@ -69,6 +71,7 @@ FidelityPlan PlanFidelity(const FidelityOptions& options, const std::filesystem:
   run.settings.seed = run.provenance.seed = ParseSeed(options.seed);
   run.settings.threads = ParseCount("--threads", options.threads, 0, 1024);
   run.settings.physics_file = options.physics_file;
+  run.settings.base = ParseBaseFlag(options.base);
   run.settings.progress = TerminalProgress("fidelity:", "situations");
   if (!options.out_dir.empty()) CheckReportDir(options.out_dir, "--out");  // before the work
   SituationOverrides overrides;
@@ -84,7 +87,9 @@ FidelityPlan PlanFidelity(const FidelityOptions& options, const std::filesystem:
                                                                      : options.situation_class},
                            {"coarse_rebounds", options.coarse_rebounds.empty()
                                                    ? "as the evaluation files"
-                                                   : options.coarse_rebounds}};
+                                                   : options.coarse_rebounds},
+                           {"robot_base", options.base.empty() ? "as the physics files"
+                                                               : options.base}};
   run.rotations_rad = plan.set.rotations_rad;
   return plan;
 }
@@ -149,6 +154,7 @@ int MergeFidelityCommand(const std::vector<ShardPart>& parts, const std::string&
   options.physics_file = SettingString(first, "--physics");
   options.situation_class = SettingString(first, "--class");
   options.coarse_rebounds = SettingString(first, "--coarse-rebounds");
+  options.base = SettingString(first, "--base");
   options.out_dir = out_dir;
   FidelityPlan plan = PlanFidelity(options, models);
   RequireShardItems(first, static_cast<int>(plan.set.cases.size()), "situations");

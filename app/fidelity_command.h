@@ -26,6 +26,7 @@ struct FidelityOptions {
   std::string threads = std::to_string(FidelitySettings{}.threads);
   std::string kicks_file;
   std::string physics_file;
+  std::string base;             // --base: empty, the physics files'
   std::string situation_class;  // empty: every class of the set
   std::string coarse_rebounds;  // "on", "off" or empty (the evaluation files')
   std::string out_dir;

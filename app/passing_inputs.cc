@@ -1,5 +1,6 @@
 #include "app/passing_inputs.h"
 
+#include "app/base_flag.h"
 #include "app/cli_values.h"
 #include "app/passing_physics.h"
 #include "app/report_text.h"
@@ -17,6 +18,7 @@ void AddPassingRunOptions(CLI::App& cmd, PassingOptions& o) {
   cmd.add_flag("--physics", o.physics, "Execute every kick in the Bullet scene");
   cmd.add_option("--physics-file", o.physics_file,
                  "Physics file (default: MODELS/physics/<field>.json)");
+  AddBaseOption(cmd, o.base);
   cmd.add_option("--kicks", o.kicks_file, "AIBO kick model replacing the simulation file's");
   cmd.add_option("--params", o.params, "Experiment file, or a name in MODELS/experiments/")
       ->capture_default_str();
@@ -37,10 +39,12 @@ PassingInputs LoadPassingInputs(const PassingOptions& o, const std::string& team
   request.mirrored = o.mirror;
   request.kicks_file = o.kicks_file;
   if (!o.physics && !o.physics_file.empty()) throw InputError("--physics-file needs --physics");
+  if (!o.physics && !o.base.empty()) throw InputError("--base needs --physics");
+  const std::optional<RobotBase> base = ParseBaseFlag(o.base);
   PassingInputs in{LoadPassingSetup(request, models), nullptr, ""};
   if (o.physics) {
     auto physics = std::make_unique<PhysicsKickExecutor>(in.setup.field, in.setup.kicks, models,
-                                                         o.physics_file);
+                                                         o.physics_file, base);
     in.physics_file = DisplayPath(physics->physics_file(), models);
     in.executor = std::move(physics);
   } else {
@@ -67,6 +71,7 @@ RunProvenance PassingProvenance(const PassingOptions& o, const PassingInputs& in
               {"executor", o.physics ? "physics" : "coarse"},
               {"mirrored", setup.mirrored ? "yes" : "no"}};
   if (o.physics) p.SetInput("physics", in.physics_file);
+  if (o.physics && !o.base.empty()) p.SetInput("robot_base", o.base);
   return p;
 }
 
@@ -74,6 +79,7 @@ nlohmann::ordered_json PassingSettings(const PassingOptions& o) {
   return {{"--config", o.config},   {"--scenarios", o.scenarios},
           {"--trials", o.trials},   {"--mirror", o.mirror},
           {"--physics", o.physics}, {"--physics-file", o.physics_file},
+          {"--base", o.base},
           {"--kicks", o.kicks_file}, {"--params", o.params},
           {"--seed", o.seed}};
 }
@@ -86,6 +92,7 @@ PassingOptions PassingOptionsOf(const ShardPart& part, const std::string& out_di
   o.mirror = SettingFlag(part, "--mirror");
   o.physics = SettingFlag(part, "--physics");
   o.physics_file = SettingString(part, "--physics-file");
+  o.base = SettingString(part, "--base");
   o.kicks_file = SettingString(part, "--kicks");
   o.params = SettingString(part, "--params");
   o.seed = SettingString(part, "--seed");

@@ -26,6 +26,7 @@ struct PassingOptions {
   bool mirror = false;
   bool physics = false;
   std::string physics_file;
+  std::string base;  // --base, with --physics; empty: the physics file's
   std::string kicks_file;  // replaces the simulation file's kick model
   std::string variants = "cbr_variants";  // experiment ablations only: the CBR team's variants
   std::string seed = "1";

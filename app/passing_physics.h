@@ -11,21 +11,24 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 
 #include "match/kick_executor.h"
 #include "models/kick_model.h"
 #include "models/physics_params.h"
 #include "models/robot_spec.h"
+#include "physics/settled_stance.h"
 
 namespace foresight {
 
 class PhysicsKickExecutor final : public KickExecutor {
  public:
-  // Loads the robot of `kicks` and the physics file (empty: MODELS/physics/<field>.json);
-  // InputError when a kick of `kicks` has no motion.
+  // Loads the robot of `kicks` and the physics file (empty: MODELS/physics/<field>.json), `base`
+  // replacing its robot base; InputError when a kick of `kicks` has no motion.
   PhysicsKickExecutor(const FieldSpec& field, const KickModel& kicks,
                       const std::filesystem::path& models_dir,
-                      const std::filesystem::path& physics_file);
+                      const std::filesystem::path& physics_file,
+                      std::optional<RobotBase> base = {});
   Outcome Execute(std::span<const Obstacle> robots, const DrawnState& state,
                   const ConcreteAction& action) const override;
   const std::filesystem::path& physics_file() const { return physics_file_; }
@@ -36,6 +39,7 @@ class PhysicsKickExecutor final : public KickExecutor {
   Robot robot_;
   std::filesystem::path physics_file_;
   PhysicsParams params_;
+  SettledStances settled_;  // settled once for every kick's scene (floating base)
 };
 
 }  // namespace foresight

@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "app/base_flag.h"
 #include "app/cli_values.h"
 #include "app/simulation_output.h"
 #include "common/error.h"
@@ -25,6 +26,7 @@ void AddSimulateCommand(CLI::App& app, SimulateOptions& options) {
   cmd->add_option("--kicks", options.kicks_file, "Kick model file replacing the situation's");
   cmd->add_option("--physics", options.physics_file,
                   "Physics file (default: MODELS/physics/<field>.json)");
+  AddBaseOption(*cmd, options.base);
   cmd->add_option("--trials", options.trials, "Number of trials")->capture_default_str();
   cmd->add_option("--seed", options.seed, "Random seed")->capture_default_str();
   cmd->add_option("--threads", options.threads, "Worker threads (0: all cores)")
@@ -45,6 +47,7 @@ SimulationPlan PlanSimulation(const SimulateOptions& options, const std::filesys
   request.threads = ParseCount("--threads", options.threads, 0, kMaxThreads);
   request.rotation_rad =
       ParseNumber("--rotation", options.rotation_deg, -360.0, 360.0) * kDegToRad;
+  const std::optional<RobotBase> base = ParseBaseFlag(options.base);
   SituationOverrides overrides;
   overrides.kicks_file = options.kicks_file;
   Situation situation = LoadSituation(options.situation_file, models, overrides);
@@ -54,7 +57,7 @@ SimulationPlan PlanSimulation(const SimulateOptions& options, const std::filesys
                      " (one of: " + situation.kicks.Names() + ")");
   }
   request.kick_index = *kick;
-  plan.setup = LoadPhysicsSetup(std::move(situation), models, options.physics_file);
+  plan.setup = LoadPhysicsSetup(std::move(situation), models, options.physics_file, base);
   if (!plan.setup->robot.FindMotion(options.kick)) {
     throw InputError("--kick: robot '" + plan.setup->robot.spec.name +
                      "' has no motion for kick '" + options.kick + "'");
@@ -75,6 +78,7 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
   run.situation = &setup->situation;
   run.robot = &setup->robot;
   run.physics_file = setup->physics_file;
+  run.base = setup->params.robot.base;
   run.models_dir = models;
   run.kick = options.kick;
   run.rotation_rad = request.rotation_rad;

@@ -61,6 +61,9 @@ std::string SimulationText(const SimulationRun& run) {
   out << Format("rest: mean (%.3f, %.3f) m, sd (%.3f, %.3f) m; mean time %.2f s; settled %d/%d\n",
                 s.rest_mean_F.x(), s.rest_mean_F.y(), s.rest_sd_F.x(), s.rest_sd_F.y(),
                 s.time_mean_s, s.settled, s.trials);
+  out << Format("robot: %s base; fell %d/%d; largest torso tilt %.1f deg\n",
+                std::string(RobotBaseName(run.base)).c_str(), s.fell, s.trials,
+                s.max_tilt_rad * kRadToDeg);
   out << Format("placement: %d/%d trials drew the ball inside the robot first and drew again "
                 "(%d draws rejected)\n",
                 s.placement_redrawn, s.trials, s.placement_redraws);
@@ -78,6 +81,7 @@ nlohmann::ordered_json SimulationJson(const SimulationRun& run) {
                     {"kicks", DisplayPath(run.situation->kicks_file, run.models_dir)},
                     {"physics", DisplayPath(run.physics_file, run.models_dir)}};
   j["robot"] = run.robot->spec.name;
+  j["base"] = RobotBaseName(run.base);
   j["kick"] = run.kick;
   j["rotation_deg"] = run.rotation_rad * kRadToDeg;
   j["seed"] = run.seed;
@@ -93,6 +97,8 @@ nlohmann::ordered_json SimulationJson(const SimulationRun& run) {
                   {"touched", s.touched},
                   {"launched", s.launched},
                   {"settled", s.settled},
+                  {"fell", s.fell},
+                  {"max_tilt_deg", s.max_tilt_rad * kRadToDeg},
                   {"placement_redrawn", s.placement_redrawn},
                   {"placement_redraws", s.placement_redraws},
                   {"launch_speed_mean_mps", s.launch_speed_mean_mps},
@@ -112,6 +118,8 @@ nlohmann::ordered_json SimulationJson(const SimulationRun& run) {
     t["touched"] = r.touched;
     t["launched"] = r.launched;
     t["settled"] = r.settled;
+    t["fell"] = r.fell;
+    t["max_tilt_deg"] = r.max_tilt_rad * kRadToDeg;
     t["launch_speed_mps"] = r.launch_speed_mps;
     t["launch_direction_deg"] = r.launch_direction_rad * kRadToDeg;
     t["draw"] = {{"placement_dx_m", r.draw.placement_dx_m},

@@ -19,6 +19,7 @@ struct SimulationRun {
   const Situation* situation = nullptr;
   const Robot* robot = nullptr;
   std::filesystem::path physics_file;
+  RobotBase base = RobotBase::kFixed;
   std::filesystem::path models_dir;
   std::string kick;
   double rotation_rad = 0.0;

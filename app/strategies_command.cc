@@ -3,6 +3,7 @@
 #include <chrono>
 #include <memory>
 
+#include "app/base_flag.h"
 #include "app/cli_values.h"
 #include "app/experiment_output.h"
 #include "app/report_text.h"
@@ -24,6 +25,7 @@ nlohmann::ordered_json StrategiesSettings(const StrategiesOptions& o) {
           {"--physics", o.physics},
           {"--physics-file", o.physics_file},
           {"--coarse-rebounds", o.coarse_rebounds},
+          {"--base", o.base},
           {"--seed", o.seed}};
 }
 
@@ -35,6 +37,7 @@ StrategiesOptions StrategiesOptionsOf(const ShardPart& part, const std::string& 
   o.physics = SettingFlag(part, "--physics");
   o.physics_file = SettingString(part, "--physics-file");
   o.coarse_rebounds = SettingString(part, "--coarse-rebounds");
+  o.base = SettingString(part, "--base");
   o.seed = SettingString(part, "--seed");
   o.out_dir = out_dir;
   return o;
@@ -53,6 +56,8 @@ std::unique_ptr<StrategiesPlan> PlanStrategies(const StrategiesOptions& o,
   auto plan = std::make_unique<StrategiesPlan>();
   const std::uint64_t seed = ParseSeed(o.seed);
   if (!o.physics && !o.physics_file.empty()) throw InputError("--physics-file needs --physics");
+  if (!o.physics && !o.base.empty()) throw InputError("--base needs --physics");
+  const std::optional<RobotBase> base = ParseBaseFlag(o.base);
   StrategiesParams& params = plan->params;
   SituationOverrides overrides;
   overrides.kicks_file = o.kicks_file;
@@ -69,11 +74,13 @@ std::unique_ptr<StrategiesPlan> PlanStrategies(const StrategiesOptions& o,
                           params.situation.evaluation.rebounds.enabled ? "on" : "off");
   run.params = &params;
   if (o.physics) {
-    plan->physics = LoadPhysicsSetup(params.situation, models, o.physics_file);
+    plan->physics = LoadPhysicsSetup(params.situation, models, o.physics_file, base);
     RequireAllKickMotions(*plan->physics, run.provenance.Input("kicks"));
     CheckReportDir(o.out_dir, "--out");  // before the work, not after
     run.provenance.SetInput("executor", "physics");
     run.provenance.SetInput("physics", DisplayPath(plan->physics->physics_file, models));
+    run.provenance.SetInput("robot_base",
+                            std::string(RobotBaseName(plan->physics->params.robot.base)));
   } else {
     CheckReportDir(o.out_dir, "--out");
     run.provenance.SetInput("executor", "coarse");
@@ -107,6 +114,7 @@ void AddStrategiesCommand(CLI::App& experiment, StrategiesOptions& o) {
                   "evaluation file's)");
   cmd->add_option("--physics-file", o.physics_file,
                   "Physics file (default: MODELS/physics/<field>.json)");
+  AddBaseOption(*cmd, o.base);
   cmd->add_option("--seed", o.seed, "Random seed")->capture_default_str();
   cmd->add_option("--threads", o.threads, "Worker threads (0: all cores)")->capture_default_str();
   cmd->add_option("--out", o.out_dir, "Folder for the results")->required();

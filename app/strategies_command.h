@@ -20,6 +20,7 @@ struct StrategiesOptions {
   std::string starts;  // empty: the params file's
   bool physics = false;
   std::string physics_file;
+  std::string base;  // --base, with --physics; empty: the physics file's
   std::string coarse_rebounds;  // "on", "off" or empty (the evaluation file's)
   std::string seed = "1";
   std::string threads = "0";

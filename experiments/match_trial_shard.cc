@@ -35,6 +35,7 @@ nlohmann::json CountersJson(const TrialCounters& c) {
           {"grabs_failed", c.grabs_failed},
           {"kicks_missed", c.kicks_missed},
           {"kicks_not_settled", c.kicks_not_settled},
+          {"kicks_fell", c.kicks_fell},
           {"time_s", ExactJson(c.time_s)},
           {"last_touch", {c.last_touch_side, c.last_touch_robot}},
           {"attacker_kick_sent", c.attacker_kick_sent ? 1 : 0},
@@ -50,6 +51,7 @@ TrialCounters ReadCounters(const ShardValue& v) {
   c.grabs_failed = v["grabs_failed"].Int();
   c.kicks_missed = v["kicks_missed"].Int();
   c.kicks_not_settled = v["kicks_not_settled"].Int();
+  c.kicks_fell = v["kicks_fell"].Int();
   c.time_s = v["time_s"].Double();
   const ShardValue last = v["last_touch"];
   if (last.Size() != 2) last.Fail("must be [side, robot]");

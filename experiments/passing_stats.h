@@ -39,6 +39,7 @@ struct ScenarioSummary {
   std::vector<double> backup_share;        // per attacker: its share of the team's backing-ups
   int kicks_missed = 0;                    // over all trials (physics executors only)
   int kicks_not_settled = 0;
+  int kicks_fell = 0;
   MeanStat time_s;
   MeanStat time_ended_s;
   // The attacking team's own counters (TeamPolicy::Counters, e.g. the CBR team's cases and

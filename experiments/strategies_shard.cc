@@ -30,7 +30,8 @@ nlohmann::json RunJson(const StrategyRun& run) {
                       run.steps,                    ExactJson(run.turn_s),
                       ExactJson(run.walk_s),        ExactJson(run.around_ball_s),
                       static_cast<int>(run.last_contact), run.kick_status.missed,
-                      run.kick_status.not_settled,  rotations};
+                      run.kick_status.not_settled,  rotations,
+                      run.kick_status.fell};
   if (!steps.empty()) j.push_back(steps);
   return j;
 }
@@ -43,7 +44,7 @@ Enum ReadEnum(const ShardValue& v, Enum last) {
 }
 
 StrategyRun ReadRun(const ShardValue& v) {
-  if (v.Size() != 10 && v.Size() != 11) v.Fail("must be a run of 10 or 11 entries");
+  if (v.Size() != 11 && v.Size() != 12) v.Fail("must be a run of 11 or 12 entries");
   StrategyRun run;
   run.end = ReadEnum(v.At(0), RunEnd::kStepLimit);
   run.kicks = v.At(1).Int();
@@ -52,12 +53,12 @@ StrategyRun ReadRun(const ShardValue& v) {
   run.walk_s = v.At(4).Double();
   run.around_ball_s = v.At(5).Double();
   run.last_contact = ReadEnum(v.At(6), Contact::kRobot);
-  run.kick_status = {v.At(7).Int(), v.At(8).Int()};
+  run.kick_status = {v.At(7).Int(), v.At(8).Int(), v.At(10).Int()};
   const ShardValue rotations = v.At(9);
   for (std::size_t i = 0; i < rotations.Size(); ++i)
     run.rotations_rad.push_back(rotations.At(i).Double());
-  if (v.Size() == 11) {
-    const ShardValue steps = v.At(10);
+  if (v.Size() == 12) {
+    const ShardValue steps = v.At(11);
     for (std::size_t i = 0; i < steps.Size(); ++i) run.steps_taken.push_back(ReadStep(steps.At(i)));
   }
   return run;

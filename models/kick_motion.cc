@@ -51,7 +51,36 @@ KickStance ReadStance(const JsonObject& object) {
   return stance;
 }
 
+// The balance's times must be positive (checked here); its joints and the offset stances are
+// checked against the robot's body when the robot loads (models/robot_spec.cc).
+KickBalance ReadBalance(const JsonObject& object) {
+  object.RejectUnknownKeys({"shift_s", "settle_s", "offsets_deg"});
+  KickBalance balance;
+  balance.shift_s = object.Number("shift_s");
+  balance.settle_s = object.Number("settle_s");
+  if (!(balance.shift_s > 0.0 && balance.shift_s <= 10.0)) {
+    object.Fail("shift_s", "must be in (0, 10], got " + FormatNumber(balance.shift_s));
+  }
+  if (!(balance.settle_s >= 0.0 && balance.settle_s <= 10.0)) {
+    object.Fail("settle_s", "must be in [0, 10], got " + FormatNumber(balance.settle_s));
+  }
+  const JsonObject offsets = object.Object("offsets_deg");
+  for (const std::string& joint : offsets.Keys()) {
+    if (joint == "notes") continue;
+    if (joint.empty()) offsets.Fail(joint, "joint names must not be empty");
+    balance.offsets_rad.emplace_back(joint, offsets.Number(joint) * kDegToRad);
+  }
+  if (balance.offsets_rad.empty()) object.Fail("offsets_deg", "must name at least one joint");
+  return balance;
+}
+
 }  // namespace
+
+double KickBalance::Share(double t_s) const {
+  if (!Has()) return 0.0;
+  const double u = std::clamp(t_s / shift_s, 0.0, 1.0);
+  return u * u * (3.0 - 2.0 * u);
+}
 
 void KickMotion::Sample(double t_s, std::span<double> q_rad, std::span<double> qdot_radps) const {
   assert(keyframes.size() >= 2 && !std::isnan(t_s));  // Validate() ensures the former
@@ -126,10 +155,12 @@ void KickMotion::Validate(const std::string& file) const {
 KickMotion LoadKickMotion(const std::filesystem::path& file) {
   const JsonDocument doc = JsonDocument::Load(file);
   const JsonObject root = doc.Root();
-  root.RejectUnknownKeys({"name", "stance", "ball_x_m", "ball_y_m", "joints", "keyframes"});
+  root.RejectUnknownKeys(
+      {"name", "stance", "balance", "ball_x_m", "ball_y_m", "joints", "keyframes"});
   KickMotion motion;
   motion.name = root.String("name");
   if (root.Has("stance")) motion.stance = ReadStance(root.Object("stance"));
+  if (root.Has("balance")) motion.balance = ReadBalance(root.Object("balance"));
   motion.p_R_ball = Vec2(root.Number("ball_x_m"), root.Number("ball_y_m"));
   motion.joints = root.StringArray("joints");
   if (!root.Has("keyframes")) root.Fail("keyframes", "missing");

@@ -30,9 +30,28 @@ struct KickStance {
   bool IsOwn() const { return base_height_m > 0.0; }
 };
 
+// How a robot standing on its own feet (a floating base, models/physics_params.h) keeps its
+// balance through the kick: an open-loop weight shift played before the motion. Over shift_s
+// the offsets ramp in along 3u^2 - 2u^3 (u = t / shift_s: zero speed at both ends), the robot
+// then holds still for settle_s, and the motion plays with the offsets added to its targets
+// (for joints the motion moves; a sum past the joint's limit stops at the limit) or to the
+// stance (for the others). Hip roll and ankle roll of
+// equal size and opposite sign on both legs move the torso sideways over the support foot with
+// both soles level. A fixed base needs no balance and plays the motion without it.
+struct KickBalance {
+  double shift_s = 0.0;   // 0: no weight shift
+  double settle_s = 0.0;
+  std::vector<std::pair<std::string, double>> offsets_rad;  // joint -> offset
+  bool Has() const { return shift_s > 0.0; }
+  double DurationS() const { return shift_s + settle_s; }
+  // The share of the offsets reached t_s after the shift starts (0 before, 1 after shift_s).
+  double Share(double t_s) const;
+};
+
 struct KickMotion {
   std::string name;
   KickStance stance;
+  KickBalance balance;  // played on a floating base only
   Vec2 p_R_ball{0.0, 0.0};  // nominal ball centre in the robot frame R at the motion's start
   std::vector<std::string> joints;
   std::vector<KickKeyframe> keyframes;  // time_s strictly increasing, the first at 0

@@ -24,6 +24,7 @@ constexpr EnumNames<OutcomeStatus, kOutcomeStatusCount> kStatusNames{{{
     {OutcomeStatus::kOk, "ok"},
     {OutcomeStatus::kMissed, "missed"},
     {OutcomeStatus::kNotSettled, "not_settled"},
+    {OutcomeStatus::kFell, "fell"},
 }}};
 
 }  // namespace
@@ -41,11 +42,12 @@ std::string_view OutcomeStatusName(OutcomeStatus status) {
 void StatusCounts::Add(const StatusCounts& other) {
   missed += other.missed;
   not_settled += other.not_settled;
+  fell += other.fell;
 }
 
 std::string StatusCountsText(const StatusCounts& counts) {
   return std::to_string(counts.missed) + " missed the ball, " + std::to_string(counts.not_settled) +
-         " did not settle";
+         " did not settle, " + std::to_string(counts.fell) + " fell";
 }
 
 StatusCounts CountStatuses(std::span<const Outcome> outcomes) {
@@ -53,6 +55,7 @@ StatusCounts CountStatuses(std::span<const Outcome> outcomes) {
   for (const Outcome& o : outcomes) {
     counts.missed += o.status == OutcomeStatus::kMissed ? 1 : 0;
     counts.not_settled += o.status == OutcomeStatus::kNotSettled ? 1 : 0;
+    counts.fell += o.status == OutcomeStatus::kFell ? 1 : 0;
   }
   return counts;
 }

@@ -26,11 +26,12 @@ enum class Contact : std::uint8_t { kNone, kPost, kNet, kObstacle, kRobot };
 inline constexpr int kContactCount = 5;
 
 // Whether the outcome is what the action asked for. A physics trial can go wrong in ways the
-// coarse model cannot: the robot's foot missed the ball (it then lies where it was), or the
-// ball did not come to rest within the time limit (it is reported where it was then). Such
+// coarse model cannot: the robot's foot missed the ball (it then lies where it was), the
+// ball did not come to rest within the time limit (it is reported where it was then), or the
+// robot, standing on its own feet, fell during the kick (the ball is reported where it rested). Such
 // outcomes still count as what physically happened; the status lets a reader count them.
-enum class OutcomeStatus : std::uint8_t { kOk, kMissed, kNotSettled };
-inline constexpr int kOutcomeStatusCount = 3;
+enum class OutcomeStatus : std::uint8_t { kOk, kMissed, kNotSettled, kFell };
+inline constexpr int kOutcomeStatusCount = 4;
 
 std::string_view CategoryName(Category category);
 std::string_view ContactName(Contact contact);
@@ -77,10 +78,11 @@ struct Outcome {
 struct StatusCounts {
   int missed = 0;
   int not_settled = 0;
+  int fell = 0;  // the kicking robot fell (a floating base)
   void Add(const StatusCounts& other);
 };
 StatusCounts CountStatuses(std::span<const Outcome> outcomes);
-// "2 missed the ball, 0 did not settle"
+// "2 missed the ball, 0 did not settle, 0 fell"
 std::string StatusCountsText(const StatusCounts& counts);
 
 class OutcomeSimulator {

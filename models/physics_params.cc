@@ -1,10 +1,25 @@
 #include "models/physics_params.h"
 
 #include "common/checks.h"
+#include "common/enum_names.h"
 #include "common/error.h"
+#include "common/geometry.h"
 #include "common/json_reader.h"
 
 namespace foresight {
+
+namespace {
+
+inline constexpr EnumNames<RobotBase, 2> kRobotBaseNames{
+    {{{RobotBase::kFixed, "fixed"}, {RobotBase::kFloating, "floating"}}}};
+
+}  // namespace
+
+std::string_view RobotBaseName(RobotBase base) { return kRobotBaseNames.Name(base); }
+std::optional<RobotBase> ParseRobotBase(std::string_view name) {
+  return kRobotBaseNames.Parse(name);
+}
+std::string RobotBaseList() { return kRobotBaseNames.List(); }
 
 namespace {
 
@@ -35,6 +50,9 @@ void PhysicsParams::Validate() const {
   ValidatePairs("materials.restitution", materials.restitution, 1.0);
   ValidatePairs("materials.friction", materials.friction, 5.0);
   RequireInRange("materials.net_thickness_m", materials.net_thickness_m, 0.005, 0.5);
+  RequireInRange("robot.friction", robot.friction, 0.0, 10.0);
+  RequireInRange("robot.restitution", robot.restitution, 0.0, 1.0);
+  RequireInRange("robot.fall_tilt_rad", robot.fall_tilt_rad, kDegToRad, 0.5 * kPi);
   RequireInRange("motors.position_gain", motors.position_gain, 0.0, 1.0);
   RequireInRange("motors.velocity_gain", motors.velocity_gain, 0.0, 10.0);
   RequireInRange("steps.kick_time_step_s", steps.kick_time_step_s, 1e-5, 0.01);
@@ -91,6 +109,30 @@ MaterialParams ReadMaterials(const JsonObject& o) {
   return m;
 }
 
+// {"base": "fixed", "friction": mu, "restitution": e, "fall_tilt_deg": deg, "sources": {...}}:
+// every number with the reason for it.
+RobotContactParams ReadRobot(const JsonObject& o) {
+  o.RejectUnknownKeys({"base", "friction", "restitution", "fall_tilt_deg", "sources"});
+  RobotContactParams r;
+  const std::string base = o.String("base");
+  const std::optional<RobotBase> parsed = ParseRobotBase(base);
+  if (!parsed) o.Fail("base", "must be one of " + RobotBaseList() + ", got '" + base + "'");
+  r.base = *parsed;
+  r.friction = o.Number("friction");
+  r.restitution = o.Number("restitution");
+  const double fall_tilt_deg = o.Number("fall_tilt_deg");
+  if (!(fall_tilt_deg >= 1.0 && fall_tilt_deg <= 90.0)) {
+    o.Fail("fall_tilt_deg", "must be in [1, 90], got " + FormatNumber(fall_tilt_deg));
+  }
+  r.fall_tilt_rad = fall_tilt_deg * kDegToRad;  // files: degrees
+  const JsonObject sources = o.Object("sources");
+  sources.RejectUnknownKeys({"friction", "restitution", "fall_tilt_deg"});
+  for (const char* key : {"friction", "restitution", "fall_tilt_deg"}) {
+    if (sources.String(key).empty()) sources.Fail(key, "must say where the value comes from");
+  }
+  return r;
+}
+
 MotorParams ReadMotors(const JsonObject& o) {
   o.RejectUnknownKeys({"position_gain", "velocity_gain"});
   MotorParams m;
@@ -125,9 +167,10 @@ StepParams ReadSteps(const JsonObject& o) {
 PhysicsParams LoadPhysicsParams(const std::filesystem::path& file) {
   JsonDocument doc = JsonDocument::Load(file);
   JsonObject root = doc.Root();
-  root.RejectUnknownKeys({"carpet", "motors", "materials", "steps"});
+  root.RejectUnknownKeys({"carpet", "robot", "motors", "materials", "steps"});
   PhysicsParams params;
   params.carpet = ReadCarpet(root.Object("carpet"));
+  params.robot = ReadRobot(root.Object("robot"));
   params.motors = ReadMotors(root.Object("motors"));
   params.materials = ReadMaterials(root.Object("materials"));
   params.steps = ReadSteps(root.Object("steps"));

@@ -9,7 +9,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace foresight {
 
@@ -67,8 +69,28 @@ struct MotorParams {
   double velocity_gain = 0.0;
 };
 
+// How the kicking robot stands. kFixed bolts its torso to the world (the fast approximation:
+// no balance, the robot touches only the ball); kFloating stands it on its own feet on the
+// carpet, every link colliding with the carpet, posts, nets, obstacle robots and the ball, and
+// plays each motion's weight shift first (models/kick_motion.h, KickBalance).
+enum class RobotBase { kFixed, kFloating };
+std::string_view RobotBaseName(RobotBase base);
+std::optional<RobotBase> ParseRobotBase(std::string_view name);
+std::string RobotBaseList();  // "fixed, floating"
+
+// The robot's own contacts (floating base): its links against the carpet, posts, nets and the
+// obstacle robots. Bullet's product of two bodies' coefficients does not apply: these pairs get
+// exactly these values. The ball's contacts with the robot keep the materials' foot pair.
+struct RobotContactParams {
+  RobotBase base = RobotBase::kFixed;
+  double friction = 0.0;     // Coulomb coefficient, sole on carpet
+  double restitution = 0.0;
+  double fall_tilt_rad = 0.0;  // the torso tilted further from upright than this: it fell
+};
+
 struct PhysicsParams {
   CarpetParams carpet;
+  RobotContactParams robot;
   MotorParams motors;
   MaterialParams materials;
   StepParams steps;

@@ -110,6 +110,26 @@ void CheckMotion(const KickMotion& motion, const RobotModel& model, double max_f
   CheckJointSpeeds(motion, model, max_factor, file);
 }
 
+// The balance's joints exist and are revolute, and the stance with its offsets stays within
+// the joints' limits. (During the motion a target the offset pushes past a limit stops at it:
+// physics/kicking_robot.cc.)
+void CheckBalance(const Robot& robot, const KickMotion& motion, const std::string& file) {
+  const std::vector<double> stance = robot.StandingPositions(motion);
+  for (const auto& [joint_name, offset_rad] : motion.balance.offsets_rad) {
+    const std::string field = "balance.offsets_deg." + joint_name;
+    const RobotJoint& joint = RevoluteJoint(robot.model, joint_name, file, field);
+    const double q = stance[*robot.model.FindJoint(joint_name)] + offset_rad;
+    RequireWithinLimits(joint, q, file, field + " (with the stance)");
+  }
+}
+
+void CheckSupportJoints(const Robot& robot, const std::string& file) {
+  for (std::size_t j = 0; j < robot.spec.support_joints.size(); ++j) {
+    RevoluteJoint(robot.model, robot.spec.support_joints[j], file,
+                  "support_joints[" + std::to_string(j) + "]");
+  }
+}
+
 }  // namespace
 
 PeakJointSpeed FindPeakJointSpeed(const KickMotion& motion, const RobotModel& model) {
@@ -155,7 +175,8 @@ RobotSpec LoadRobotSpec(const std::filesystem::path& file) {
   const JsonDocument doc = JsonDocument::Load(file);
   const JsonObject root = doc.Root();
   root.RejectUnknownKeys(
-      {"name", "urdf", "base_height_m", "standing_pose_deg", "kicks", "trial_variation", "motors"});
+      {"name", "urdf", "base_height_m", "standing_pose_deg", "kicks", "trial_variation", "motors",
+       "support_joints"});
   const std::filesystem::path dir = file.parent_path();
   const std::string where = file.string();
   RobotSpec spec;
@@ -192,6 +213,7 @@ RobotSpec LoadRobotSpec(const std::filesystem::path& file) {
   spec.variation = ReadVariation(root.Object("trial_variation"));
   spec.variation.Validate(where);
   spec.motors = ReadMotorTable(root.Object("motors"));
+  if (root.Has("support_joints")) spec.support_joints = root.StringArray("support_joints");
   return spec;
 }
 
@@ -253,6 +275,7 @@ Robot LoadRobot(const std::string& name, const std::filesystem::path& models_dir
   robot.model = LoadRobotModel(robot.spec.urdf_file);
   CheckStandingPose(robot, spec_file.string());
   robot.motors = JointMotors(robot.spec.motors, robot.model, spec_file.string());
+  CheckSupportJoints(robot, spec_file.string());
   for (const auto& [kick_name, motion_file] : robot.spec.kick_motion_files) {
     robot.motions.push_back(LoadKickMotion(motion_file));
     const KickMotion& motion = robot.motions.back();
@@ -261,6 +284,7 @@ Robot LoadRobot(const std::string& name, const std::filesystem::path& models_dir
                        spec_file.string() + "), got '" + motion.name + "'");
     }
     CheckMotion(motion, robot.model, robot.spec.variation.MaxSpeedFactor(), motion_file.string());
+    CheckBalance(robot, motion, motion_file.string());
   }
   return robot;
 }

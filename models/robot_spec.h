@@ -37,6 +37,10 @@ struct RobotSpec {
   std::vector<std::pair<std::string, std::filesystem::path>> kick_motion_files;  // resolved
   TrialVariation variation;
   MotorTable motors;  // joint name -> its motor's torque-speed line
+  // On a floating base these joints get motors besides the motion's and its balance's (the
+  // legs, which carry the robot); the others are welded at the stance (a fixed base welds
+  // every joint the motion does not move).
+  std::vector<std::string> support_joints;
 };
 
 RobotSpec LoadRobotSpec(const std::filesystem::path& file);

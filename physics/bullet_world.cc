@@ -35,23 +35,53 @@ void MakeContactsNonSpeculative(btCollisionObject& object) {
 
 namespace {
 
-// Marks a new contact of a striking body: no Baumgarte term (see MakeStriking).
-bool OnStrikingContact(btManifoldPoint& point, const btCollisionObjectWrapper*, int, int,
-                       const btCollisionObjectWrapper*, int, int) {
-  point.m_contactPointFlags |= BT_CONTACT_FLAG_HAS_CONTACT_ERP;
-  point.m_contactERP = 0.0;
+// A new or refreshed contact of a striking body (see MakeStriking): with the ball, no Baumgarte
+// term; with anything else, the robot's own friction and restitution.
+bool OnStrikingContact(btManifoldPoint& point, const btCollisionObjectWrapper* a, int, int,
+                       const btCollisionObjectWrapper* b, int, int) {
+  const btCollisionObject& object_a = *a->getCollisionObject();
+  const btCollisionObject& object_b = *b->getCollisionObject();
+  if (TagOf(object_a) == BodyTag::kBall || TagOf(object_b) == BodyTag::kBall) {
+    point.m_contactPointFlags |= BT_CONTACT_FLAG_HAS_CONTACT_ERP;
+    point.m_contactERP = 0.0;
+    return true;
+  }
+  const btCollisionObject& robot = TagOf(object_a) == BodyTag::kKicker ? object_a : object_b;
+  if (const auto* material = static_cast<const Material*>(robot.getUserPointer())) {
+    point.m_combinedFriction = static_cast<btScalar>(material->friction);
+    point.m_combinedRestitution = static_cast<btScalar>(material->restitution);
+  }
   return true;
 }
 
+// Bullet gives a pair of bodies the smaller of their contact processing thresholds; this one
+// makes every pair of the ball with anything but the carpet non-speculative (see
+// MakeContactsNonSpeculative), whatever the other body's own threshold.
+class ContactDispatcher final : public btCollisionDispatcher {
+ public:
+  using btCollisionDispatcher::btCollisionDispatcher;
+  btPersistentManifold* getNewManifold(const btCollisionObject* a,
+                                       const btCollisionObject* b) override {
+    btPersistentManifold* manifold = btCollisionDispatcher::getNewManifold(a, b);
+    const BodyTag tag_a = TagOf(*a), tag_b = TagOf(*b);
+    const bool ball = tag_a == BodyTag::kBall || tag_b == BodyTag::kBall;
+    const bool carpet = tag_a == BodyTag::kCarpet || tag_b == BodyTag::kCarpet;
+    if (ball && !carpet) manifold->setContactProcessingThreshold(0.0);
+    return manifold;
+  }
+};
+
 }  // namespace
 
-void MakeStriking(btCollisionObject& object) {
+void MakeStriking(btCollisionObject& object, const Material* robot_contact) {
   // Bullet has one process-wide hook; it is set once, to a function without state, before any
-  // world steps (worlds run in parallel threads).
+  // world steps (worlds run in parallel threads). Per-world values reach it through the
+  // robot's user pointer.
   static std::once_flag once;
   std::call_once(once, [] { gContactAddedCallback = OnStrikingContact; });
   object.setCollisionFlags(object.getCollisionFlags() |
                            btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
+  object.setUserPointer(const_cast<Material*>(robot_contact));
 }
 
 namespace {
@@ -69,7 +99,7 @@ std::unique_ptr<btCollisionConfiguration> MakeConfig() {
 
 BulletWorld::BulletWorld(Kind kind, const SolverSettings& solver)
     : config_(MakeConfig()),
-      dispatcher_(std::make_unique<btCollisionDispatcher>(config_.get())),
+      dispatcher_(std::make_unique<ContactDispatcher>(config_.get())),
       broadphase_(std::make_unique<btDbvtBroadphase>()) {
   if (kind == Kind::kMultiBody) {
     auto solver = std::make_unique<btMultiBodyConstraintSolver>();
@@ -119,7 +149,7 @@ btRigidBody* BulletWorld::AddStatic(btCollisionShape* shape, const btTransform& 
   if (tag != BodyTag::kCarpet) MakeContactsNonSpeculative(*body);
   btRigidBody* raw = body.get();
   objects_.push_back(std::move(body));
-  world_->addRigidBody(raw, kGroupStatic, kGroupBall);
+  world_->addRigidBody(raw, kGroupStatic, kGroupBall | kGroupKicker);
   return raw;
 }
 

@@ -27,7 +27,9 @@ Contact ContactOf(BodyTag tag);
 BodyTag TagOf(const btCollisionObject& object);
 
 // What the ball bounces off (posts, nets, robots: everything but the carpet) gets no speculative
-// contacts. Bullet otherwise reports a contact while a gap remains and aims at a separation
+// contacts (for statics through this function; for the ball's pairs with the kicking robot
+// through the world's dispatcher, ContactDispatcher in bullet_world.cc, so that the robot's
+// own soles stay speculative on the carpet). Bullet otherwise reports a contact while a gap remains and aims at a separation
 // speed e*v - gap/dt, so the ball arrives too slowly to bounce (restitution lost, or random with
 // where in the step the contact falls). Such contacts are solved once the bodies overlap; the
 // roll's time steps keep the overlap small (physics_scene.h, RollTimeStep). A pair's threshold
@@ -38,12 +40,18 @@ void MakeContactsNonSpeculative(btCollisionObject& object);
 // The kicking robot's links strike the ball. Bullet's multibody contacts have no split impulse:
 // an overlap is pushed apart by Baumgarte's 0.2 * overlap / dt on top of the bounce, so the ball
 // left the foot up to 20 % faster or slower depending on where in the step the contact fell
-// (a launch spread of about 0.04 m/s that no physical cause made). Their contacts get no
-// positional correction at all: the overlap lasts the few milliseconds of the strike.
-void MakeStriking(btCollisionObject& object);
+// (a launch spread of about 0.04 m/s that no physical cause made). Their contacts with the
+// ball get no positional correction at all: the overlap lasts the few milliseconds of the
+// strike. Their other contacts (a robot standing on its own feet: carpet, posts, nets,
+// obstacles) keep Bullet's Baumgarte correction and speculative contacts, which hold a sole
+// resting on the carpet (without them a standing NAO crept 16 mm and tilted 2.8 deg in 2 s),
+// and get the friction and restitution of `robot_contact`, which must outlive the world's
+// steps (models/physics_params.h, RobotContactParams).
+struct Material;
+void MakeStriking(btCollisionObject& object, const Material* robot_contact = nullptr);
 
-// Collision groups: the kicking robot touches only the ball (its base is fixed, so carpet
-// contacts would only fight the motors).
+// Collision groups: statics touch the ball and the robot; a fixed-base kicking robot touches
+// only the ball (carpet contacts would only fight the motors), a floating one everything.
 enum CollisionGroup : int {
   kGroupStatic = 1 << 0,
   kGroupBall = 1 << 1,
@@ -98,7 +106,7 @@ class BulletWorld {
  private:
   // Declaration order is destruction order reversed: the world goes first.
   std::unique_ptr<btCollisionConfiguration> config_;
-  std::unique_ptr<btCollisionDispatcher> dispatcher_;
+  std::unique_ptr<btCollisionDispatcher> dispatcher_;  // a ContactDispatcher
   std::unique_ptr<btBroadphaseInterface> broadphase_;
   std::unique_ptr<btConstraintSolver> solver_;
   std::vector<std::unique_ptr<btCollisionShape>> shapes_;

@@ -4,7 +4,10 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
+#include <type_traits>
 
 #include "physics/bullet_convert.h"
 #include "physics/joint_motor.h"
@@ -38,7 +41,10 @@ void SetUpLink(btMultiBody& body, const RobotModel& model, const std::vector<Rig
 }
 
 void AddColliders(BulletWorld& world, btMultiBody& body, const RobotModel& model,
-                  const std::vector<RigidGroup>& groups, const PhysicsParams& params) {
+                  const std::vector<RigidGroup>& groups, const PhysicsParams& params,
+                  const Material& own_contact) {
+  const bool floating = params.robot.base == RobotBase::kFloating;
+  const int mask = floating ? (kGroupBall | kGroupStatic) : kGroupBall;
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const RigidGroup& group = groups[g];
     auto* compound = world.Own(std::make_unique<btCompoundShape>());
@@ -56,8 +62,9 @@ void AddColliders(BulletWorld& world, btMultiBody& body, const RobotModel& model
     auto collider = std::make_unique<btMultiBodyLinkCollider>(&body, index);
     collider->setCollisionShape(shape);
     collider->setUserIndex(static_cast<int>(BodyTag::kKicker));
-    MakeContactsNonSpeculative(*collider);
-    MakeStriking(*collider);
+    // Its contacts with the ball are non-speculative through the world's dispatcher; with the
+    // carpet they stay speculative (bullet_world.h).
+    MakeStriking(*collider, &own_contact);
     collider->setRestitution(params.materials.restitution.foot);
     collider->setFriction(params.materials.friction.foot);
     btMultiBodyLinkCollider* raw = collider.get();
@@ -66,11 +73,35 @@ void AddColliders(BulletWorld& world, btMultiBody& body, const RobotModel& model
     } else {
       body.getLink(index).m_collider = raw;
     }
-    world.AddCollider(std::move(collider), kGroupKicker, anchor_only ? 0 : kGroupBall);
+    world.AddCollider(std::move(collider), kGroupKicker, anchor_only ? 0 : mask);
+  }
+}
+
+template <typename Names>
+void MarkMoving(const RobotModel& model, const Names& names, std::vector<bool>& moving) {
+  for (const auto& item : names) {
+    const std::string* name = nullptr;
+    if constexpr (std::is_same_v<std::decay_t<decltype(item)>, std::string>) {
+      name = &item;
+    } else {
+      name = &item.first;
+    }
+    const std::optional<int> j = model.FindJoint(*name);
+    assert(j.has_value());  // LoadRobot checked them against the model
+    moving[*j] = true;
   }
 }
 
 }  // namespace
+
+std::vector<bool> KickJoints(const Robot& robot, const KickMotion& motion, RobotBase base) {
+  std::vector<bool> moving = MovingJoints(robot.model, motion.joints);
+  if (base == RobotBase::kFloating) {
+    MarkMoving(robot.model, motion.balance.offsets_rad, moving);
+    MarkMoving(robot.model, robot.spec.support_joints, moving);
+  }
+  return moving;
+}
 
 std::vector<bool> MovingJoints(const RobotModel& model, std::span<const std::string> names) {
   std::vector<bool> moving(model.joints.size(), names.empty());
@@ -87,19 +118,22 @@ KickingRobot::KickingRobot(BulletWorld& world, const Robot& robot,
                            const std::vector<bool>& moving, const PhysicsParams& params)
     : robot_(robot),
       motors_params_(params.motors),
+      own_contact_{params.robot.restitution, params.robot.friction},
       standing_q_(q_rad.begin(), q_rad.end()),
       groups_(GroupRigidly(robot.model, q_rad, moving)) {
   const RobotModel& model = robot.model;
+  pose_C_root_ = groups_[0].inertia.pose_L_C.inverse();
   const int links = static_cast<int>(groups_.size()) - 1;
-  auto body = std::make_unique<btMultiBody>(links, groups_[0].mass_kg,
-                                            ToBt(groups_[0].inertia.diagonal_kgm2), true, false);
+  const bool fixed_base = params.robot.base == RobotBase::kFixed;
+  auto body = std::make_unique<btMultiBody>(
+      links, groups_[0].mass_kg, ToBt(groups_[0].inertia.diagonal_kgm2), fixed_base, false);
   body->setBaseWorldTransform(ToBt(Eigen::Isometry3d(pose_F_root * groups_[0].inertia.pose_L_C)));
   for (int g = 1; g <= links; ++g) SetUpLink(*body, model, groups_, g);
   body->finalizeMultiDof();
   body->setHasSelfCollision(false);
   body_ = world.AddMultiBody(std::move(body));
   for (int g = 1; g <= links; ++g) body_->setJointPos(g - 1, q_rad[groups_[g].joint]);
-  AddColliders(world, *body_, model, groups_, params);
+  AddColliders(world, *body_, model, groups_, params, own_contact_);
   btAlignedObjectArray<btQuaternion> scratch_q;
   btAlignedObjectArray<btVector3> scratch_m;
   body_->forwardKinematics(scratch_q, scratch_m);
@@ -131,9 +165,70 @@ void KickingRobot::FollowMotion(const KickMotion& motion, double t_s, double spe
   for (std::size_t k = 0; k < motion_joint_index_.size(); ++k) {
     LineLimitedJointMotor* motor = motors_[motion_joint_index_[k]];
     assert(motor != nullptr);  // the robot was built with the motion's joints moving
-    motor->setPositionTarget(q_scratch_[k], motors_params_.position_gain);
+    double offset_rad = 0.0;
+    if (balance_share_ > 0.0) {
+      for (const auto& [name, offset] : motion.balance.offsets_rad) {
+        if (name == motion.joints[k]) offset_rad = balance_share_ * offset;
+      }
+    }
+    // A target the offset would push past a limit stops at it (the side kicks swing the
+    // kicking leg's hip roll to its limit; shifted, they reach it earlier).
+    const RobotJoint& joint = robot_.model.joints[motion_joint_index_[k]];
+    const double target_rad =
+        offset_rad == 0.0 ? q_scratch_[k]
+                          : std::clamp(q_scratch_[k] + offset_rad, joint.lower_rad, joint.upper_rad);
+    motor->setPositionTarget(target_rad, motors_params_.position_gain);
     motor->setVelocityTarget(qdot_scratch_[k] * speed_factor, motors_params_.velocity_gain);
   }
+}
+
+void KickingRobot::ShiftWeight(const KickMotion& motion, double t_s) {
+  const KickBalance& balance = motion.balance;
+  balance_share_ = balance.Share(t_s);
+  // d/dt (3u^2 - 2u^3) = 6 u (1 - u) / shift_s while the shift lasts.
+  const double u = balance.Has() ? std::clamp(t_s / balance.shift_s, 0.0, 1.0) : 1.0;
+  const double rate_per_s = balance.Has() ? 6.0 * u * (1.0 - u) / balance.shift_s : 0.0;
+  for (const auto& [name, offset_rad] : balance.offsets_rad) {
+    const int j = *robot_.model.FindJoint(name);
+    LineLimitedJointMotor* motor = motors_[j];
+    assert(motor != nullptr);  // built with KickJoints on a floating base
+    motor->setPositionTarget(standing_q_[j] + balance_share_ * offset_rad,
+                             motors_params_.position_gain);
+    motor->setVelocityTarget(rate_per_s * offset_rad, motors_params_.velocity_gain);
+  }
+}
+
+KickerState KickingRobot::State(const Eigen::Isometry3d& pose_F_start) const {
+  KickerState state;
+  const Eigen::Isometry3d pose_R0_F = pose_F_start.inverse();
+  state.pose_R0_base = pose_R0_F * ToEigen(body_->getBaseWorldTransform());
+  state.v_R0_base = pose_R0_F.linear() * ToEigen(body_->getBaseVel());
+  state.w_R0_base = pose_R0_F.linear() * ToEigen(body_->getBaseOmega());
+  for (int i = 0; i < body_->getNumLinks(); ++i) {
+    state.q_rad.push_back(body_->getJointPos(i));
+    state.qdot_radps.push_back(body_->getJointVel(i));
+  }
+  return state;
+}
+
+void KickingRobot::Restore(const KickerState& state, const Eigen::Isometry3d& pose_F_start) {
+  assert(static_cast<int>(state.q_rad.size()) == body_->getNumLinks());
+  body_->setBaseWorldTransform(ToBt(Eigen::Isometry3d(pose_F_start * state.pose_R0_base)));
+  body_->setBaseVel(ToBt(Eigen::Vector3d(pose_F_start.linear() * state.v_R0_base)));
+  body_->setBaseOmega(ToBt(Eigen::Vector3d(pose_F_start.linear() * state.w_R0_base)));
+  for (int i = 0; i < body_->getNumLinks(); ++i) {
+    body_->setJointPos(i, state.q_rad[i]);
+    body_->setJointVel(i, state.qdot_radps[i]);
+  }
+  btAlignedObjectArray<btQuaternion> scratch_q;
+  btAlignedObjectArray<btVector3> scratch_m;
+  body_->forwardKinematics(scratch_q, scratch_m);
+  body_->updateCollisionObjectWorldTransforms(scratch_q, scratch_m);
+}
+
+double KickingRobot::TiltRad() const {
+  const Eigen::Isometry3d pose_F_root = ToEigen(body_->getBaseWorldTransform()) * pose_C_root_;
+  return std::acos(std::clamp(pose_F_root.linear()(2, 2), -1.0, 1.0));
 }
 
 std::vector<double> KickingRobot::JointPositions() const {

@@ -41,25 +41,49 @@ bool RollsFreely(const BallState& ball, double radius_m) {
 
 PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const KickMotion& motion,
                       const Eigen::Isometry3d& pose_F_root, double speed_factor,
-                      const BallState& ball_start, BallMonitor& monitor) {
+                      const BallState& ball_start, BallMonitor& monitor,
+                      const SettledStance* settled) {
   const StepParams& steps = scene.params.steps;
   const double dt = steps.kick_time_step_s;
   const double radius = scene.field->ball.radius_m;
+  const RobotBase base = scene.params.robot.base;
+  const bool floating = base == RobotBase::kFloating;
   BulletWorld world(BulletWorld::Kind::kMultiBody, SolverOf(steps));
   AddStatics(world, scene);
   btRigidBody* ball = AddBall(world, scene, ball_start);
   KickingRobot robot(world, *scene.robot, pose_F_root, scene.robot->StandingPositions(motion),
-                     MovingJoints(scene.robot->model, motion.joints), scene.params);
+                     KickJoints(*scene.robot, motion, base), scene.params);
+  if (floating && motion.balance.Has()) {
+    if (settled != nullptr) robot.Restore(settled->state, pose_F_root);
+    robot.ShiftWeight(motion, motion.balance.shift_s);  // held through the motion
+  }
   const double motion_end_s = motion.DurationS() / speed_factor;
+  // A floating robot must still stand this long after its motion.
+  const double stand_end_s = motion_end_s + (floating ? motion.balance.settle_s : 0.0);
   const double deceleration = scene.params.carpet.rolling_deceleration_mps2;
   PhaseEnd end;
   end.ball = ball_start;
   double last_touch_s = 0.0;
   for (double t = 0.0; t < steps.max_kick_time_s;) {
     robot.FollowMotion(motion, t, speed_factor);
-    carpet.ApplyRollingResistance(*ball, radius, dt);
+    if (!end.launched) carpet.ApplyRollingResistance(*ball, radius, dt);
     world.world().stepSimulation(dt, 0, dt);
     t += dt;
+    if (floating) {
+      end.max_tilt_rad = std::max(end.max_tilt_rad, robot.TiltRad());
+      if (end.max_tilt_rad > scene.params.robot.fall_tilt_rad) {
+        end.fell = true;
+        if (!end.launched) {  // the ball goes on from where the fall left it
+          end.ball = ReadBall(*ball);
+          end.t_s = t;
+        }
+        break;
+      }
+    }
+    if (end.launched) {  // a floating robot standing through the rest of its motion
+      if (t >= stand_end_s) break;
+      continue;
+    }
     end.ball = ReadBall(*ball);
     end.t_s = t;
     const StepContacts contacts = ContactsOf(*world.world().getDispatcher(), *ball);
@@ -76,9 +100,12 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
     if (end.touched && t - last_touch_s >= kReleaseTimeS && (out_of_reach || t > motion_end_s) &&
         RollsFreely(end.ball, radius)) {
       end.launched = true;
-      break;
+      if (!floating || t >= stand_end_s) break;
+      // The roll phase takes the ball from here; the robot stands on without it.
+      world.world().removeRigidBody(ball);
+      continue;
     }
-    if (!end.touched && t > motion_end_s + kMissGraceS) break;
+    if (!end.touched && t > motion_end_s + kMissGraceS && (!floating || t >= stand_end_s)) break;
   }
   return end;
 }

@@ -2,7 +2,12 @@
 //
 // Kick phase: the full world with the articulated kicking robot, stepped at the kick time step,
 // until the ball has left the robot and rolls without sliding on the carpet (it has "launched"),
-// the motion is over without a touch, or the phase's time limit is reached.
+// the motion is over without a touch, or the phase's time limit is reached. A robot on a
+// floating base starts from its kick's settled weight shift (settled_stance.h) and is watched
+// until its motion has ended and it has stood for the balance's settle time after it, within
+// the phase's time limit (the ball, once launched, is handed to the roll phase as it was at the
+// launch): the trial records whether its torso tilted past the fall tilt at any time, and a
+// fall ends the phase at once.
 // Roll phase: a light world without the kicking robot (carpet, goals, obstacle robots, ball),
 // stepped with RollTimeStep, until the ball rests, leaves the carpet (its edge stops it) or the
 // roll's time limit is reached.
@@ -27,12 +32,17 @@ struct PhaseEnd {
   bool settled = false;   // roll: the ball rests
   bool touched = false;   // kick: the robot touched the ball
   bool launched = false;  // kick: it left the robot and rolls without sliding
+  bool fell = false;      // kick: the robot's torso tilted past the fall tilt (floating base)
   double t_first_touch_s = 0.0;
+  double max_tilt_rad = 0.0;  // kick: the torso's largest tilt (floating base)
 };
 
+// `settled`: the motion's settled weight shift on a floating base (null: the robot starts from
+// its stance).
 PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const KickMotion& motion,
                       const Eigen::Isometry3d& pose_F_root, double speed_factor,
-                      const BallState& ball, BallMonitor& monitor);
+                      const BallState& ball, BallMonitor& monitor,
+                      const SettledStance* settled = nullptr);
 
 // Called after every roll step with the world's dispatcher (its contact manifolds) and the ball's
 // collision object: probes that need more than the ball's state (robot_impact.h).

@@ -1,5 +1,6 @@
 #include "physics/physics_runs.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/parallel_for.h"
@@ -35,6 +36,8 @@ TrialSummary Summarize(std::span<const TrialResult> results) {
     ++s.first_contacts[static_cast<int>(r.outcome.first_contact)];
     s.launched += r.launched;
     s.settled += r.settled;
+    s.fell += r.fell;
+    s.max_tilt_rad = std::max(s.max_tilt_rad, r.max_tilt_rad);
     s.placement_redrawn += r.draw.placement_redraws > 0;
     s.placement_redraws += r.draw.placement_redraws;
     rest_x.push_back(r.outcome.p_F_rest.x());

@@ -41,6 +41,8 @@ struct TrialSummary {
   int touched = 0;
   int launched = 0;
   int settled = 0;
+  int fell = 0;                  // the robot fell (floating base)
+  double max_tilt_rad = 0.0;     // the torso's largest tilt over all trials (floating base)
   // Trials whose first placement draw put the ball inside the robot, and the rejected draws in
   // all (trial.h: such draws are drawn again).
   int placement_redrawn = 0;

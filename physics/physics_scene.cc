@@ -66,13 +66,16 @@ void AddGoal(BulletWorld& world, const PhysicsScene& scene, double side) {
 
 PhysicsScene MakePhysicsScene(const FieldSpec& field, const PhysicsParams& params,
                               const Robot* robot, const std::vector<Obstacle>& obstacles,
-                              const Vec2& p_F_ball) {
+                              const Vec2& p_F_ball, const SettledStances* settled) {
   PhysicsScene scene;
   scene.field = &field;
   scene.params = params;
   scene.lines = FieldLines::Of(field);
   scene.robot = robot;
-  if (robot != nullptr) scene.standing_q_rad = robot->StandingPositions();
+  if (robot != nullptr) {
+    scene.standing_q_rad = robot->StandingPositions();
+    scene.settled_stances = settled != nullptr ? *settled : SettleStances(*robot, params);
+  }
   const GoalSpec& g = field.goal;
   const double r = field.ball.radius_m;
   const double t = params.materials.net_thickness_m;

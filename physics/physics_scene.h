@@ -8,6 +8,7 @@
 // on the coarse model's net lines (y = +-post_centre_y, x = s * (post_centre_x + net_depth)).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "models/field_lines.h"
@@ -15,6 +16,7 @@
 #include "models/physics_params.h"
 #include "models/robot_spec.h"
 #include "models/situation.h"
+#include "physics/settled_stance.h"
 
 namespace foresight {
 
@@ -34,6 +36,9 @@ struct PhysicsScene {
   std::vector<Pose2> obstacle_poses;   // robots standing still, root frame on the carpet
   std::vector<NearZone> near_zones;    // goals and obstacles, grown by the ball's radius
   std::vector<double> standing_q_rad;  // the robot's standing joint positions
+  // Per robot motion, on a floating base, the stance after the motion's weight shift
+  // (settled_stance.h); empty for a fixed base and for motions without a balance.
+  SettledStances settled_stances;
   // The carpet ends (field.carpet_length_m x carpet_width_m) where boards stop a real ball: a
   // trial ends when the ball's centre leaves it, the ball resting there (it crossed a line, so
   // it is out or in a goal already). The engine checks roll on an unbounded carpet instead.
@@ -45,9 +50,11 @@ bool WithinCarpet(const PhysicsScene& scene, const Vec2& p_F);
 
 // Builds the scene of a situation: the obstacles stand where the situation puts them, facing
 // the ball. `robot` may be null when the situation has no obstacles and no kick is simulated.
+// The robot's settled stances (floating base) are computed here unless `settled` gives them
+// (SettleStances of the same robot and params: a caller building many scenes settles once).
 PhysicsScene MakePhysicsScene(const FieldSpec& field, const PhysicsParams& params,
                               const Robot* robot, const std::vector<Obstacle>& obstacles,
-                              const Vec2& p_F_ball);
+                              const Vec2& p_F_ball, const SettledStances* settled = nullptr);
 
 // Adds carpet, goals and obstacle robots to a world.
 void AddStatics(BulletWorld& world, const PhysicsScene& scene);

@@ -7,7 +7,8 @@ namespace foresight {
 
 std::unique_ptr<PhysicsSetup> LoadPhysicsSetup(Situation situation,
                                                const std::filesystem::path& models_dir,
-                                               const std::filesystem::path& physics_file) {
+                                               const std::filesystem::path& physics_file,
+                                               std::optional<RobotBase> base) {
   auto setup = std::make_unique<PhysicsSetup>();
   setup->situation = std::move(situation);
   const Situation& s = setup->situation;
@@ -16,6 +17,7 @@ std::unique_ptr<PhysicsSetup> LoadPhysicsSetup(Situation situation,
                             ? DataFile(models_dir, DataFolder::kPhysics, s.field.name)
                             : physics_file;
   setup->params = LoadPhysicsParams(setup->physics_file);
+  if (base) setup->params.robot.base = *base;
   setup->state = DrawnState{s.state.robot, s.state.MeanBallInField()};
   setup->simulator.emplace(
       MakePhysicsScene(s.field, setup->params, &setup->robot, s.obstacles, setup->state.p_F_ball),

@@ -28,10 +28,12 @@ struct PhysicsSetup {
   PhysicsSetup& operator=(const PhysicsSetup&) = delete;
 };
 
-// `physics_file` empty: MODELS/physics/<field>.json. Throws InputError on bad files.
+// `physics_file` empty: MODELS/physics/<field>.json; `base` replaces the file's robot base
+// (`--base`). Throws InputError on bad files.
 std::unique_ptr<PhysicsSetup> LoadPhysicsSetup(Situation situation,
                                                const std::filesystem::path& models_dir,
-                                               const std::filesystem::path& physics_file = {});
+                                               const std::filesystem::path& physics_file = {},
+                                               std::optional<RobotBase> base = {});
 
 // InputError "WHERE: kicks: robot 'R' has no motion for kick 'K'" unless the robot has a motion
 // for every kick of the situation's model (for runs that may execute any of them).

@@ -17,8 +17,10 @@ double ClippedNormal(RandomStream& stream) {
   return std::clamp(stream.NextNormal(), -TrialVariation::kClipSigmas, TrialVariation::kClipSigmas);
 }
 
-// A missed ball is what went wrong first: it then lies still, so it also settles.
-OutcomeStatus StatusOf(bool touched, bool settled) {
+// A fall is what went wrong first (a fallen robot may also have missed); a missed ball then
+// lies still, so it also settles.
+OutcomeStatus StatusOf(bool fell, bool touched, bool settled) {
+  if (fell) return OutcomeStatus::kFell;
   if (!touched) return OutcomeStatus::kMissed;
   return settled ? OutcomeStatus::kOk : OutcomeStatus::kNotSettled;
 }
@@ -89,10 +91,13 @@ TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request) 
   const double radius = scene.field->ball.radius_m;
   BallMonitor monitor(scene.lines, p_F_ball, request.record_trace);
   const BallState ball = RollingBall(p_F_ball, radius, 0.0, 0.0);
-  const PhaseEnd kick =
-      RunKickPhase(scene, carpet, motion, pose_F_root, d.speed_factor, ball, monitor);
+  const std::optional<SettledStance>& settled = scene.settled_stances[request.motion_index];
+  const PhaseEnd kick = RunKickPhase(scene, carpet, motion, pose_F_root, d.speed_factor, ball,
+                                     monitor, settled ? &*settled : nullptr);
   result.touched = kick.touched;
   result.launched = kick.launched;
+  result.fell = kick.fell;
+  result.max_tilt_rad = kick.max_tilt_rad;
   const double t_zero = kick.touched ? kick.t_first_touch_s : kick.t_s;
   result.t_first_touch_s = t_zero;
   if (kick.touched) {
@@ -105,7 +110,7 @@ TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request) 
   const PhaseEnd roll = RunRollPhase(scene, carpet, kick.ball, kick.t_s, monitor);
   result.settled = roll.settled;
   result.outcome = Finish(monitor, roll, t_zero);
-  result.outcome.status = StatusOf(result.touched, result.settled);
+  result.outcome.status = StatusOf(result.fell, result.touched, result.settled);
   result.trace = std::move(monitor.trace());
   return result;
 }
@@ -123,7 +128,7 @@ TrialResult RunRollTrial(const PhysicsScene& scene, const BallState& start, std:
   result.p_F_launch = start.Planar();
   result.settled = roll.settled;
   result.outcome = Finish(monitor, roll, 0.0);
-  result.outcome.status = StatusOf(true, result.settled);
+  result.outcome.status = StatusOf(false, true, result.settled);
   result.trace = std::move(monitor.trace());
   return result;
 }

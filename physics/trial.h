@@ -46,6 +46,8 @@ struct TrialResult {
   bool touched = false;   // the robot hit the ball
   bool launched = false;  // ... and it left the foot rolling without sliding within the kick phase
   bool settled = false;   // it came to rest within the time limit
+  bool fell = false;      // the robot fell during the kick (floating base)
+  double max_tilt_rad = 0.0;  // the robot torso's largest tilt in the kick (floating base)
   // The launch: the ball's speed and direction once it rolls freely after the kick. The
   // direction is in the intended robot frame (the robot's heading after the turn around the
   // ball, before the placement error), so placement errors show up in it as they would on a

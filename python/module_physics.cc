@@ -26,7 +26,7 @@ py::array_t<T> Column(const std::vector<TrialResult>& trials, Field&& field) {
 py::dict Simulate(const std::string& situation, const std::string& kick, const py::object& trials,
                   const py::object& seed, const py::object& rotation_deg,
                   const py::object& threads, const py::object& kicks, const py::object& physics,
-                  const std::optional<std::string>& models) {
+                  const py::object& base, const std::optional<std::string>& models) {
   SimulateOptions options;
   options.situation_file = situation;
   options.kick = kick;
@@ -39,6 +39,7 @@ py::dict Simulate(const std::string& situation, const std::string& kick, const p
   set(options.threads, threads);
   set(options.kicks_file, kicks);
   set(options.physics_file, physics);
+  set(options.base, base);
   std::vector<TrialResult> r;
   {
     py::gil_scoped_release release;
@@ -56,6 +57,8 @@ py::dict Simulate(const std::string& situation, const std::string& kick, const p
   out["touched"] = Column<bool>(r, [](T t) { return t.touched; });
   out["launched"] = Column<bool>(r, [](T t) { return t.launched; });
   out["settled"] = Column<bool>(r, [](T t) { return t.settled; });
+  out["fell"] = Column<bool>(r, [](T t) { return t.fell; });
+  out["max_tilt_deg"] = Column<double>(r, [](T t) { return t.max_tilt_rad * kRadToDeg; });
   out["launch_speed_mps"] = Column<double>(r, [](T t) { return t.launch_speed_mps; });
   out["launch_direction_deg"] =
       Column<double>(r, [](T t) { return t.launch_direction_rad * kRadToDeg; });
@@ -72,7 +75,7 @@ py::dict Simulate(const std::string& situation, const std::string& kick, const p
     categories.emplace_back(CategoryName(static_cast<Category>(c)));
   for (int c = 0; c <= static_cast<int>(Contact::kRobot); ++c)
     contacts.emplace_back(ContactName(static_cast<Contact>(c)));
-  for (int s = 0; s <= static_cast<int>(OutcomeStatus::kNotSettled); ++s)
+  for (int s = 0; s < kOutcomeStatusCount; ++s)
     statuses.emplace_back(OutcomeStatusName(static_cast<OutcomeStatus>(s)));
   out["category_names"] = categories;
   out["contact_names"] = contacts;
@@ -87,11 +90,12 @@ void AddPhysicsFunctions(py::module_& m) {
         py::arg("trials") = py::none(), py::arg("seed") = py::none(),
         py::arg("rotation_deg") = py::none(), py::arg("threads") = py::none(),
         py::arg("kicks") = py::none(), py::arg("physics") = py::none(),
-        py::arg("models") = py::none(),
+        py::arg("base") = py::none(), py::arg("models") = py::none(),
         "Physics trials of one kick (`foresight simulate`): a dict of NumPy arrays, one entry "
         "per trial (rest_x_m, rest_y_m in F; category, first_contact, status as codes into "
         "category_names, contact_names, status_names; launch_speed_mps, launch_direction_deg in "
-        "the intended robot frame; the drawn perturbations).");
+        "the intended robot frame; fell and max_tilt_deg on a floating base (base='floating'); "
+        "the drawn perturbations).");
 }
 
 }  // namespace foresight::python

@@ -250,7 +250,7 @@ Outcome ReadShardOutcome(const ShardValue& value) {
   o.category = ShardEnum<Category>(value.At(2), kCategoryCount);
   o.first_contact = ShardEnum<Contact>(value.At(3), static_cast<int>(Contact::kRobot) + 1);
   o.time_s = value.At(4).Double();
-  o.status = ShardEnum<OutcomeStatus>(value.At(5), static_cast<int>(OutcomeStatus::kNotSettled) + 1);
+  o.status = ShardEnum<OutcomeStatus>(value.At(5), kOutcomeStatusCount);
   return o;
 }
 

@@ -69,6 +69,7 @@ class ShardValue {
   bool Bool() const;
   std::string String() const;
   bool IsNull() const { return value_->is_null(); }
+  bool IsString() const { return value_->is_string(); }
   [[noreturn]] void Fail(const std::string& problem) const;
 
  private:

@@ -2,6 +2,7 @@
 // twice in one namespace with different contents is a compile error here, not a silent
 // one-definition-rule violation. scripts/check_layers.sh fails when a header is missing.
 #include "app/ablations_command.h"
+#include "app/base_flag.h"
 #include "app/calibrate_command.h"
 #include "app/cbr_atlas.h"
 #include "app/cbr_command.h"
@@ -135,6 +136,8 @@
 #include "physics/robot_impact.h"
 #include "physics/robot_kinematics.h"
 #include "physics/robot_shapes.h"
+#include "physics/kicker_state.h"
+#include "physics/settled_stance.h"
 #include "physics/trial.h"
 #include "planner/action_evaluator.h"
 #include "planner/ball_roll.h"

@@ -68,6 +68,7 @@ Json KickJson(const CalibrationRun& run, const CalibratedKick& kick) {
   Json j{{"name", c.kick},
          {"observations", c.observations},
          {"missed", kick.missed},
+         {"fell", kick.fell},
          {"placement_redrawn", PlacementRedrawn(kick)}};
   if (const auto i = run.base.Find(c.kick)) j["committed"] = KickSpecJson(run.base.kicks[*i]);
   j["speed"] = Json{{"mean_mps", c.speed.mean},
@@ -128,6 +129,10 @@ std::vector<std::string> CalibrationWarnings(const CalibrationRun& run) {
     }
     if (kick.missed > 0) {
       warnings.push_back(c.kick + ": the robot missed the ball in " + std::to_string(kick.missed) +
+                         " trials; they are not in the fit");
+    }
+    if (kick.fell > 0) {
+      warnings.push_back(c.kick + ": the robot fell in " + std::to_string(kick.fell) +
                          " trials; they are not in the fit");
     }
   }

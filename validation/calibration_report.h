@@ -22,6 +22,7 @@ struct CalibratedKick {
   std::vector<KickObservation> observations;
   std::vector<TrialDraw> draws;
   int missed = 0;  // physics trials in which the robot did not touch the ball
+  int fell = 0;    // physics trials in which the robot fell (not in the fit either)
   std::optional<MotionClearance> clearance;  // physics only: the motion's lowest point
 };
 

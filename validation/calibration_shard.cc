@@ -1,5 +1,7 @@
 #include "validation/calibration_shard.h"
 
+#include <algorithm>
+
 namespace foresight {
 
 namespace {
@@ -60,7 +62,8 @@ nlohmann::json CalibrationShardResults(const PhysicsCalibration& calibration, co
         per_kick.push_back(TrialJson(kick.observations[n], kick.draws[n]));
         ++next[j];
       } else {
-        per_kick.push_back(nullptr);  // missed the ball
+        const bool fell = std::binary_search(kick.fell_trials.begin(), kick.fell_trials.end(), trial);
+        per_kick.push_back(fell ? nlohmann::json("fell") : nlohmann::json(nullptr));  // or missed
       }
     }
     items.push_back({{"trial", trial}, {"kicks", per_kick}});
@@ -80,6 +83,10 @@ void MergeCalibrationShards(PhysicsCalibration& plan, int trials,
     for (std::size_t j = 0; j < plan.kicks.size(); ++j) {
       if (kicks.At(j).IsNull()) {
         ++plan.kicks[j].missed;
+      } else if (kicks.At(j).IsString()) {
+        if (kicks.At(j).String() != "fell") kicks.At(j).Fail("must be a trial, null or \"fell\"");
+        ++plan.kicks[j].fell;
+        plan.kicks[j].fell_trials.push_back(trial);
       } else {
         ReadTrial(kicks.At(j), plan.kicks[j], trial);
       }

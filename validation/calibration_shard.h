@@ -1,8 +1,8 @@
 // Physics calibration in shards (issue 17): an item is a trial index; shard I plays trials i with
 // i mod N = I of every kick (each kick keeps its own seed stream, so a trial's result does not
 // depend on the split). Its result is, per kick, the observation (launch, roll distance, the
-// rolling samples of the deceleration fit) and the drawn perturbations, or null when the robot
-// missed the ball; numbers written exactly, so the merged fit has the bytes of an unsharded run.
+// rolling samples of the deceleration fit) and the drawn perturbations, null when the robot
+// missed the ball, or "fell" when it fell; numbers written exactly, so the merged fit has the bytes of an unsharded run.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -175,6 +175,7 @@ PhysicsCalibrationSettings CalibrationSettingsOf(const std::string& robot, const
   settings.kicks_file = ResolveModelFile(kicks, DataFolder::kKicks, spec.dir, models);
   settings.trials = trials;
   settings.threads = threads;
+  settings.base = spec.base;
   return settings;
 }
 
@@ -197,9 +198,10 @@ CheckResult Run(const KickDirectionCheck& c, const CheckSpec& spec,
   const double mean = touched > 0 ? MeanDirection(kick.observations) : 0.0;
   const double expected = physics.model.kicks[kick.kick_index].direction_rad;
   const double error_deg = std::abs(WrapAngle(mean - expected)) * kRadToDeg;
-  const bool ok = kick.missed == 0 && error_deg <= c.max_error_deg;
+  const bool ok = kick.missed == 0 && kick.fell == 0 && error_deg <= c.max_error_deg;
   return Result(ok, std::to_string(touched) + " of " + std::to_string(settings.trials) +
-                        " trials touched the ball; mean direction " + Fixed(mean * kRadToDeg, 1) +
+                        " trials touched the ball standing, " + std::to_string(kick.fell) +
+                        " fell; mean direction " + Fixed(mean * kRadToDeg, 1) +
                         " deg, model " + Fixed(expected * kRadToDeg, 1) + " deg (off by " +
                         Fixed(error_deg, 1) + ", limit " + Fixed(c.max_error_deg, 1) + ")");
 }
@@ -243,6 +245,7 @@ CheckResult Run(const FidelityFloorCheck& c, const CheckSpec& spec,
   overrides.kicks_file = kicks;
   const FidelitySet set = LoadFidelitySet(c.situations, models, overrides);
   FidelitySettings settings;
+  settings.base = spec.base;
   settings.physics_trials = c.trials;
   settings.converged_samples = 500;
   settings.threads = threads;

@@ -138,6 +138,7 @@ struct CheckSpec {
   CheckKind kind;
   std::string where;          // "FILE: checks[i]" for messages
   std::filesystem::path dir;  // the spec file's folder (file references are relative to it)
+  std::optional<RobotBase> base;  // `check --base`: the kicking robot's base in every check
 };
 
 // Runs one check (threads: for the physics trials); InputError on files that do not load.

@@ -66,7 +66,7 @@ std::vector<StrategyAgreement> CompareDecisions(ActionEvaluator& coarse,
 SituationFidelity RunOne(const FidelityCase& fc, const std::vector<double>& rotations,
                          const std::filesystem::path& models, const FidelitySettings& settings,
                          int coarse_samples) {
-  auto setup = LoadPhysicsSetup(fc.situation, models, settings.physics_file);
+  auto setup = LoadPhysicsSetup(fc.situation, models, settings.physics_file, settings.base);
   const Situation& situation = setup->situation;
   RequireAllKickMotions(*setup, fc.file.string());
   const CoarsePlanner planner(situation);

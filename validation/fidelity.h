@@ -18,10 +18,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "common/shard.h"
+#include "models/physics_params.h"
 #include "planner/decision.h"
 #include "stats/statistics.h"
 #include "validation/fidelity_set.h"
@@ -36,6 +38,7 @@ struct FidelitySettings {
   int threads = 0;
   double confidence = 0.95;
   std::filesystem::path physics_file;      // empty: MODELS/physics/<field>.json
+  std::optional<RobotBase> base;           // replaces the physics files' robot base
   std::function<void(int, int)> progress;  // (situations done, total)
   // Only situation i with shard.Owns(i) runs (issue 17); the result then holds those, in set
   // order, without the aggregates: validation/fidelity_shard.h merges the shards.

@@ -41,11 +41,11 @@ ActionEvaluation ReadEvaluation(const ShardValue& v) {
   return e;
 }
 
-nlohmann::json StatusJson(const StatusCounts& s) { return {s.missed, s.not_settled}; }
+nlohmann::json StatusJson(const StatusCounts& s) { return {s.missed, s.not_settled, s.fell}; }
 
 StatusCounts ReadStatus(const ShardValue& v) {
-  if (v.Size() != 2) v.Fail("must be [missed, not_settled]");
-  return {v.At(0).Int(), v.At(1).Int()};
+  if (v.Size() != 3) v.Fail("must be [missed, not_settled, fell]");
+  return {v.At(0).Int(), v.At(1).Int(), v.At(2).Int()};
 }
 
 nlohmann::json MetricsJson(const ChoiceMetrics& m) {

@@ -16,7 +16,7 @@ std::unique_ptr<PhysicsSetup> LoadCalibrationSetup(const PhysicsCalibrationSetti
   SituationOverrides overrides;
   overrides.kicks_file = settings.kicks_file;
   auto setup = LoadPhysicsSetup(LoadSituation(situation_file, models, overrides), models,
-                                settings.physics_file);
+                                settings.physics_file, settings.base);
   if (setup->situation.kicks.robot != settings.robot) {
     throw InputError(situation_file.string() + ": kicks: the kick model is for robot '" +
                      setup->situation.kicks.robot + "', not '" + settings.robot + "'");
@@ -51,6 +51,12 @@ PhysicsKickTrials PlayKick(const PhysicsSetup& setup, const PhysicsCalibrationSe
   const std::vector<TrialResult> results = RunKickTrials(*setup.simulator, request);
   for (std::size_t k = 0; k < results.size(); ++k) {
     const TrialResult& trial = results[k];
+    // A kick is what the model describes when the robot stood through it and struck the ball.
+    if (trial.fell) {
+      ++kick.fell;
+      kick.fell_trials.push_back(settings.shard.Item(static_cast<int>(k)));
+      continue;
+    }
     if (!trial.touched) {
       ++kick.missed;
       continue;
@@ -86,6 +92,7 @@ PhysicsCalibration Calibration(const PhysicsCalibrationSettings& settings,
       ChooseKicks(settings.kick, KicksWithMotion(*setup), settings.kick_field,
                   "the motions of robot '" + settings.robot + "'");
   result.physics_file = setup->physics_file;
+  result.base = setup->params.robot.base;
   result.carpet_deceleration_mps2 = setup->params.carpet.rolling_deceleration_mps2;
   result.model = setup->situation.kicks;
   for (const std::string& name : kicks) {

@@ -28,6 +28,7 @@ struct PhysicsCalibrationSettings {
   std::filesystem::path situation_file;  // empty: MODELS/calibration/<robot>.json
   std::filesystem::path kicks_file;      // empty: the situation's kick model
   std::filesystem::path physics_file;    // empty: MODELS/physics/<field>.json
+  std::optional<RobotBase> base;         // replaces the physics file's robot base
   std::optional<TrialVariation> variation;  // replaces robot.json's trial_variation
   // Called before each kick's trials with the kick's name; what it returns sees (done, total).
   std::function<std::function<void(int, int)>(const std::string& kick)> progress;
@@ -43,13 +44,16 @@ struct PhysicsKickTrials {
   std::vector<KickObservation> observations;
   std::vector<TrialDraw> draws;
   std::vector<int> trials;  // the trial index of each observation
-  int missed = 0;
+  int missed = 0;  // the robot did not touch the ball (and did not fall)
+  int fell = 0;    // the robot fell (floating base); neither is an observation
+  std::vector<int> fell_trials;  // the trial index of each fall, ascending
   MotionClearance clearance;  // of the kick's motion (physics/motion_clearance.h)
 };
 
 struct PhysicsCalibration {
   std::filesystem::path situation_file;  // as loaded (the default filled in)
   std::filesystem::path physics_file;
+  RobotBase base = RobotBase::kFixed;     // the kicking robot's, as played
   double carpet_deceleration_mps2 = 0.0;  // the carpet's truth
   KickModel model;                        // the situation's kick model (after kicks_file)
   std::vector<PhysicsKickTrials> kicks;   // in the model's order

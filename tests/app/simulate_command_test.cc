@@ -64,6 +64,29 @@ TEST_F(SimulateCommandTest, SameSeedSameBytesWithOneThreadOrTwo) {
   EXPECT_GT(CountOf(csv_a, "\n3,"), 10);  // the fourth trial has a trajectory
 }
 
+// On a floating base the robot stands on its feet: the JSON names the base and says per trial
+// whether it fell and how far its torso tilted; the fixed base reports no tilt at all.
+TEST_F(SimulateCommandTest, JsonNamesTheBaseAndEachTrialsFallAndTilt) {
+  for (const char* base : {"fixed", "floating"}) {
+    std::vector<std::string> args = OpenGoal("forward", 2);
+    args.insert(args.end(), {"--json", "--base", base});
+    const RunResult r = Simulate(args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["base"], base);
+    EXPECT_EQ(j["summary"]["fell"], 0) << base;
+    for (const auto& trial : j["trials_detail"]) {
+      EXPECT_EQ(trial["fell"], false);
+      if (std::string(base) == "fixed") {
+        EXPECT_EQ(trial["max_tilt_deg"], 0.0);
+      } else {
+        EXPECT_GT(trial["max_tilt_deg"].get<double>(), 0.0);  // a standing robot sways
+        EXPECT_LT(trial["max_tilt_deg"].get<double>(), 20.0);
+      }
+    }
+  }
+}
+
 struct BadSimulate {
   std::string name;
   std::vector<std::string> extra;  // after --situation open_goal
@@ -98,7 +121,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadSimulate{"TextTrials", {"--kick", "forward", "--trials", "many"}, "got 'many'"},
         BadSimulate{"NanRotation", {"--kick", "forward", "--rotation", "nan"}, "--rotation"},
         BadSimulate{"MissingPhysics", {"--kick", "forward", "--physics", "nope.json"}, "nope.json"},
-        BadSimulate{"NegativeThreads", {"--kick", "forward", "--threads", "-1"}, "--threads"}),
+        BadSimulate{"NegativeThreads", {"--kick", "forward", "--threads", "-1"}, "--threads"},
+        BadSimulate{"UnknownBase",
+                    {"--kick", "forward", "--base", "bolted"},
+                    "--base: must be one of fixed, floating, got 'bolted'"}),
     [](const ::testing::TestParamInfo<BadSimulate>& info) { return info.param.name; });
 
 }  // namespace

@@ -47,6 +47,7 @@ void ExpectSameTrial(const MatchTrialResult& a, const MatchTrialResult& b) {
   EXPECT_EQ(x.grabs_failed, y.grabs_failed);
   EXPECT_EQ(x.kicks_missed, y.kicks_missed);
   EXPECT_EQ(x.kicks_not_settled, y.kicks_not_settled);
+  EXPECT_EQ(x.kicks_fell, y.kicks_fell);
   EXPECT_EQ(Bits(x.time_s), Bits(y.time_s));
   ASSERT_EQ(a.attacker_counters.size(), b.attacker_counters.size());
   for (std::size_t i = 0; i < a.attacker_counters.size(); ++i) {

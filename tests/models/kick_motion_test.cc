@@ -218,6 +218,41 @@ TEST(KickMotionTest, AStanceNeedsAPositiveHeightAndOnlyItsFields) {
   EXPECT_THAT(LoadError(extra), StartsWith(extra.string() + ": stance.tilt: "));
 }
 
+TEST(KickMotionTest, LoadsItsBalanceAndRampsItSmoothly) {
+  const KickMotion plain = LoadKickMotion(MotionFile("no_balance"));
+  EXPECT_FALSE(plain.balance.Has());
+  EXPECT_EQ(plain.balance.Share(5.0), 0.0);
+  const KickMotion motion = LoadKickMotion(MotionFile(
+      "balance", R"("ball_x_m": 0.17,)",
+      R"("balance": {"shift_s": 2.0, "settle_s": 0.5,
+                     "offsets_deg": {"notes": "why", "LHipRoll": -16.0, "LAnkleRoll": 16.0}},
+         "ball_x_m": 0.17,)"));
+  ASSERT_TRUE(motion.balance.Has());
+  EXPECT_EQ(motion.balance.DurationS(), 2.5);
+  ASSERT_EQ(motion.balance.offsets_rad.size(), 2u);
+  for (const auto& [joint, offset_rad] : motion.balance.offsets_rad) {
+    EXPECT_DOUBLE_EQ(offset_rad, (joint == "LHipRoll" ? -16.0 : 16.0) * kDegToRad) << joint;
+  }
+  // 3u^2 - 2u^3: 0 before, half way at half the shift, whole after it.
+  EXPECT_EQ(motion.balance.Share(-1.0), 0.0);
+  EXPECT_DOUBLE_EQ(motion.balance.Share(1.0), 0.5);
+  EXPECT_DOUBLE_EQ(motion.balance.Share(0.5), 3.0 / 16.0 - 2.0 / 64.0);
+  EXPECT_EQ(motion.balance.Share(2.0), 1.0);
+  EXPECT_EQ(motion.balance.Share(9.0), 1.0);
+}
+
+TEST(KickMotionTest, ABalanceNeedsATimeAndAJoint) {
+  const auto no_time = MotionFile(
+      "balance_time", R"("ball_x_m": 0.17,)",
+      R"("balance": {"shift_s": 0, "settle_s": 0.5, "offsets_deg": {"J": 1}}, "ball_x_m": 0.17,)");
+  EXPECT_EQ(LoadError(no_time), no_time.string() + ": balance.shift_s: must be in (0, 10], got 0");
+  const auto no_joint = MotionFile(
+      "balance_joint", R"("ball_x_m": 0.17,)",
+      R"("balance": {"shift_s": 1, "settle_s": 0.5, "offsets_deg": {}}, "ball_x_m": 0.17,)");
+  EXPECT_EQ(LoadError(no_joint),
+            no_joint.string() + ": balance.offsets_deg: must name at least one joint");
+}
+
 TEST(KickMotionTest, SingleKeyframeIsRejected) {
   const auto file = WriteTempFile("kick_motion_single.json", R"({
     "name": "x", "ball_x_m": 0.1, "ball_y_m": 0.0, "joints": ["A"],

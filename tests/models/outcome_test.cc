@@ -32,7 +32,7 @@ TEST(OutcomeTest, CountsMissedAndUnsettledOutcomes) {
   EXPECT_EQ(counts.not_settled, 1);
   counts.Add(CountStatuses({&outcomes[4], 1}));
   EXPECT_EQ(counts.not_settled, 2);
-  EXPECT_EQ(StatusCountsText(counts), "2 missed the ball, 2 did not settle");
+  EXPECT_EQ(StatusCountsText(counts), "2 missed the ball, 2 did not settle, 0 fell");
 }
 
 }  // namespace

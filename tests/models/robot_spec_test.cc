@@ -298,6 +298,33 @@ TEST(RobotSpecTest, AStanceJointMustExistAndLieWithinItsLimits) {
                          ": stance.pose_deg.KneePitch: 130 deg is outside the joint's limits"));
 }
 
+TEST(RobotSpecTest, ABalanceJointMustExistAndItsShiftedStanceLieWithinItsLimits) {
+  const std::filesystem::path unknown = TesterModels(
+      "balance_unknown_joint",
+      {"motions/side.json", R"("name": "side",)",
+       R"("name": "side", "balance": {"shift_s": 1, "settle_s": 0, "offsets_deg": {"Tail": 1}},)"});
+  EXPECT_THAT(RobotError(unknown),
+              StartsWith((unknown / "robots" / "tester" / "motions" / "side.json").string() +
+                         ": balance.offsets_deg.Tail: 'Tail' is not a joint of "));
+  const std::filesystem::path beyond = TesterModels(
+      "balance_beyond_limit",
+      {"motions/side.json", R"("name": "side",)",
+       R"("name": "side", "balance": {"shift_s": 1, "settle_s": 0,
+                                        "offsets_deg": {"HipPitch": 60.0}},)"});
+  EXPECT_THAT(RobotError(beyond),
+              StartsWith((beyond / "robots" / "tester" / "motions" / "side.json").string() +
+                         ": balance.offsets_deg.HipPitch (with the stance): "));
+}
+
+TEST(RobotSpecTest, SupportJointsMustBeRevoluteJointsOfTheModel) {
+  const std::filesystem::path models = TesterModels(
+      "support_joints",
+      {"robot.json", R"("name": "tester",)", R"("name": "tester", "support_joints": ["SoleFixed"],)"});
+  EXPECT_THAT(RobotError(models),
+              StartsWith(SpecFile(models).string() +
+                         ": support_joints[0]: 'SoleFixed' is a fixed joint in "));
+}
+
 TEST(RobotSpecTest, UnknownRobotListsTheAvailableOnes) {
   const std::filesystem::path models = TesterModels("unknown_robot");
   EXPECT_EQ(InputErrorMessage([&] { LoadRobot("robonova", models); }),
