@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "common/checks.h"
 #include "common/error.h"
 #include "common/json_reader.h"
 
@@ -209,6 +210,36 @@ int ShardValue::Int() const {
   if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
     Fail("out of range: " + QuoteJson(*value_));
   return static_cast<int>(v);
+}
+
+double ShardValue::Finite() const {
+  const double x = Double();
+  if (!std::isfinite(x)) Fail("must be a finite number, got " + QuoteJson(*value_));
+  return x;
+}
+
+double ShardValue::InRange(double lo, double hi) const {
+  const double x = Double();
+  if (!(x >= lo && x <= hi)) {
+    Fail("must be in [" + FormatNumber(lo) + ", " + FormatNumber(hi) + "], got " +
+         QuoteJson(*value_));
+  }
+  return x;
+}
+
+int ShardValue::Count() const {
+  const int n = Int();
+  if (n < 0) Fail("must be 0 or more, got " + std::to_string(n));
+  return n;
+}
+
+int ShardValue::IntInRange(int lo, int hi) const {
+  const int n = Int();
+  if (n < lo || n > hi) {
+    Fail("must be " + std::to_string(lo) + " .. " + std::to_string(hi) + ", got " +
+         std::to_string(n));
+  }
+  return n;
 }
 
 bool ShardValue::Bool() const {

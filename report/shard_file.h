@@ -69,6 +69,13 @@ class ShardValue {
   bool Bool() const;
   std::string String() const;
   bool IsNull() const { return value_->is_null(); }
+  // Checked against the range the producer guarantees, so that a tampered or damaged shard is
+  // refused with its place ("FILE: results[3].p[0]: must be in [0, 1], got -5") instead of
+  // reaching a report or a model:
+  double Finite() const;                       // a finite number
+  double InRange(double lo, double hi) const;  // a number in [lo, hi]; NaN never
+  int Count() const;                           // an integer >= 0
+  int IntInRange(int lo, int hi) const;        // an integer in [lo, hi]
   [[noreturn]] void Fail(const std::string& problem) const;
 
  private:
