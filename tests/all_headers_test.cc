@@ -63,6 +63,7 @@
 #include "common/quantile.h"
 #include "common/random.h"
 #include "common/shard.h"
+#include "common/strict_json.h"
 #include "common/worker_threads.h"
 #include "experiments/experiment_params.h"
 #include "experiments/match_trial_shard.h"
