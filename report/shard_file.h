@@ -51,6 +51,10 @@ struct ShardPart {
 std::vector<ShardPart> ReadShardParts(const std::vector<std::filesystem::path>& dirs,
                                       const std::string& version);
 
+// A shard's run time may be at most this (about 30 years), so that the merge's sum of run times
+// stays finite.
+inline constexpr double kMaxShardRunTime_s = 1e9;
+
 // Doubles in a shard file: a JSON number reads back to the same bits (nlohmann writes the
 // shortest round-trip form); NaN and the infinities, which JSON lacks, are the strings "nan",
 // "inf" and "-inf".

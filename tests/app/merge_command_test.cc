@@ -1,6 +1,8 @@
 // `foresight merge` against the real binary with shards that were damaged or edited after their
-// run: the merge ends in one line naming the shard file, the place in it and the value, exit 2,
-// and writes nothing (it crashed on a trace frame without robots).
+// run: every value is checked against what the command that wrote it can produce, so the merge
+// ends in one line naming the shard file, the place in it and the value, exit 2, and writes
+// nothing (it crashed on a trace frame without robots, and wrote p_infield -5 and a kick model
+// with a 63-digit deceleration from numbers no run can produce).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -59,6 +61,34 @@ TEST_F(MergeCommandTest, APassingTraceFrameWithoutEveryRobotIsRefused) {
     Shard("p", {"experiment", "passing", "--config", "dg", "--team", "reactive", "--scenarios",
                 "1", "--trials", "1"});
   }
+}
+
+TEST_F(MergeCommandTest, ACalibrationSampleNoTrialCanProduceIsRefused) {
+  Shard("c", {"calibrate", "--robot", "nao", "--kick", "forward", "--trials", "8"});
+  const std::string error = MergeEdited("c", [](nlohmann::json& shard) {
+    shard["results"][0]["kicks"][0][3][1] = 1e308;  // a speed of the deceleration fit
+  });
+  EXPECT_THAT(error, StartsWith("foresight: error: c/shard.json: results[0].kicks[0][3][1]: "
+                                "must be in [0, 50], got "));
+}
+
+TEST_F(MergeCommandTest, ARunTimeNoRunTakesIsRefused) {
+  Shard("c", {"calibrate", "--robot", "nao", "--kick", "forward", "--trials", "8"});
+  EXPECT_THAT(MergeEdited("c", [](nlohmann::json& shard) { shard["run_time_s"] = 1e308; }),
+              HasSubstr("c/shard.json: run_time_s: must be in [0, 1e+09], got "));
+}
+
+TEST_F(MergeCommandTest, AFidelityShareThatIsNotItsCountIsRefused) {
+  Shard("f", {"fidelity", "--situations", "quick", "--trials", "2", "--converged", "40"});
+  const std::string error = MergeEdited("f", [](nlohmann::json& shard) {
+    shard["results"][0]["candidates"][0]["coarse"]["p"] = {-5, 7, 0, 0};
+  });
+  EXPECT_THAT(error, StartsWith("foresight: error: f/shard.json: "
+                                "results[0].candidates[0].coarse.p[0]: must be its count / "
+                                "samples, "));
+  // And the untouched shard merges.
+  Shard("f", {"fidelity", "--situations", "quick", "--trials", "2", "--converged", "40"});
+  EXPECT_EQ(MergeEdited("f", [](nlohmann::json&) {}), "(merged)");
 }
 
 }  // namespace
