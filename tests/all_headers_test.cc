@@ -112,6 +112,7 @@
 #include "models/outcome.h"
 #include "models/motor_table.h"
 #include "models/physics_params.h"
+#include "models/placement.h"
 #include "models/robot_model.h"
 #include "models/robot_spec.h"
 #include "models/situation.h"
