@@ -91,4 +91,19 @@ TEST_F(MergeCommandTest, AFidelityShareThatIsNotItsCountIsRefused) {
   EXPECT_EQ(MergeEdited("f", [](nlohmann::json&) {}), "(merged)");
 }
 
+TEST_F(MergeCommandTest, AnOutThatIsOrHoldsAShardFolderIsRefusedAndTheShardKept) {
+  Shard("runs/p", {"experiment", "passing", "--config", "dg", "--team", "reactive",
+                   "--scenarios", "1", "--trials", "1"});
+  const std::string shard = ReadFile(work() / "runs" / "p" / "shard.json");
+  for (const std::string& out : {"runs/p", "./runs/p/", "runs"}) {
+    const RunResult r = Run({"merge", "--out", out, "runs/p"});
+    EXPECT_EQ(r.exit_code, 2) << out;
+    EXPECT_EQ(r.err, "foresight: error: --out: " + out + (out == "runs" ? " holds" : " is") +
+                         " the shard folder runs/p, which the report would replace; write the "
+                         "report elsewhere\n");
+    EXPECT_EQ(ReadFile(work() / "runs" / "p" / "shard.json"), shard) << out;
+  }
+  EXPECT_EQ(Run({"merge", "--out", "runs/report", "runs/p"}).exit_code, 0);
+}
+
 }  // namespace
