@@ -28,6 +28,7 @@ void WriteToDevice(const std::filesystem::path& file, std::string_view content) 
 
 void WriteRegularFile(const std::filesystem::path& shown, const std::filesystem::path& file,
                       std::string_view content) {
+  const SignalGuard hold_signals;  // a temporary file never outlives an interrupted run
   const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : ".";
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec)) {
@@ -56,7 +57,8 @@ void WriteRegularFile(const std::filesystem::path& shown, const std::filesystem:
 }  // namespace
 
 void WriteFileAtomically(const std::filesystem::path& file, std::string_view content) {
-  const SignalGuard hold_signals;  // a temporary file never outlives an interrupted run
+  // Streams leave no temporary file, so signals are held only around the regular file's write:
+  // opening a FIFO blocks until a reader comes, and Ctrl-C must still end the run then.
   if (file == kStandardOutput) return WriteStream(std::cout, "standard output", content);
   std::error_code ec;
   // A symbolic link stays a link: the file it points to is replaced, atomically.
