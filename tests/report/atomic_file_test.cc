@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -129,6 +130,27 @@ TEST(AtomicFileTest, AFifoWithoutAReaderWaitsWithInterruptsNotHeld) {
   ::kill(child, held ? SIGKILL : SIGTERM);
   ::waitpid(child, &status, 0);
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == (held ? SIGKILL : SIGTERM));
+}
+
+TEST(AtomicFileTest, StandardOutputByNameIsWrittenAfterWhatWasPrinted) {
+  ::testing::internal::CaptureStdout();
+  std::cout << "printed, ";
+  WriteFileAtomically("/dev/stdout", "then written");
+  // The redirected standard output (a file here) is written to, not replaced.
+  EXPECT_EQ(::testing::internal::GetCapturedStdout(), "printed, then written");
+}
+
+TEST(AtomicFileTest, AnOpenDescriptorByNameIsWrittenAsAStream) {
+  int ends[2];
+  ASSERT_EQ(::pipe(ends), 0);
+  for (const std::string& name : {"/proc/self/fd/", "/dev/fd/"}) {
+    WriteFileAtomically(name + std::to_string(ends[1]), "through " + name);
+    char buffer[64] = {};
+    const ssize_t n = ::read(ends[0], buffer, sizeof buffer);
+    EXPECT_EQ(std::string(buffer, n > 0 ? static_cast<std::size_t>(n) : 0), "through " + name);
+  }
+  ::close(ends[0]);
+  ::close(ends[1]);
 }
 
 TEST(AtomicFileTest, ADirectoryIsRefused) {
