@@ -338,8 +338,10 @@ int MergeCalibrationCommand(const std::vector<ShardPart>& parts, const std::stri
 }
 
 int WriteCalibration(const CalibrateOptions& options, const CalibrationRun& run) {
-  // Everything is made before anything is written.
+  // Everything is made before anything is written, and the model is read back through the
+  // kick-model reader first: a fit from damaged data (a merged shard's) is refused, not written.
   const std::string model = KickModelJson(run.fitted, ModelNotes(run));
+  ParseKickModel(model, options.out_file + " (the calibrated model, not written)");
   ReportFiles files;
   if (!options.report_dir.empty()) {
     const std::filesystem::path dir(options.report_dir);

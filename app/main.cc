@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
+#include <new>
 #include <string>
 
 #include "app/calibrate_command.h"
@@ -100,6 +101,9 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("merge")) return foresight::RunMergeCommand(merge, models_dir);
   } catch (const foresight::InputError& e) {
     return Fail(e.what());
+  } catch (const std::bad_alloc&) {
+    // Not a bug but the machine's or the job's limit (`ulimit -v`, a Slurm job's memory).
+    return Fail("out of memory (a memory limit such as ulimit -v? a smaller run may fit)");
   } catch (const std::exception& e) {
     std::cerr << "foresight: internal error: " << OneLine(e.what()) << "\n";
     return kExitInternal;

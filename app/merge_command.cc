@@ -1,6 +1,7 @@
 #include "app/merge_command.h"
 
 #include <filesystem>
+#include <system_error>
 
 #include "app/calibrate_command.h"
 #include "app/experiment_command.h"
@@ -19,11 +20,34 @@ void AddMergeCommand(CLI::App& app, MergeOptions& options) {
       ->required();
 }
 
+namespace {
+
+// The report replaces --out whole: it must not be a shard folder it reads, nor hold one.
+void RequireOutsideShards(const std::filesystem::path& out,
+                          const std::vector<std::filesystem::path>& dirs) {
+  std::error_code ec;
+  const std::filesystem::path report = std::filesystem::weakly_canonical(out, ec);
+  if (ec) return;  // checked again, with its reason, where the report is written
+  for (const std::filesystem::path& dir : dirs) {
+    const std::filesystem::path shard = std::filesystem::weakly_canonical(dir, ec);
+    if (ec) continue;
+    const std::filesystem::path relative = shard.lexically_relative(report);
+    if (!relative.empty() && *relative.begin() != "..") {
+      throw InputError("--out: " + out.string() + (relative == "." ? " is" : " holds") +
+                       " the shard folder " + dir.string() +
+                       ", which the report would replace; write the report elsewhere");
+    }
+  }
+}
+
+}  // namespace
+
 int RunMergeCommand(const MergeOptions& options, const std::string& models_dir) {
   const std::filesystem::path models =
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
   const std::vector<std::filesystem::path> dirs(options.shard_dirs.begin(),
                                                 options.shard_dirs.end());
+  RequireOutsideShards(options.out_dir, dirs);
   const std::vector<ShardPart> parts = ReadShardParts(dirs, FORESIGHT_VERSION);
   const std::string& command = parts.front().header.command;
   if (IsExperimentShardCommand(command))

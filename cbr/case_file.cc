@@ -11,20 +11,10 @@
 #include "common/checks.h"
 #include "common/error.h"
 #include "common/json_reader.h"
+#include "models/placement.h"
 
 namespace foresight {
 namespace {
-
-std::string PointText(const Vec2& p) {
-  return "(" + FormatNumber(p.x()) + ", " + FormatNumber(p.y()) + ")";
-}
-
-void RequireOnField(const std::string& field, const Vec2& p, const FieldSpec& spec) {
-  if (std::abs(p.x()) <= spec.HalfLength() && std::abs(p.y()) <= spec.HalfWidth()) return;
-  throw InputError(field + ": " + PointText(p) +
-                   " is off the field (|x| <= " + FormatNumber(spec.HalfLength()) +
-                   " m, |y| <= " + FormatNumber(spec.HalfWidth()) + " m)");
-}
 
 void RequireScope(const std::string& field, const Scope& scope) {
   RequirePositive(field + ".tau_x_m", scope.tau_x_m);
@@ -127,7 +117,7 @@ void ValidateAction(const std::string& at, const CaseAction& a, const Case& c,
                        " is not a teammate of the case");
     }
   }
-  if (a.target_F) RequireOnField(at + ".target", *a.target_F, rules.field);
+  if (a.target_F) RequireOnField(rules.field, at + ".target", *a.target_F);
   if (a.heading_rad) RequireFinite(at + ".heading_deg", *a.heading_rad);
 }
 
@@ -143,7 +133,7 @@ void ValidateCase(const Case& c, const CaseRules& rules) {
       throw InputError("opponents: must list 0-4 robots, got " +
                        std::to_string(c.opponents.size()));
     }
-    RequireOnField("ball", c.p_F_ball, rules.field);
+    RequireOnField(rules.field, "ball", c.p_F_ball);
     RequireScope("ball_scope", c.ball_scope);
     std::vector<int> ids;
     for (const auto& t : c.teammates) ids.push_back(t.id);
@@ -153,7 +143,7 @@ void ValidateCase(const Case& c, const CaseRules& rules) {
     RequireIds("opponents", ids);
     for (std::size_t i = 0; i < c.teammates.size(); ++i) {
       const std::string at = "teammates[" + std::to_string(i) + "]";
-      RequireOnField(at, c.teammates[i].p_F, rules.field);
+      RequireOnField(rules.field, at, c.teammates[i].p_F);
       if (c.teammates[i].actions.empty()) {
         throw InputError(at +
                          ".actions: must list at least one action (\"wait\" for a robot "
@@ -166,7 +156,7 @@ void ValidateCase(const Case& c, const CaseRules& rules) {
     }
     for (std::size_t i = 0; i < c.opponents.size(); ++i) {
       const std::string at = "opponents[" + std::to_string(i) + "]";
-      RequireOnField(at, c.opponents[i].p_F, rules.field);
+      RequireOnField(rules.field, at, c.opponents[i].p_F);
       RequireScope(at + ".scope", c.opponents[i].scope);
     }
     ValidateGameplay(c);

@@ -8,20 +8,14 @@
 #include "common/error.h"
 #include "common/json_reader.h"
 #include "models/field_spec.h"
+#include "models/placement.h"
 
 namespace foresight {
 namespace {
 
-void RequireOnField(const JsonObject& o, const Vec2& p, const FieldSpec& field) {
-  if (std::abs(p.x()) <= field.HalfLength() && std::abs(p.y()) <= field.HalfWidth()) return;
-  o.Fail("x_m", "(" + FormatNumber(p.x()) + ", " + FormatNumber(p.y()) +
-                    ") is off the field (|x| <= " + FormatNumber(field.HalfLength()) +
-                    " m, |y| <= " + FormatNumber(field.HalfWidth()) + " m)");
-}
-
 Vec2 ReadPoint(const JsonObject& o, const FieldSpec& field) {
   const Vec2 p(o.Number("x_m"), o.Number("y_m"));
-  RequireOnField(o, p, field);
+  WithFile(o.file(), [&] { RequireOnField(field, o.PathOf("x_m"), p); });
   return p;
 }
 

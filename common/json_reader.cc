@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <fstream>
-#include <set>
 #include <sstream>
 
 #include "common/checks.h"
@@ -164,96 +163,10 @@ void JsonObject::RejectUnknownKeys(std::span<const std::string_view> known) cons
   }
 }
 
-namespace {
-
-// nlohmann reports a byte offset; people want line and column.
-std::string LineAndColumn(std::string_view text, std::size_t byte) {
-  std::size_t line = 1, column = 1;
-  for (std::size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
-
-// ", field \"x_m\"" when the text just before `at` is `"x_m":`, else "".
-std::string KeyBefore(std::string_view text, std::size_t at) {
-  const auto colon = text.rfind(':', at);
-  if (colon == std::string_view::npos) return "";
-  const auto close = text.rfind('"', colon);
-  if (close == std::string_view::npos || close == 0) return "";
-  const auto open = text.rfind('"', close - 1);
-  if (open == std::string_view::npos) return "";
-  return ", field \"" + std::string(text.substr(open + 1, close - open - 1)) + "\"";
-}
-
-// "syntax error while parsing value - invalid literal; last read: 'x'" without the prefix.
-std::string ParseProblem(const nlohmann::json::parse_error& e) {
-  std::string what = e.what();
-  auto colon = what.find(": ", what.find("parse error"));
-  return colon == std::string::npos ? what : what.substr(colon + 2);
-}
-
-// Strictness beyond the JSON grammar, checked while parsing: a bounded depth (so nothing
-// downstream recurses without end), and no key twice in one object (nlohmann would keep the
-// last silently, so a typo'd override would win unseen).
-class StrictParse {
- public:
-  explicit StrictParse(const std::string& origin) : origin_(origin) {}
-
-  bool operator()(int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
-    using Event = nlohmann::json::parse_event_t;
-    if (depth > kMaxJsonDepth) {
-      throw InputError(origin_ + ": invalid JSON: nested deeper than " +
-                       std::to_string(kMaxJsonDepth) + " levels");
-    }
-    if (event == Event::object_start) keys_.emplace_back();
-    if (event == Event::object_end && !keys_.empty()) keys_.pop_back();
-    if (event == Event::key && !keys_.empty() &&
-        !keys_.back().insert(parsed.get<std::string>()).second) {
-      throw InputError(origin_ + ": invalid JSON: the key " + QuoteJson(parsed) +
-                       " appears twice in one object");
-    }
-    return true;
-  }
-
- private:
-  const std::string& origin_;
-  std::vector<std::set<std::string>> keys_;
-};
-
-}  // namespace
-
 JsonDocument JsonDocument::Parse(std::string_view text, std::string origin) {
   JsonDocument doc;
   doc.origin_ = std::move(origin);
-  if (const auto nul = text.find('\0'); nul != std::string_view::npos) {
-    throw InputError(doc.origin_ + ": invalid JSON at " + LineAndColumn(text, nul + 1) +
-                     ": a NUL byte (not a text file?)");
-  }
-  try {
-    doc.tree_ = nlohmann::json::parse(text, StrictParse(doc.origin_));
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(doc.origin_ + ": invalid JSON at " + LineAndColumn(text, e.byte) + ": " +
-                     ParseProblem(e));
-  } catch (const nlohmann::json::exception& e) {
-    // e.g. out_of_range.406 "number overflow parsing '1e999'": locate the quoted token.
-    std::string what = e.what();
-    const auto bracket = what.find("] ");
-    if (bracket != std::string::npos) what = what.substr(bracket + 2);
-    std::string where;
-    const auto open = what.find('\''), close = what.rfind('\'');
-    if (open != std::string::npos && close > open) {
-      const auto at = text.find(what.substr(open + 1, close - open - 1));
-      if (at != std::string_view::npos)
-        where = " at " + LineAndColumn(text, at + 2) + KeyBefore(text, at);
-    }
-    throw InputError(doc.origin_ + ": invalid JSON" + where + ": " + what);
-  }
+  doc.tree_ = ParseStrictJson(text, doc.origin_);
   return doc;
 }
 

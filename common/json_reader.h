@@ -16,17 +16,14 @@
 #include <string_view>
 #include <vector>
 
+#include "common/strict_json.h"
+
 namespace foresight {
 
 // A value as an error message quotes it: short, escaped, on one line. Strings are quoted and cut
 // after 60 bytes, numbers and literals as written, objects and arrays by their size only (a
 // message never embeds a whole tree: a deeply nested value would overflow the stack).
 std::string QuoteJson(const nlohmann::json& value);
-
-// Limits of a data file: the project's files are a few kB and a few levels deep, so these are
-// far above any real file (assumption) and far below what exhausts memory or the stack.
-inline constexpr std::uintmax_t kMaxJsonBytes = 16u << 20;  // 16 MiB
-inline constexpr int kMaxJsonDepth = 64;
 
 class JsonObject {
  public:
@@ -72,8 +69,7 @@ class JsonObject {
 class JsonDocument {
  public:
   // Reads and parses `file`; a missing file, a directory, a device or pipe, a file over
-  // kMaxJsonBytes, bad syntax (with line and column), a NUL byte, nesting deeper than
-  // kMaxJsonDepth or a key twice in one object is an InputError.
+  // kMaxJsonBytes or what ParseStrictJson refuses (common/strict_json.h) is an InputError.
   static JsonDocument Load(const std::filesystem::path& file);
   // Parses text that did not come from a file; `origin` names it in messages.
   static JsonDocument Parse(std::string_view text, std::string origin);

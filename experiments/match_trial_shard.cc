@@ -1,7 +1,10 @@
 #include "experiments/match_trial_shard.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
+
+#include "common/checks.h"
 
 namespace foresight {
 
@@ -17,14 +20,46 @@ int EnumNumber(const ShardValue& value, int last) {
   return n;
 }
 
+// The robots of `side` (0: attackers, 1: opponents) in `shape`.
+int SideSize(const TrialShape& shape, int side) {
+  return side == 0 ? shape.attackers : shape.opponents;
+}
+
+int RobotIndex(const ShardValue& value, int robots) {
+  const int n = value.Int();
+  if (n < 0 || n >= robots) {
+    value.Fail("must be a robot of its side, 0 .. " + std::to_string(robots - 1) + ", got " +
+               std::to_string(n));
+  }
+  return n;
+}
+
+double Time(const ShardValue& value, const TrialShape& shape) {
+  const double t = value.Double();
+  if (!(t >= 0.0 && t <= shape.max_time_s)) {
+    value.Fail("must be a time from 0 to the trial's limit " + FormatNumber(shape.max_time_s) +
+               " s");
+  }
+  return t;
+}
+
+Vec2 Point(const ShardValue& x, const ShardValue& y) {
+  return {x.Finite(), y.Finite()};
+}
+
 nlohmann::json IntsJson(const std::vector<int>& values) {
   return nlohmann::json(values);
 }
 
-std::vector<int> ReadInts(const ShardValue& value) {
-  std::vector<int> ints;
-  for (std::size_t i = 0; i < value.Size(); ++i) ints.push_back(value.At(i).Int());
-  return ints;
+// One count per robot of a side.
+std::vector<int> ReadCounts(const ShardValue& value, int robots) {
+  if (value.Size() != static_cast<std::size_t>(robots)) {
+    value.Fail("must have one count per robot (" + std::to_string(robots) + "), got " +
+               std::to_string(value.Size()));
+  }
+  std::vector<int> counts;
+  for (std::size_t i = 0; i < value.Size(); ++i) counts.push_back(value.At(i).Count());
+  return counts;
 }
 
 nlohmann::json CountersJson(const TrialCounters& c) {
@@ -42,29 +77,37 @@ nlohmann::json CountersJson(const TrialCounters& c) {
           {"shots", {c.shots_on_target, c.shots_saved}}};
 }
 
-TrialCounters ReadCounters(const ShardValue& v) {
+TrialCounters ReadCounters(const ShardValue& v, const TrialShape& shape) {
   TrialCounters c;
-  c.opponent_touches = ReadInts(v["opponent_touches"]);
-  c.opponent_kicks = ReadInts(v["opponent_kicks"]);
-  c.attacker_backups = ReadInts(v["attacker_backups"]);
-  c.attacker_kicks = ReadInts(v["attacker_kicks"]);
-  c.grabs_failed = v["grabs_failed"].Int();
-  c.kicks_missed = v["kicks_missed"].Int();
-  c.kicks_not_settled = v["kicks_not_settled"].Int();
-  c.kicks_fell = v["kicks_fell"].Int();
-  c.time_s = v["time_s"].Double();
+  c.opponent_touches = ReadCounts(v["opponent_touches"], shape.opponents);
+  c.opponent_kicks = ReadCounts(v["opponent_kicks"], shape.opponents);
+  c.attacker_backups = ReadCounts(v["attacker_backups"], shape.attackers);
+  c.attacker_kicks = ReadCounts(v["attacker_kicks"], shape.attackers);
+  c.grabs_failed = v["grabs_failed"].Count();
+  c.kicks_missed = v["kicks_missed"].Count();
+  c.kicks_not_settled = v["kicks_not_settled"].Count();
+  c.kicks_fell = v["kicks_fell"].Count();
+  c.time_s = Time(v["time_s"], shape);
   const ShardValue last = v["last_touch"];
   if (last.Size() != 2) last.Fail("must be [side, robot]");
   c.last_touch_side = last.At(0).Int();
-  c.last_touch_robot = last.At(1).Int();
   if (c.last_touch_side < -1 || c.last_touch_side > kLastSide) {
     last.At(0).Fail("must be -1 .. " + std::to_string(kLastSide));
   }
-  c.attacker_kick_sent = v["attacker_kick_sent"].Int() != 0;
+  if (c.last_touch_side == -1) {
+    c.last_touch_robot = last.At(1).Int();
+    if (c.last_touch_robot != -1) last.At(1).Fail("must be -1 when no robot touched the ball");
+  } else {
+    c.last_touch_robot = RobotIndex(last.At(1), SideSize(shape, c.last_touch_side));
+  }
+  const int sent = v["attacker_kick_sent"].Int();
+  if (sent != 0 && sent != 1) v["attacker_kick_sent"].Fail("must be 0 or 1");
+  c.attacker_kick_sent = sent == 1;
   const ShardValue shots = v["shots"];
   if (shots.Size() != 2) shots.Fail("must be [on target, saved]");
-  c.shots_on_target = shots.At(0).Int();
-  c.shots_saved = shots.At(1).Int();
+  c.shots_on_target = shots.At(0).Count();
+  c.shots_saved = shots.At(1).Count();
+  if (c.shots_saved > c.shots_on_target) shots.At(1).Fail("must not exceed the shots on target");
   return c;
 }
 
@@ -74,14 +117,15 @@ nlohmann::json EventJson(const MatchEvent& e) {
           e.detail};
 }
 
-MatchEvent ReadEvent(const ShardValue& v) {
+MatchEvent ReadEvent(const ShardValue& v, const TrialShape& shape) {
   if (v.Size() != 7) v.Fail("must be [time_s, kind, side, robot, ball x, ball y, detail]");
   MatchEvent e;
-  e.time_s = v.At(0).Double();
+  e.time_s = Time(v.At(0), shape);
   e.kind = static_cast<EventKind>(EnumNumber(v.At(1), kLastEventKind));
-  e.side = static_cast<Side>(EnumNumber(v.At(2), kLastSide));
-  e.robot = v.At(3).Int();
-  e.p_F_ball = {v.At(4).Double(), v.At(5).Double()};
+  const int side = EnumNumber(v.At(2), kLastSide);
+  e.side = static_cast<Side>(side);
+  e.robot = RobotIndex(v.At(3), SideSize(shape, side));
+  e.p_F_ball = Point(v.At(4), v.At(5));
   e.detail = v.At(6).String();
   return e;
 }
@@ -94,16 +138,21 @@ nlohmann::json FrameJson(const TraceFrame& f) {
   return {ExactJson(f.time_s), ExactJson(f.p_F_ball.x()), ExactJson(f.p_F_ball.y()), robots};
 }
 
-TraceFrame ReadFrame(const ShardValue& v) {
+TraceFrame ReadFrame(const ShardValue& v, const TrialShape& shape) {
   if (v.Size() != 4) v.Fail("must be [time_s, ball x, ball y, robots]");
   TraceFrame f;
-  f.time_s = v.At(0).Double();
-  f.p_F_ball = {v.At(1).Double(), v.At(2).Double()};
+  f.time_s = Time(v.At(0), shape);
+  f.p_F_ball = Point(v.At(1), v.At(2));
   const ShardValue robots = v.At(3);
+  const std::size_t expected = static_cast<std::size_t>(shape.attackers + shape.opponents);
+  if (robots.Size() != expected) {
+    robots.Fail("must list every robot of the scenario (" + std::to_string(expected) +
+                "), got " + std::to_string(robots.Size()));
+  }
   for (std::size_t i = 0; i < robots.Size(); ++i) {
     const ShardValue r = robots.At(i);
     if (r.Size() != 3) r.Fail("must be [x, y, theta]");
-    f.robots.push_back({{r.At(0).Double(), r.At(1).Double()}, r.At(2).Double()});
+    f.robots.push_back({Point(r.At(0), r.At(1)), r.At(2).Finite()});
   }
   return f;
 }
@@ -124,10 +173,10 @@ nlohmann::json TrialShardJson(const MatchTrialResult& trial) {
           {"trace", trace}};
 }
 
-MatchTrialResult ReadShardTrial(const ShardValue& v) {
+MatchTrialResult ReadShardTrial(const ShardValue& v, const TrialShape& shape) {
   MatchTrialResult t;
   t.outcome = static_cast<TrialOutcome>(EnumNumber(v["outcome"], kTrialOutcomeCount - 1));
-  t.counters = ReadCounters(v["counters"]);
+  t.counters = ReadCounters(v["counters"], shape);
   const ShardValue team = v["team_counters"];
   for (std::size_t i = 0; i < team.Size(); ++i) {
     const ShardValue c = team.At(i);
@@ -135,9 +184,11 @@ MatchTrialResult ReadShardTrial(const ShardValue& v) {
     t.attacker_counters.push_back({c.At(0).String(), c.At(1).Double()});
   }
   const ShardValue events = v["events"];
-  for (std::size_t i = 0; i < events.Size(); ++i) t.events.push_back(ReadEvent(events.At(i)));
+  for (std::size_t i = 0; i < events.Size(); ++i) {
+    t.events.push_back(ReadEvent(events.At(i), shape));
+  }
   const ShardValue trace = v["trace"];
-  for (std::size_t i = 0; i < trace.Size(); ++i) t.trace.push_back(ReadFrame(trace.At(i)));
+  for (std::size_t i = 0; i < trace.Size(); ++i) t.trace.push_back(ReadFrame(trace.At(i), shape));
   return t;
 }
 

@@ -14,6 +14,11 @@
 //    "trace": [[time_s, ball x, ball y, [[x, y, theta], ...]], ...]}
 //
 // The enums are stored by their numbers (checked on reading), like the outcomes of the seam.
+// Reading checks every value against what a played trial guarantees (TrialShape): a trace frame
+// holds every robot of the scenario, counters are never negative and have one entry per robot of
+// their side, a robot index names a robot of its side, times lie within the time limit, positions
+// are finite. So a tampered or truncated shard is refused with its place instead of reaching the
+// reports (which index robots by the trace's first frame).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -23,8 +28,16 @@
 
 namespace foresight {
 
+// What every trial of one scenario has: its robots of each side (the trace lists the attackers
+// first) and the last time it may reach (the time limit plus one control step).
+struct TrialShape {
+  int attackers = 0;
+  int opponents = 0;
+  double max_time_s = 0.0;
+};
+
 nlohmann::json TrialShardJson(const MatchTrialResult& trial);
-// InputError naming the file and the place in it when `value` is not such a trial.
-MatchTrialResult ReadShardTrial(const ShardValue& value);
+// InputError naming the file and the place in it when `value` is not such a trial of `shape`.
+MatchTrialResult ReadShardTrial(const ShardValue& value, const TrialShape& shape);
 
 }  // namespace foresight

@@ -21,6 +21,13 @@ TrialPlace PlaceOf(const PassingSetup& setup, int item) {
           static_cast<std::size_t>(in_team % setup.trials)};
 }
 
+// What every trial of the scenario numbered `scenario` (1-based) has.
+TrialShape ShapeOf(const PassingSetup& setup, int scenario) {
+  const Scenario& s = setup.config.scenarios.at(static_cast<std::size_t>(scenario - 1));
+  return {static_cast<int>(s.attackers.size()), static_cast<int>(s.opponents.size()),
+          setup.config.time_limit_s + setup.sim.control_step_s};
+}
+
 }  // namespace
 
 int PassingItems(const PassingSetup& setup, int teams) {
@@ -64,7 +71,7 @@ std::vector<PassingResult> MergePassingShards(const PassingSetup& setup,
         item["scenario"].Fail("must be " + std::to_string(st.scenario));
       if (item["trial"].Int() != static_cast<int>(at.trial))
         item["trial"].Fail("must be " + std::to_string(at.trial));
-      st.trials[at.trial] = ReadShardTrial(item["result"]);
+      st.trials[at.trial] = ReadShardTrial(item["result"], ShapeOf(setup, st.scenario));
     }
   }
   return results;

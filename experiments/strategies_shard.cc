@@ -1,8 +1,13 @@
 #include "experiments/strategies_shard.h"
 
+#include "common/geometry.h"
+
 namespace foresight {
 
 namespace {
+
+// No part of a run takes a day (assumption: runs end after max_steps decisions of seconds each).
+constexpr double kMaxRunTime_s = 86400.0;
 
 nlohmann::json StepJson(const StrategyStep& step) {
   return {ExactJson(step.robot_at_ball.p_F.x()), ExactJson(step.robot_at_ball.p_F.y()),
@@ -11,13 +16,13 @@ nlohmann::json StepJson(const StrategyStep& step) {
           OutcomeShardJson(step.outcome)};
 }
 
-StrategyStep ReadStep(const ShardValue& v) {
+StrategyStep ReadStep(const ShardValue& v, int kicks) {
   if (v.Size() != 8) v.Fail("must be [robot x, y, theta, ball x, y, kick, rotation, outcome]");
   StrategyStep step;
-  step.robot_at_ball = {{v.At(0).Double(), v.At(1).Double()}, v.At(2).Double()};
-  step.p_F_ball = {v.At(3).Double(), v.At(4).Double()};
-  step.kick_index = v.At(5).Int();
-  step.rotation_rad = v.At(6).Double();
+  step.robot_at_ball = {{v.At(0).Finite(), v.At(1).Finite()}, v.At(2).InRange(-2.0 * kPi, 2.0 * kPi)};
+  step.p_F_ball = {v.At(3).Finite(), v.At(4).Finite()};
+  step.kick_index = v.At(5).IntInRange(kNoKick, kicks - 1);
+  step.rotation_rad = v.At(6).InRange(-2.0 * kPi, 2.0 * kPi);
   step.outcome = ReadShardOutcome(v.At(7));
   return step;
 }
@@ -43,23 +48,30 @@ Enum ReadEnum(const ShardValue& v, Enum last) {
   return static_cast<Enum>(n);
 }
 
-StrategyRun ReadRun(const ShardValue& v) {
+// A run as RunStrategy makes it (experiments/strategy_run.h): at most max_steps decisions, a
+// kick in some of them and one turn around the ball per kick, times that are not negative.
+StrategyRun ReadRun(const ShardValue& v, const StrategiesParams& params) {
+  const int kicks = static_cast<int>(params.situation.kicks.kicks.size());
   if (v.Size() != 11 && v.Size() != 12) v.Fail("must be a run of 11 or 12 entries");
   StrategyRun run;
   run.end = ReadEnum(v.At(0), RunEnd::kStepLimit);
-  run.kicks = v.At(1).Int();
-  run.steps = v.At(2).Int();
-  run.turn_s = v.At(3).Double();
-  run.walk_s = v.At(4).Double();
-  run.around_ball_s = v.At(5).Double();
+  run.steps = v.At(2).IntInRange(0, params.max_steps);
+  run.kicks = v.At(1).IntInRange(0, run.steps);
+  run.turn_s = v.At(3).InRange(0.0, kMaxRunTime_s);
+  run.walk_s = v.At(4).InRange(0.0, kMaxRunTime_s);
+  run.around_ball_s = v.At(5).InRange(0.0, kMaxRunTime_s);
   run.last_contact = ReadEnum(v.At(6), Contact::kRobot);
-  run.kick_status = {v.At(7).Int(), v.At(8).Int(), v.At(10).Int()};
+  run.kick_status = {v.At(7).IntInRange(0, run.kicks), v.At(8).IntInRange(0, run.kicks),
+                     v.At(10).IntInRange(0, run.kicks)};
   const ShardValue rotations = v.At(9);
+  if (rotations.Size() != static_cast<std::size_t>(run.kicks))
+    rotations.Fail("must have one turn per kick (" + std::to_string(run.kicks) + ")");
   for (std::size_t i = 0; i < rotations.Size(); ++i)
-    run.rotations_rad.push_back(rotations.At(i).Double());
+    run.rotations_rad.push_back(rotations.At(i).InRange(-2.0 * kPi, 2.0 * kPi));
   if (v.Size() == 12) {
     const ShardValue steps = v.At(11);
-    for (std::size_t i = 0; i < steps.Size(); ++i) run.steps_taken.push_back(ReadStep(steps.At(i)));
+    for (std::size_t i = 0; i < steps.Size(); ++i)
+      run.steps_taken.push_back(ReadStep(steps.At(i), kicks));
   }
   return run;
 }
@@ -98,12 +110,12 @@ StrategiesResult MergeStrategiesShards(const StrategiesParams& params, std::uint
       const ShardValue runs = item["runs"];
       if (runs.Size() != strategies) runs.Fail("must have one run per strategy");
       for (std::size_t s = 0; s < strategies; ++s)
-        result.strategies[s].runs[start] = ReadRun(runs.At(s));
+        result.strategies[s].runs[start] = ReadRun(runs.At(s), params);
       if (start != params.example_start) continue;
       const ShardValue examples = item["example"];
       if (examples.Size() != strategies) examples.Fail("must have one run per strategy");
       for (std::size_t s = 0; s < strategies; ++s)
-        result.strategies[s].example = ReadRun(examples.At(s));
+        result.strategies[s].example = ReadRun(examples.At(s), params);
     }
   }
   return result;

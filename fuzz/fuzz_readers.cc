@@ -9,7 +9,10 @@
 // physics, robot (robot.json), motion (kick motion), urdf, mesh (OBJ referenced by a fixed URDF),
 // fidelity_set, check_spec, stability, strategies, observed_kicks (CSV), case, problem,
 // case_base (settings file), retrieval, match_robot, match_simulation, match_config,
-// match_scenario (inside a fixed configuration), reactive, passing, cbr_team, cbr_variants.
+// match_scenario (inside a fixed configuration), reactive, passing, cbr_team, cbr_variants;
+// and the shard readers of `foresight merge`: shard_file (a shard.json's header and its set),
+// shard_trial (a passing trial against the shape of a 2-vs-2 scenario), shard_calibration (a
+// one-shard calibration of the NAO's forward kick, 8 trials, merged into its plan).
 #include <unistd.h>
 
 #include <cstddef>
@@ -22,6 +25,7 @@
 #include <iterator>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "cbr/case_base.h"
 #include "cbr/case_file.h"
@@ -29,7 +33,9 @@
 #include "cbr/retrieval_params.h"
 #include "cbr/team_params.h"
 #include "common/error.h"
+#include "common/json_reader.h"
 #include "experiments/experiment_params.h"
+#include "experiments/match_trial_shard.h"
 #include "experiments/passing.h"
 #include "experiments/passing_variants.h"
 #include "match/match_config.h"
@@ -44,6 +50,8 @@
 #include "models/robot_model.h"
 #include "models/robot_spec.h"
 #include "models/situation.h"
+#include "report/shard_file.h"
+#include "validation/calibration_shard.h"
 #include "validation/fidelity_set.h"
 #include "validation/observed_kicks.h"
 #include "validation/physics_checks.h"
@@ -96,6 +104,13 @@ void LoadMatchInputs(const fs::path& config) {
   static const FieldSpec field = LoadFieldSpec(DataFile(models, DataFolder::kFields, sim.field));
   static const RobotParams robot = LoadRobotParams(sim.robot, models);
   LoadMatchConfig(config.string(), models, field, sim, robot);
+}
+
+// The fuzzed input as DIR/shard.json, read as `foresight merge` reads one shard folder.
+std::vector<ShardPart> ReadShard(const uint8_t* data, std::size_t size) {
+  fs::create_directories(WorkDir() / "shard");
+  Write("shard/shard.json", data, size);
+  return ReadShardParts({WorkDir() / "shard"}, FORESIGHT_VERSION);
 }
 
 using Reader = std::function<void(const uint8_t*, std::size_t)>;
@@ -159,6 +174,28 @@ const std::map<std::string, Reader>& Readers() {
        [](auto d, auto n) { LoadCbrTeamParams(Write("ct.json", d, n).string(), models); }},
       {"cbr_variants",
        [](auto d, auto n) { LoadPassingVariants(Write("cv.json", d, n).string(), models); }},
+      {"shard_file", [](auto d, auto n) { ReadShard(d, n); }},
+      {"shard_trial",
+       [](auto d, auto n) {
+         const JsonDocument doc =
+             JsonDocument::Parse(std::string(reinterpret_cast<const char*>(d), n), "t.json");
+         ReadShardTrial(ShardValue(doc.Tree(), "t.json", "result"), {2, 2, 600.04});
+       }},
+      {"shard_calibration",
+       [](auto d, auto n) {
+         static const PhysicsCalibrationSettings settings = [] {
+           PhysicsCalibrationSettings s;
+           s.robot = "nao";
+           s.kick = "forward";
+           s.trials = 8;
+           return s;
+         }();
+         static const PhysicsCalibration plan = PlanPhysicsCalibration(settings, models);
+         const std::vector<ShardPart> parts = ReadShard(d, n);
+         if (parts.front().header.items != settings.trials) return;  // another run's shard
+         PhysicsCalibration merged = plan;
+         MergeCalibrationShards(merged, settings.trials, parts);
+       }},
   };
   return readers;
 }

@@ -1,10 +1,15 @@
 #include "match/match_config.h"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "common/checks.h"
 #include "common/error.h"
 #include "models/model_paths.h"
+#include "models/placement.h"
 
 namespace foresight {
 
@@ -12,8 +17,35 @@ namespace {
 
 Pose2 ReadPose(const JsonObject& o) {
   o.RejectUnknownKeys({"x_m", "y_m", "theta_deg"});
-  return Pose2{Vec2(o.Number("x_m"), o.Number("y_m")),
-               WrapAngle(o.Number("theta_deg") * kDegToRad)};
+  const double theta_deg = o.Number("theta_deg");
+  WithFile(o.file(), [&] { RequireInRange(o.PathOf("theta_deg"), theta_deg, -360.0, 360.0); });
+  return Pose2{Vec2(o.Number("x_m"), o.Number("y_m")), WrapAngle(theta_deg * kDegToRad)};
+}
+
+// Where a match can start (models/placement.h): the ball on the field, clear of the posts and
+// out of the goals; every robot on the field, clear of the posts and of every other robot.
+void RequirePlayablePlacement(const Scenario& s, const FieldSpec& field, const RobotParams& robot) {
+  RequireOnField(field, "ball", s.p_F_ball);
+  RequireClearOfPosts(field, "ball", s.p_F_ball, field.ball.radius_m);
+  RequireBallOutOfGoals(field, s.p_F_ball);
+  std::vector<std::pair<std::string, Vec2>> bodies;
+  for (std::size_t i = 0; i < s.attackers.size(); ++i)
+    bodies.emplace_back("attackers[" + std::to_string(i) + "]", s.attackers[i].p_F);
+  for (std::size_t i = 0; i < s.opponents.size(); ++i)
+    bodies.emplace_back("opponents[" + std::to_string(i) + "]", s.opponents[i].p_F);
+  const double r = robot.body_radius_m;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const auto& [name, p] = bodies[i];
+    RequireOnField(field, name, p);
+    RequireClearOfPosts(field, name, p, r);
+    for (std::size_t j = 0; j < i; ++j) {
+      if ((p - bodies[j].second).norm() < 2.0 * r) {
+        throw InputError(name + ": position " + PointText(p) + " overlaps " + bodies[j].first +
+                         " at " + PointText(bodies[j].second) + " (robots of radius " +
+                         FormatNumber(r) + " m)");
+      }
+    }
+  }
 }
 
 Vec2 ReadPoint(const JsonObject& o) {
@@ -21,7 +53,8 @@ Vec2 ReadPoint(const JsonObject& o) {
   return Vec2(o.Number("x_m"), o.Number("y_m"));
 }
 
-Scenario LoadScenario(const std::filesystem::path& file, int opponent_count) {
+Scenario LoadScenario(const std::filesystem::path& file, int opponent_count,
+                      const FieldSpec& field, const RobotParams& robot) {
   const JsonDocument doc = JsonDocument::Load(file);
   const JsonObject root = doc.Root();
   root.RejectUnknownKeys({"name", "ball", "attackers", "opponents"});
@@ -35,6 +68,7 @@ Scenario LoadScenario(const std::filesystem::path& file, int opponent_count) {
     root.Fail("opponents", "must list " + std::to_string(opponent_count) +
                                " opponents, one per opponent of the configuration");
   }
+  WithFile(file.string(), [&] { RequirePlayablePlacement(s, field, robot); });
   return s;
 }
 
@@ -183,7 +217,8 @@ MatchConfig LoadMatchConfig(const std::string& reference, const std::filesystem:
   for (const std::string& name : names) {
     const std::filesystem::path file =
         ResolveModelFile(name, DataFolder::kMatchScenarios, c.file.parent_path(), models_dir);
-    c.scenarios.push_back(LoadScenario(file, static_cast<int>(c.opponents.size())));
+    c.scenarios.push_back(
+        LoadScenario(file, static_cast<int>(c.opponents.size()), field, robot));
   }
   WithFile(c.file.string(), [&] { c.Validate(field, sim, robot); });
   return c;

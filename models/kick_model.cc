@@ -55,9 +55,10 @@ void KickModel::Validate() const {
   }
 }
 
-KickModel LoadKickModel(const std::filesystem::path& file) {
-  JsonDocument doc = JsonDocument::Load(file);
-  JsonObject root = doc.Root();
+namespace {
+
+KickModel ReadKickModel(const JsonDocument& doc) {
+  const JsonObject root = doc.Root();
   root.RejectUnknownKeys({"robot", "rolling_deceleration_mps2", "kicks", "sources"});
   KickModel model;
   model.robot = root.String("robot");
@@ -80,8 +81,18 @@ KickModel LoadKickModel(const std::filesystem::path& file) {
     for (const KickSpec& kick : model.kicks) figures.push_back(kick.name);
     RequireSources(root, figures);
   }
-  WithFile(file.string(), [&] { model.Validate(); });
+  WithFile(root.file(), [&] { model.Validate(); });
   return model;
+}
+
+}  // namespace
+
+KickModel LoadKickModel(const std::filesystem::path& file) {
+  return ReadKickModel(JsonDocument::Load(file));
+}
+
+KickModel ParseKickModel(std::string_view text, const std::string& origin) {
+  return ReadKickModel(JsonDocument::Parse(text, origin));
 }
 
 namespace {

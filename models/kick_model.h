@@ -44,6 +44,9 @@ struct KickModel {
 };
 
 KickModel LoadKickModel(const std::filesystem::path& file);
+// The same from text that is not (yet) a file, e.g. a model about to be written, read back
+// first so that nothing the reader would refuse is ever written; `origin` names it in messages.
+KickModel ParseKickModel(std::string_view text, const std::string& origin);
 
 // The model as a kick-model file that LoadKickModel reads back: speeds rounded to 0.1 mm/s,
 // angles to 0.01 degree, the deceleration to 0.1 mm/s^2 (so files diff cleanly).

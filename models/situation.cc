@@ -7,24 +7,11 @@
 #include "common/json_reader.h"
 #include "models/model_paths.h"
 #include "models/physics_params.h"
+#include "models/placement.h"
 
 namespace foresight {
 
 namespace {
-
-bool OnCarpet(const FieldSpec& field, const Vec2& p_F) {
-  return std::abs(p_F.x()) <= field.CarpetHalfLength() &&
-         std::abs(p_F.y()) <= field.CarpetHalfWidth();
-}
-
-std::string PointText(const Vec2& p) {
-  return "(" + FormatNumber(p.x()) + ", " + FormatNumber(p.y()) + ")";
-}
-
-std::string CarpetText(const FieldSpec& field) {
-  return "|x| <= " + FormatNumber(field.CarpetHalfLength()) +
-         " m, |y| <= " + FormatNumber(field.CarpetHalfWidth()) + " m";
-}
 
 StateEstimate ReadState(const JsonObject& root) {
   StateEstimate state;
@@ -53,43 +40,6 @@ auto LoadReferenced(const JsonObject& root, std::string_view key, const std::fil
     root.Fail(key, "refers to " + file.string() + ", which does not exist");
   }
   return load(file);
-}
-
-// The four posts' centres.
-std::vector<Vec2> PostCentres(const GoalSpec& g) {
-  return {Vec2(g.post_centre_x_m, g.post_centre_y_m), Vec2(g.post_centre_x_m, -g.post_centre_y_m),
-          Vec2(-g.post_centre_x_m, g.post_centre_y_m),
-          Vec2(-g.post_centre_x_m, -g.post_centre_y_m)};
-}
-
-// A body of radius_m at p_F must not stand in a post (physics would push it out at once,
-// teleporting the ball a metre in no time; issue 16).
-void RequireClearOfPosts(const FieldSpec& field, const std::string& what, const Vec2& p_F,
-                         double radius_m) {
-  for (const Vec2& post : PostCentres(field.goal)) {
-    if ((p_F - post).norm() < field.goal.post_radius_m + radius_m) {
-      throw InputError(what + ": position " + PointText(p_F) + " overlaps the goal post at " +
-                       PointText(post));
-    }
-  }
-}
-
-// The ball must not start in a goal or in its net: inside the box between the posts' centres
-// and the back net, or within its radius of the side and back nets (the coarse model's net
-// lines).
-void RequireBallOutOfGoals(const FieldSpec& field, const Vec2& p_F) {
-  const GoalSpec& g = field.goal;
-  const double r = field.ball.radius_m;
-  const double ax = std::abs(p_F.x()), ay = std::abs(p_F.y());
-  const double back_x = g.post_centre_x_m + g.net_depth_m;
-  const bool beside_goal = ax > g.post_centre_x_m - r && ax < back_x + r;
-  if (ax > g.post_centre_x_m && ax < back_x && ay < g.post_centre_y_m) {
-    throw InputError("ball: position " + PointText(p_F) + " lies inside a goal");
-  }
-  if ((beside_goal && std::abs(ay - g.post_centre_y_m) < r) ||
-      (ay < g.post_centre_y_m + r && std::abs(ax - back_x) < r)) {
-    throw InputError("ball: position " + PointText(p_F) + " overlaps a goal's net");
-  }
 }
 
 // The coarse rebounds' restitution from the physics file of the field (the one source of the

@@ -5,10 +5,38 @@
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 
+#include <LinearMath/btAlignedAllocator.h>
+
 #include <cassert>
+#include <cstdlib>
 #include <mutex>
+#include <new>
 
 namespace foresight {
+
+namespace {
+
+// Bullet's allocator returns null when malloc fails, and Bullet then writes through the null
+// pointer: under an address-space limit (`ulimit -v`) a run ended in SIGSEGV. Installed before
+// main (this file is in every program that uses Bullet), this one throws std::bad_alloc
+// instead, which ParallelFor and the commands handle (common/parallel_for.h). Only the plain
+// allocation is replaced: Bullet's aligned allocator goes through it, and memory from before
+// the switch is malloc's either way.
+void* AllocateOrThrow(std::size_t size) {
+  if (void* memory = std::malloc(size == 0 ? 1 : size)) return memory;  // malloc(0) may be null
+  throw std::bad_alloc();
+}
+
+void Free(void* memory) {
+  std::free(memory);
+}
+
+[[maybe_unused]] const bool kThrowingAllocator = [] {
+  btAlignedAllocSetCustom(AllocateOrThrow, Free);
+  return true;
+}();
+
+}  // namespace
 
 Contact ContactOf(BodyTag tag) {
   switch (tag) {

@@ -2,8 +2,12 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+#include <charconv>
+#include <cstring>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
 
 #include "common/error.h"
@@ -26,8 +30,43 @@ void WriteToDevice(const std::filesystem::path& file, std::string_view content) 
   WriteStream(out, file.string(), content);
 }
 
+// /dev/stdout, /dev/stderr, /dev/fd/N and /proc/self/fd/N name a descriptor this process has
+// open (a pipe, a terminal, or the file standard output was redirected to). Following the link
+// fails for a pipe and, for a redirected standard output, would replace that file (losing what
+// was printed); the content is written to the descriptor instead, after what was printed.
+std::optional<int> OwnDescriptor(const std::filesystem::path& file) {
+  const std::string name = file.lexically_normal().string();
+  if (name == "/dev/stdout") return 1;
+  if (name == "/dev/stderr") return 2;
+  for (const std::string& prefix :
+       {std::string("/dev/fd/"), std::string("/proc/self/fd/"),
+        "/proc/" + std::to_string(::getpid()) + "/fd/"}) {
+    if (!name.starts_with(prefix)) continue;
+    const char* first = name.data() + prefix.size();
+    const char* last = name.data() + name.size();
+    int fd = -1;
+    const auto [end, error] = std::from_chars(first, last, fd);
+    if (error == std::errc() && end == last && first != last) return fd;
+  }
+  return std::nullopt;
+}
+
+void WriteToDescriptor(int fd, const std::filesystem::path& file, std::string_view content) {
+  if (fd == 1) std::cout.flush();  // what was printed comes first
+  if (fd == 2) std::cerr.flush();
+  while (!content.empty()) {
+    const ssize_t written = ::write(fd, content.data(), content.size());
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) {
+      throw InputError(file.string() + ": write failed: " + std::strerror(errno));
+    }
+    content.remove_prefix(static_cast<std::size_t>(written));
+  }
+}
+
 void WriteRegularFile(const std::filesystem::path& shown, const std::filesystem::path& file,
                       std::string_view content) {
+  const SignalGuard hold_signals;  // a temporary file never outlives an interrupted run
   const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : ".";
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec)) {
@@ -56,8 +95,12 @@ void WriteRegularFile(const std::filesystem::path& shown, const std::filesystem:
 }  // namespace
 
 void WriteFileAtomically(const std::filesystem::path& file, std::string_view content) {
-  const SignalGuard hold_signals;  // a temporary file never outlives an interrupted run
+  // Streams leave no temporary file, so signals are held only around the regular file's write:
+  // opening a FIFO blocks until a reader comes, and Ctrl-C must still end the run then.
   if (file == kStandardOutput) return WriteStream(std::cout, "standard output", content);
+  if (const std::optional<int> fd = OwnDescriptor(file)) {
+    return WriteToDescriptor(*fd, file, content);
+  }
   std::error_code ec;
   // A symbolic link stays a link: the file it points to is replaced, atomically.
   std::filesystem::path target = file;

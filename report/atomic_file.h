@@ -11,10 +11,13 @@ namespace foresight {
 // "-" as an output file: standard output.
 inline constexpr std::string_view kStandardOutput = "-";
 
-// Writes `content` to `file`: a regular file (or a new one) atomically; through a symbolic link
-// to the file it points to (the link stays); to a device or a FIFO (/dev/null, /dev/stdout, a
-// pipe) as a stream, never replacing it; "-" to standard output. Throws InputError naming the
-// file when it cannot be written, or when it is a directory.
+// Writes `content` to `file`: a regular file (or a new one) atomically, with SIGINT and SIGTERM
+// held while the temporary file exists; through a symbolic link to the file it points to (the
+// link stays); to a device or a FIFO (/dev/null, a named pipe) as a stream, never replacing it
+// (and with signals not held: opening a FIFO waits for its reader); "-" to standard output;
+// /dev/stdout, /dev/stderr, /dev/fd/N and /proc/self/fd/N to that open descriptor, after what
+// was printed. Throws InputError naming the file when it cannot be written, or when it is a
+// directory.
 void WriteFileAtomically(const std::filesystem::path& file, std::string_view content);
 
 }  // namespace foresight

@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "common/checks.h"
 #include "common/error.h"
 #include "common/json_reader.h"
 
@@ -52,6 +53,10 @@ ShardPart ParsePart(const std::filesystem::path& dir) {
   h.shard = ParseShard(part.file.string() + ": shard", root.String("shard"));
   h.items = root.Integer("items");
   h.run_time_s = root.Number("run_time_s");
+  if (!(h.run_time_s >= 0.0 && h.run_time_s <= kMaxShardRunTime_s)) {
+    root.Fail("run_time_s", "must be in [0, " + FormatNumber(kMaxShardRunTime_s) + "], got " +
+                                FormatNumber(h.run_time_s));
+  }
   const nlohmann::json& tree = doc.Tree();
   if (!tree["settings"].is_object()) root.Fail("settings", "must be an object");
   h.settings = nlohmann::ordered_json(tree["settings"]);
@@ -211,6 +216,36 @@ int ShardValue::Int() const {
   return static_cast<int>(v);
 }
 
+double ShardValue::Finite() const {
+  const double x = Double();
+  if (!std::isfinite(x)) Fail("must be a finite number, got " + QuoteJson(*value_));
+  return x;
+}
+
+double ShardValue::InRange(double lo, double hi) const {
+  const double x = Double();
+  if (!(x >= lo && x <= hi)) {
+    Fail("must be in [" + FormatNumber(lo) + ", " + FormatNumber(hi) + "], got " +
+         QuoteJson(*value_));
+  }
+  return x;
+}
+
+int ShardValue::Count() const {
+  const int n = Int();
+  if (n < 0) Fail("must be 0 or more, got " + std::to_string(n));
+  return n;
+}
+
+int ShardValue::IntInRange(int lo, int hi) const {
+  const int n = Int();
+  if (n < lo || n > hi) {
+    Fail("must be " + std::to_string(lo) + " .. " + std::to_string(hi) + ", got " +
+         std::to_string(n));
+  }
+  return n;
+}
+
 bool ShardValue::Bool() const {
   if (!value_->is_boolean()) Fail("must be true or false, got " + QuoteJson(*value_));
   return value_->get<bool>();
@@ -226,6 +261,10 @@ ShardValue ResultsOf(const ShardPart& part) {
 }
 
 namespace {
+
+// No ball rolls for an hour (assumption: the simulators stop far sooner; physics at
+// max_roll_time_s, models/physics_params.h).
+constexpr double kMaxOutcomeTime_s = 3600.0;
 
 // An enum stored by its number, checked to be one of its `count` values.
 template <typename Enum>
@@ -246,10 +285,10 @@ nlohmann::json OutcomeShardJson(const Outcome& o) {
 Outcome ReadShardOutcome(const ShardValue& value) {
   if (value.Size() != 6) value.Fail("must be [x, y, category, contact, time, status]");
   Outcome o;
-  o.p_F_rest = {value.At(0).Double(), value.At(1).Double()};
+  o.p_F_rest = {value.At(0).Finite(), value.At(1).Finite()};
   o.category = ShardEnum<Category>(value.At(2), kCategoryCount);
   o.first_contact = ShardEnum<Contact>(value.At(3), static_cast<int>(Contact::kRobot) + 1);
-  o.time_s = value.At(4).Double();
+  o.time_s = value.At(4).InRange(0.0, kMaxOutcomeTime_s);
   o.status = ShardEnum<OutcomeStatus>(value.At(5), kOutcomeStatusCount);
   return o;
 }

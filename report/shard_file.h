@@ -51,6 +51,10 @@ struct ShardPart {
 std::vector<ShardPart> ReadShardParts(const std::vector<std::filesystem::path>& dirs,
                                       const std::string& version);
 
+// A shard's run time may be at most this (about 30 years), so that the merge's sum of run times
+// stays finite.
+inline constexpr double kMaxShardRunTime_s = 1e9;
+
 // Doubles in a shard file: a JSON number reads back to the same bits (nlohmann writes the
 // shortest round-trip form); NaN and the infinities, which JSON lacks, are the strings "nan",
 // "inf" and "-inf".
@@ -70,6 +74,13 @@ class ShardValue {
   std::string String() const;
   bool IsNull() const { return value_->is_null(); }
   bool IsString() const { return value_->is_string(); }
+  // Checked against the range the producer guarantees, so that a tampered or damaged shard is
+  // refused with its place ("FILE: results[3].p[0]: must be in [0, 1], got -5") instead of
+  // reaching a report or a model:
+  double Finite() const;                       // a finite number
+  double InRange(double lo, double hi) const;  // a number in [lo, hi]; NaN never
+  int Count() const;                           // an integer >= 0
+  int IntInRange(int lo, int hi) const;        // an integer in [lo, hi]
   [[noreturn]] void Fail(const std::string& problem) const;
 
  private:

@@ -37,6 +37,9 @@ declare -A seeds=(
   [passing]="$m/experiments/passing.json"
   [cbr_team]="$m/cbr/team.json"
   [cbr_variants]="$m/experiments/cbr_variants.json"
+  [shard_file]="$root/fuzz/seeds/shard_*.json"
+  [shard_trial]="$root/fuzz/seeds/shard_trial.json"
+  [shard_calibration]="$root/fuzz/seeds/shard_calibration.json"
 )
 mkdir -p "$build/findings"
 # Leaks inside third-party libraries we cannot fix (each explained in the file).

@@ -2,9 +2,22 @@
 
 #include <algorithm>
 
+#include "common/geometry.h"
+#include "physics/trial.h"
+
 namespace foresight {
 
 namespace {
+
+// What a physics trial can produce, with a wide margin (assumption: no robot kicks a ball at
+// 50 m/s, no ball rolls 100 m or for an hour, no placement is off by a metre, no playback or
+// carpet factor leaves [0.01, 10]). A shard value outside is damage or tampering, and would
+// otherwise reach the fits (a sample of 1e308 gave a 63-digit deceleration).
+constexpr double kMaxSpeed_mps = 50.0;
+constexpr double kMaxDistance_m = 100.0;
+constexpr double kMaxTime_s = 3600.0;
+constexpr double kMaxPlacement_m = 1.0;
+constexpr double kMinFactor = 0.01, kMaxFactor = 10.0;
 
 nlohmann::json TrialJson(const KickObservation& o, const TrialDraw& d) {
   nlohmann::json rolling = nlohmann::json::array();
@@ -27,20 +40,26 @@ void ReadTrial(const ShardValue& v, PhysicsKickTrials& kick, int trial) {
     v.Fail("must be [speed, direction, roll distance, rolling, draw, launch offset] or null");
   }
   KickObservation o;
-  o.launch_speed_mps = v.At(0).Double();
-  o.launch_direction_rad = v.At(1).Double();
+  o.launch_speed_mps = v.At(0).InRange(0.0, kMaxSpeed_mps);
+  o.launch_direction_rad = v.At(1).InRange(-kPi, kPi);  // wrapped by the trial
   o.has_roll_distance = !v.At(2).IsNull();
-  if (o.has_roll_distance) o.roll_distance_m = v.At(2).Double();
+  if (o.has_roll_distance) o.roll_distance_m = v.At(2).InRange(0.0, kMaxDistance_m);
   const ShardValue rolling = v.At(3);
   if (rolling.Size() % 2 != 0) rolling.Fail("must be pairs of time and speed");
-  for (std::size_t i = 0; i < rolling.Size(); i += 2)
-    o.rolling.push_back({rolling.At(i).Double(), rolling.At(i + 1).Double()});
+  for (std::size_t i = 0; i < rolling.Size(); i += 2) {
+    o.rolling.push_back(
+        {rolling.At(i).InRange(0.0, kMaxTime_s), rolling.At(i + 1).InRange(0.0, kMaxSpeed_mps)});
+  }
   const ShardValue draw = v.At(4);
   if (draw.Size() != 6) draw.Fail("must be the 5 perturbations and the placement redraws");
-  TrialDraw d{draw.At(0).Double(), draw.At(1).Double(), draw.At(2).Double(), draw.At(3).Double(),
-              draw.At(4).Double(), draw.At(5).Int()};
+  TrialDraw d{draw.At(0).InRange(-kMaxPlacement_m, kMaxPlacement_m),
+              draw.At(1).InRange(-kMaxPlacement_m, kMaxPlacement_m),
+              draw.At(2).InRange(-kPi, kPi),
+              draw.At(3).InRange(kMinFactor, kMaxFactor),
+              draw.At(4).InRange(kMinFactor, kMaxFactor),
+              draw.At(5).IntInRange(0, kMaxPlacementDraws)};
   o.has_launch_offset = !v.At(5).IsNull();
-  if (o.has_launch_offset) o.launch_offset_m = v.At(5).Double();
+  if (o.has_launch_offset) o.launch_offset_m = v.At(5).InRange(0.0, kMaxDistance_m);
   kick.observations.push_back(std::move(o));
   kick.draws.push_back(d);
   kick.trials.push_back(trial);

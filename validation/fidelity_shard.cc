@@ -1,5 +1,10 @@
 #include "validation/fidelity_shard.h"
 
+#include <cmath>
+
+#include "common/checks.h"
+#include "common/geometry.h"
+#include "planner/hypothesis.h"
 #include "planner/strategy_names.h"
 
 namespace foresight {
@@ -21,23 +26,45 @@ nlohmann::json EvaluationJson(const ActionEvaluation& e) {
           {"too_risky", e.too_risky}};
 }
 
-ActionEvaluation ReadEvaluation(const ShardValue& v) {
+// An evaluation as HypothesisAccumulator::Finish makes it (planner/hypothesis.h): counts that
+// add up to the samples, the shares computed from them, values in [0, 1], the utility (eq. 5)
+// and the trimming of `params`. Anything else is damage or tampering (a share of -5 reached the
+// report).
+ActionEvaluation ReadEvaluation(const ShardValue& v, const EvaluationParams& params) {
   ActionEvaluation e;
-  e.samples = v["samples"].Int();
+  e.samples = v["samples"].Count();
   const ShardValue counts = v["counts"], p = v["p"];
   if (counts.Size() != e.counts.size()) counts.Fail("must have one count per category");
-  for (std::size_t c = 0; c < e.counts.size(); ++c) e.counts[c] = counts.At(c).Int();
+  long long total = 0;
+  for (std::size_t c = 0; c < e.counts.size(); ++c) total += e.counts[c] = counts.At(c).Count();
+  if (total != e.samples) counts.Fail("must add up to the samples, " + std::to_string(e.samples));
   if (p.Size() != 4) p.Fail("must be [p_infield, p_opp_goal, p_own_goal, p_out]");
-  e.p_infield = p.At(0).Double();
-  e.p_opp_goal = p.At(1).Double();
-  e.p_own_goal = p.At(2).Double();
-  e.p_out = p.At(3).Double();
-  e.value_avg = v["value_avg"].Double();
-  e.potential_avg = v["potential_avg"].Double();
-  e.potential_all_avg = v["potential_all_avg"].Double();
+  const double n = e.samples;
+  const auto share = [&](std::size_t at, Category c) {
+    const double expected = e.samples == 0 ? 0.0 : e.Count(c) / n;
+    const double stored = p.At(at).Double();
+    if (stored != expected) p.At(at).Fail("must be its count / samples, " + FormatNumber(expected));
+    return stored;
+  };
+  e.p_infield = share(0, Category::kInfield);
+  e.p_opp_goal = share(1, Category::kOppGoal);
+  e.p_own_goal = share(2, Category::kOwnGoal);
+  e.p_out = share(3, Category::kOut);
+  e.value_avg = v["value_avg"].InRange(0.0, 1.0);
+  e.potential_avg = v["potential_avg"].Finite();
+  e.potential_all_avg = v["potential_all_avg"].Finite();
   e.utility = v["utility"].Double();
-  e.trimmed_utility = v["trimmed_utility"].Double();
+  const double utility = e.samples == 0 ? 0.0 : Utility(e.value_avg, e.p_infield, e.p_opp_goal, params);
+  if (e.utility != utility) v["utility"].Fail("must be eq. 5 of the shares, " + FormatNumber(utility));
   e.too_risky = v["too_risky"].Bool();
+  if (e.samples > 0 &&
+      e.too_risky != (e.p_out > params.max_out_share || e.Count(Category::kOwnGoal) > 0)) {
+    v["too_risky"].Fail("must follow from p_out and the own goals");
+  }
+  e.trimmed_utility = v["trimmed_utility"].Double();
+  if (e.trimmed_utility != (e.too_risky ? 0.0 : e.utility)) {
+    v["trimmed_utility"].Fail("must be the utility, or 0 when too risky");
+  }
   return e;
 }
 
@@ -45,7 +72,14 @@ nlohmann::json StatusJson(const StatusCounts& s) { return {s.missed, s.not_settl
 
 StatusCounts ReadStatus(const ShardValue& v) {
   if (v.Size() != 3) v.Fail("must be [missed, not_settled, fell]");
-  return {v.At(0).Int(), v.At(1).Int(), v.At(2).Int()};
+  return {v.At(0).Count(), v.At(1).Count(), v.At(2).Count()};
+}
+
+// A number that is finite or, where a statistic is undefined (tau-b of ties), NaN.
+double FiniteOrNan(const ShardValue& v) {
+  const double x = v.Double();
+  if (std::isinf(x)) v.Fail("must be a finite number or nan");
+  return x;
 }
 
 nlohmann::json MetricsJson(const ChoiceMetrics& m) {
@@ -54,8 +88,9 @@ nlohmann::json MetricsJson(const ChoiceMetrics& m) {
 
 ChoiceMetrics ReadMetrics(const ShardValue& v, int candidates) {
   if (v.Size() != 4) v.Fail("must be [choice, tau_b, top1, regret]");
-  ChoiceMetrics m{v.At(0).Int(), v.At(1).Double(), v.At(2).Bool(), v.At(3).Double()};
+  ChoiceMetrics m{v.At(0).Int(), FiniteOrNan(v.At(1)), v.At(2).Bool(), FiniteOrNan(v.At(3))};
   if (m.choice < 0 || m.choice >= candidates) v.At(0).Fail("not a candidate");
+  if (!std::isnan(m.tau_b) && std::abs(m.tau_b) > 1.0) v.At(1).Fail("must be in [-1, 1] or nan");
   return m;
 }
 
@@ -88,18 +123,18 @@ nlohmann::json SituationJson(const SituationFidelity& s) {
           {"physics_status", StatusJson(s.physics_status)}};
 }
 
-StrategyAgreement ReadAgreement(const ShardValue& v) {
+StrategyAgreement ReadAgreement(const ShardValue& v, int kicks) {
   if (v.Size() != 7) v.Fail("must be [strategy, kicks, rotations, agree, regret]");
   StrategyAgreement a;
   const std::optional<Strategy> strategy = ParseStrategy(v.At(0).String());
   if (!strategy) v.At(0).Fail("not a strategy");
   a.strategy = *strategy;
-  a.coarse_kick = v.At(1).Int();
-  a.physics_kick = v.At(2).Int();
-  a.coarse_rotation_rad = v.At(3).Double();
-  a.physics_rotation_rad = v.At(4).Double();
+  a.coarse_kick = v.At(1).IntInRange(kNoKick, kicks - 1);
+  a.physics_kick = v.At(2).IntInRange(kNoKick, kicks - 1);
+  a.coarse_rotation_rad = v.At(3).InRange(-2.0 * kPi, 2.0 * kPi);
+  a.physics_rotation_rad = v.At(4).InRange(-2.0 * kPi, 2.0 * kPi);
   a.agree = v.At(5).Bool();
-  a.regret = v.At(6).Double();
+  a.regret = FiniteOrNan(v.At(6));
   return a;
 }
 
@@ -118,13 +153,15 @@ SituationFidelity ReadSituation(const ShardValue& v, const FidelityCase& fc) {
     CandidateScore score;
     score.kick_index = c["kick"].Int();
     if (score.kick_index < 0 || score.kick_index >= kicks) c["kick"].Fail("not a kick");
-    score.rotation_rad = c["rotation_rad"].Double();
-    score.coarse = ReadEvaluation(c["coarse"]);
-    score.converged = ReadEvaluation(c["converged"]);
-    score.physics = ReadEvaluation(c["physics"]);
+    score.rotation_rad = c["rotation_rad"].InRange(-2.0 * kPi, 2.0 * kPi);
+    const EvaluationParams& params = fc.situation.evaluation;
+    score.coarse = ReadEvaluation(c["coarse"], params);
+    score.converged = ReadEvaluation(c["converged"], params);
+    score.physics = ReadEvaluation(c["physics"], params);
     const ShardValue ci = c["physics_ci"];
     if (ci.Size() != 2) ci.Fail("must be [low, high]");
-    score.physics_ci = {ci.At(0).Double(), ci.At(1).Double()};
+    score.physics_ci = {FiniteOrNan(ci.At(0)), FiniteOrNan(ci.At(1))};
+    if (score.physics_ci.low > score.physics_ci.high) ci.Fail("must have low <= high");
     score.physics_status = ReadStatus(c["physics_status"]);
     s.candidates.push_back(score);
   }
@@ -136,12 +173,13 @@ SituationFidelity ReadSituation(const ShardValue& v, const FidelityCase& fc) {
   s.converged = ReadMetrics(v["converged"], n);
   const ShardValue decisions = v["decisions"];
   for (std::size_t i = 0; i < decisions.Size(); ++i)
-    s.decisions.push_back(ReadAgreement(decisions.At(i)));
+    s.decisions.push_back(ReadAgreement(decisions.At(i), kicks));
   if (s.decisions.size() != AllStrategies().size())
     decisions.Fail("must have one decision per strategy");
   s.coarse_outcomes = ReadShardOutcomes(v["coarse_outcomes"]);
   s.physics_outcomes = ReadShardOutcomes(v["physics_outcomes"]);
   s.physics_trials_run = v["physics_trials_run"].Integer();
+  if (s.physics_trials_run < 0) v["physics_trials_run"].Fail("must be 0 or more");
   s.physics_status = ReadStatus(v["physics_status"]);
   return s;
 }

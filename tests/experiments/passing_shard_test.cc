@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <functional>
 #include <cmath>
 #include <limits>
 
@@ -26,6 +27,13 @@ PassingSetup LoadSetup(const std::string& team, int trials, std::vector<int> sce
   request.trials = trials;
   request.scenarios = std::move(scenarios);
   return LoadPassingSetup(request, testing::ModelsDir());
+}
+
+// What every trial of scenario 1 of `setup` has.
+TrialShape ShapeOf(const PassingSetup& setup) {
+  const Scenario& s = setup.config.scenarios.front();
+  return {static_cast<int>(s.attackers.size()), static_cast<int>(s.opponents.size()),
+          setup.config.time_limit_s + setup.sim.control_step_s};
 }
 
 std::uint64_t Bits(double value) {
@@ -114,19 +122,21 @@ TEST(PassingShardTest, ATrialReadBackIsTheSameTrialBitForBit) {
   ASSERT_FALSE(traced.attacker_counters.empty());
   for (const MatchTrialResult& trial : played.scenarios[0].trials) {
     const nlohmann::json text = nlohmann::json::parse(TrialShardJson(trial).dump());
-    ExpectSameTrial(ReadShardTrial(ShardValue(text, "f", "t")), trial);
+    ExpectSameTrial(ReadShardTrial(ShardValue(text, "f", "t"), ShapeOf(setup)), trial);
   }
   // Numbers JSON cannot write (a team's counter may be any double) and odd details.
   MatchTrialResult odd;
+  odd.counters.opponent_touches = odd.counters.opponent_kicks = {0, 3};
+  odd.counters.attacker_backups = odd.counters.attacker_kicks = {1, 0};
   odd.outcome = TrialOutcome::kPenaltyArea;
   odd.counters.time_s = 1.0 / 3.0;
   odd.attacker_counters = {{"nan", std::numeric_limits<double>::quiet_NaN()},
                            {"tiny", 5e-324},
                            {"inf", -std::numeric_limits<double>::infinity()}};
   odd.events.push_back({0.1, EventKind::kKick, Side::kOpponents, 1, {-0.0, 2.5}, "a \"b\"\n"});
-  odd.trace.push_back({0.2, {1.0, 2.0}, {{{0.1, 0.2}, -3.1}}});
+  odd.trace.push_back({0.2, {1.0, 2.0}, {{{0.1, 0.2}, -3.1}, {}, {}, {{-0.0, 5e-324}, 0.0}}});
   const nlohmann::json text = nlohmann::json::parse(TrialShardJson(odd).dump());
-  MatchTrialResult back = ReadShardTrial(ShardValue(text, "f", "t"));
+  MatchTrialResult back = ReadShardTrial(ShardValue(text, "f", "t"), {2, 2, 60.0});
   EXPECT_TRUE(std::isnan(back.attacker_counters[0].value));
   odd.attacker_counters[0].value = back.attacker_counters[0].value = 0.0;
   ExpectSameTrial(back, odd);
@@ -136,14 +146,19 @@ TEST(PassingShardTest, AMalformedTrialIsRefusedWithItsPlace) {
   const auto error = [](const std::string& text) {
     const nlohmann::json j = nlohmann::json::parse(text);
     try {
-      ReadShardTrial(ShardValue(j, "s/shard.json", "results[4].result"));
+      ReadShardTrial(ShardValue(j, "s/shard.json", "results[4].result"), {2, 2, 60.5});
     } catch (const InputError& e) {
       return std::string(e.what());
     }
     return std::string("(no error)");
   };
   MatchTrialResult trial;
+  trial.counters.opponent_touches = trial.counters.opponent_kicks = {0, 0};
+  trial.counters.attacker_backups = trial.counters.attacker_kicks = {0, 0};
   trial.events.push_back({});
+  trial.trace.push_back({0.0, {0.0, 0.0}, std::vector<Pose2>(4)});
+  trial.trace.push_back({0.5, {0.1, 0.0}, std::vector<Pose2>(4)});
+  ASSERT_EQ(error(TrialShardJson(trial).dump()), "(no error)");
   nlohmann::json good = TrialShardJson(trial);
   nlohmann::json j = good;
   j["outcome"] = 6;
@@ -162,6 +177,68 @@ TEST(PassingShardTest, AMalformedTrialIsRefusedWithItsPlace) {
   j["counters"]["time_s"] = "soon";
   EXPECT_EQ(error(j.dump()),
             "s/shard.json: results[4].result.counters.time_s: must be a number, got \"soon\"");
+}
+
+TEST(PassingShardTest, ATrialUnlikeAnyPlayedTrialIsRefusedWithItsPlace) {
+  const auto error = [](const nlohmann::json& j) {
+    try {
+      ReadShardTrial(ShardValue(j, "s/shard.json", "r"), {2, 2, 60.5});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  MatchTrialResult trial;
+  trial.counters.opponent_touches = trial.counters.opponent_kicks = {0, 0};
+  trial.counters.attacker_backups = trial.counters.attacker_kicks = {0, 0};
+  trial.events.push_back({});
+  trial.trace.push_back({0.0, {0.0, 0.0}, std::vector<Pose2>(4)});
+  trial.trace.push_back({0.5, {0.1, 0.0}, std::vector<Pose2>(4)});
+  const nlohmann::json good = TrialShardJson(trial);
+  ASSERT_EQ(error(good), "(no error)");
+  // A later trace frame without robots made `foresight merge` crash; 1 or 3 robots passed.
+  for (const int robots : {0, 1, 3, 5}) {
+    nlohmann::json j = good;
+    j["trace"][1][3] = nlohmann::json::array();
+    for (int r = 0; r < robots; ++r) j["trace"][1][3].push_back({0.0, 0.0, 0.0});
+    EXPECT_EQ(error(j), "s/shard.json: r.trace[1][3]: must list every robot of the scenario (4), "
+                        "got " + std::to_string(robots));
+  }
+  struct Case {
+    std::function<void(nlohmann::json&)> tamper;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {[](nlohmann::json& j) { j["counters"]["opponent_kicks"] = {0}; },
+       "r.counters.opponent_kicks: must have one count per robot (2), got 1"},
+      {[](nlohmann::json& j) { j["counters"]["grabs_failed"] = -1; },
+       "r.counters.grabs_failed: must be 0 or more, got -1"},
+      {[](nlohmann::json& j) { j["counters"]["time_s"] = 1e308; },
+       "r.counters.time_s: must be a time from 0 to the trial's limit 60.5 s"},
+      {[](nlohmann::json& j) { j["counters"]["time_s"] = "nan"; },
+       "r.counters.time_s: must be a time from 0 to the trial's limit 60.5 s"},
+      {[](nlohmann::json& j) { j["counters"]["last_touch"] = {1, 2}; },
+       "r.counters.last_touch[1]: must be a robot of its side, 0 .. 1, got 2"},
+      {[](nlohmann::json& j) { j["counters"]["last_touch"] = {-1, 0}; },
+       "r.counters.last_touch[1]: must be -1 when no robot touched the ball"},
+      {[](nlohmann::json& j) { j["counters"]["shots"] = {1, 2}; },
+       "r.counters.shots[1]: must not exceed the shots on target"},
+      {[](nlohmann::json& j) { j["counters"]["attacker_kick_sent"] = 7; },
+       "r.counters.attacker_kick_sent: must be 0 or 1"},
+      {[](nlohmann::json& j) { j["events"][0][3] = 2; },
+       "r.events[0][3]: must be a robot of its side, 0 .. 1, got 2"},
+      {[](nlohmann::json& j) { j["events"][0][4] = "inf"; },
+       "r.events[0][4]: must be a finite number, got \"inf\""},
+      {[](nlohmann::json& j) { j["trace"][1][0] = -1.0; },
+       "r.trace[1][0]: must be a time from 0 to the trial's limit 60.5 s"},
+      {[](nlohmann::json& j) { j["trace"][1][3][2][2] = "-inf"; },
+       "r.trace[1][3][2][2]: must be a finite number, got \"-inf\""},
+  };
+  for (const Case& c : cases) {
+    nlohmann::json j = good;
+    c.tamper(j);
+    EXPECT_EQ(error(j), "s/shard.json: " + c.message);
+  }
 }
 
 TEST(PassingShardTest, BothTeamsMergedFromOneTwoOrThreeShardsEqualTheWholeRun) {
@@ -255,6 +332,13 @@ TEST(PassingShardTest, AResultForAnotherTrialIsRefused) {
   j = results;
   j.erase(1);
   EXPECT_EQ(error(j), "s0/shard.json: results: has no item 1");
+  // The recorded trial's trace with a frame emptied of robots: `foresight merge` crashed on it.
+  const nlohmann::json& trace = results[0]["result"]["trace"];
+  ASSERT_GE(trace.size(), 2u);
+  j = results;
+  j[0]["result"]["trace"][1][3] = nlohmann::json::array();
+  EXPECT_EQ(error(j), "s0/shard.json: results[0].result.trace[1][3]: must list every robot of the "
+                      "scenario (4), got 0");
 }
 
 }  // namespace

@@ -96,6 +96,13 @@ class ConfigTest : public ::testing::Test {
       LoadMatchConfig(file.string(), models_, field_, sim_, robot_);
     });
   }
+  // Scenario dg_1 with `from` replaced by `to`, played in the DG configuration: the error.
+  std::string ScenarioError(const std::string& from, const std::string& to) {
+    const auto dir = testing::WriteTempFile("scenarios_dummy", "").parent_path();
+    std::ofstream(dir / "tampered.json")
+        << Replace(testing::ReadText(models_ / "match" / "scenarios" / "dg_1.json"), from, to);
+    return Load(Replace(Shipped("dg.json"), "\"dg_1\"", "\"tampered.json\""));
+  }
 };
 
 TEST_F(ConfigTest, DefenderRegionInThePenaltyAreaIsAnError) {
@@ -113,6 +120,28 @@ TEST_F(ConfigTest, OpponentStartingOutsideItsRegionIsAnError) {
 TEST_F(ConfigTest, UnknownScenarioNamesTheMissingFile) {
   const std::string error = Load(Replace(Shipped("dg.json"), "\"dg_4\"", "\"dg_9\""));
   EXPECT_THAT(error, HasSubstr("dg_9.json"));
+}
+
+TEST_F(ConfigTest, AScenarioAMatchCannotStartFromIsAnErrorNamingFileFieldAndValue) {
+  const std::string file = (testing::WriteTempFile("scenarios_dummy", "").parent_path() /
+                            "tampered.json").string();
+  const std::string ball = "\"x_m\": -1.3,\n    \"y_m\": 0.0";
+  const std::string a = "\"x_m\": -1.65,\n      \"y_m\": 0.0,\n      \"theta_deg\": 0";
+  EXPECT_EQ(ScenarioError(ball, "\"x_m\": 100, \"y_m\": 0.0"),
+            file + ": ball: (100, 0) is off the field (|x| <= 2.7 m, |y| <= 1.8 m)");
+  const std::string far = ScenarioError(ball, "\"x_m\": 1e300, \"y_m\": 0.0");
+  EXPECT_THAT(far, HasSubstr(file + ": ball: ("));
+  EXPECT_THAT(far, HasSubstr("is off the field"));
+  EXPECT_EQ(ScenarioError(a, "\"x_m\": -1.5, \"y_m\": -0.9, \"theta_deg\": 0"),
+            file + ": attackers[1]: position (-1.5, -0.9) overlaps attackers[0] at (-1.5, -0.9) "
+                   "(robots of radius 0.12 m)");
+  EXPECT_THAT(ScenarioError(a, "\"x_m\": -0.35, \"y_m\": 0.05, \"theta_deg\": 0"),
+              HasSubstr(file + ": opponents[0]: position (-0.3, 0) overlaps attackers[0]"));
+  EXPECT_THAT(ScenarioError(a, "\"x_m\": -1.65, \"y_m\": 0.0, \"theta_deg\": 1e308"),
+              HasSubstr(file + ": attackers[0].theta_deg: "));
+  EXPECT_THAT(ScenarioError(a, "\"x_m\": -1.65, \"y_m\": 5.0, \"theta_deg\": 0"),
+              HasSubstr(file + ": attackers[0]: (-1.65, 5) is off the field"));
+  EXPECT_EQ(ScenarioError(ball, ball), "no error");  // the shipped scenario itself
 }
 
 }  // namespace

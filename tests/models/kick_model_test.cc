@@ -179,6 +179,15 @@ TEST(KickModelJsonTest, ALaunchOffsetIsWrittenOnlyWhenThereIsOne) {
   EXPECT_EQ(back.kicks[1].launch_offset_m, 0.0);
 }
 
+TEST(KickModelJsonTest, AModelAboutToBeWrittenIsReadBackByTheKickModelReader) {
+  KickModel model = ShippedNao();
+  EXPECT_EQ(ParseKickModel(KickModelJson(model, ""), "m.json").kicks.size(), model.kicks.size());
+  // A deceleration fitted from damaged data (a shard sample of 1e308) is refused, not written.
+  model.rolling_deceleration_mps2 = 1e63;
+  EXPECT_THAT(InputErrorMessage([&] { ParseKickModel(KickModelJson(model, ""), "m.json"); }),
+              StartsWith("m.json: rolling_deceleration_mps2: "));
+}
+
 TEST(KickModelJsonTest, WrittenModelLoadsBackWithRoundedNumbers) {
   KickModel model;
   model.robot = "nao";

@@ -2,11 +2,16 @@
 #include "report/atomic_file.h"
 
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
+#include <string>
 #include <thread>
 
 #include "common/error.h"
@@ -83,6 +88,69 @@ TEST(AtomicFileTest, DashIsStandardOutput) {
   ::testing::internal::CaptureStdout();
   WriteFileAtomically("-", "to stdout");
   EXPECT_EQ(::testing::internal::GetCapturedStdout(), "to stdout");
+}
+
+// The bits of SIGINT and SIGTERM in a process's blocked-signal mask (/proc/PID/status, SigBlk).
+bool HoldsInterrupts(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("SigBlk:", 0) != 0) continue;
+    const unsigned long long mask = std::stoull(line.substr(7), nullptr, 16);
+    return (mask >> (SIGINT - 1) & 1) != 0 || (mask >> (SIGTERM - 1) & 1) != 0;
+  }
+  ADD_FAILURE() << "no SigBlk for " << pid;
+  return true;
+}
+
+// Whether `pid` waits in openat(2) (/proc/PID/syscall starts with its number, 257 on x86-64).
+bool WaitsInOpen(pid_t pid) {
+  std::ifstream syscall("/proc/" + std::to_string(pid) + "/syscall");
+  std::string number;
+  syscall >> number;
+  return number == "257" || number == "2";  // openat, open
+}
+
+TEST(AtomicFileTest, AFifoWithoutAReaderWaitsWithInterruptsNotHeld) {
+  const fs::path fifo = FreshDir("fifo_no_reader") / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {  // waits for a reader that never comes
+    WriteFileAtomically(fifo, "nobody reads this");
+    ::_exit(0);
+  }
+  int status = 0;
+  while (!WaitsInOpen(child)) {
+    ASSERT_EQ(::waitpid(child, &status, WNOHANG), 0) << "the writer ended without waiting";
+    std::this_thread::yield();
+  }
+  const bool held = HoldsInterrupts(child);
+  EXPECT_FALSE(held) << "Ctrl-C could not end a run waiting for a reader";
+  ::kill(child, held ? SIGKILL : SIGTERM);
+  ::waitpid(child, &status, 0);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == (held ? SIGKILL : SIGTERM));
+}
+
+TEST(AtomicFileTest, StandardOutputByNameIsWrittenAfterWhatWasPrinted) {
+  ::testing::internal::CaptureStdout();
+  std::cout << "printed, ";
+  WriteFileAtomically("/dev/stdout", "then written");
+  // The redirected standard output (a file here) is written to, not replaced.
+  EXPECT_EQ(::testing::internal::GetCapturedStdout(), "printed, then written");
+}
+
+TEST(AtomicFileTest, AnOpenDescriptorByNameIsWrittenAsAStream) {
+  int ends[2];
+  ASSERT_EQ(::pipe(ends), 0);
+  for (const std::string& name : {"/proc/self/fd/", "/dev/fd/"}) {
+    WriteFileAtomically(name + std::to_string(ends[1]), "through " + name);
+    char buffer[64] = {};
+    const ssize_t n = ::read(ends[0], buffer, sizeof buffer);
+    EXPECT_EQ(std::string(buffer, n > 0 ? static_cast<std::size_t>(n) : 0), "through " + name);
+  }
+  ::close(ends[0]);
+  ::close(ends[1]);
 }
 
 TEST(AtomicFileTest, ADirectoryIsRefused) {
