@@ -11,12 +11,10 @@ namespace foresight {
 
 namespace {
 
-// Distance from p to the segment a-b.
-double DistanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 d = b - a;
-  const double l2 = d.squaredNorm();
-  const double s = l2 > 0.0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
-  return (p - (a + s * d)).norm();
+// Distance from p to the segment a-b (a point when they coincide).
+double DistanceBetween(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const double length = (b - a).norm();
+  return length > 0.0 ? DistanceToSegment(p, a, (b - a) / length, length) : (p - a).norm();
 }
 
 // The getter's first kick or pass trajectory in the ball path, or nullptr.
@@ -102,7 +100,7 @@ KickRace RunKickRace(const Problem& problem, const Case& c, const Correspondence
   for (const Vec2& o : problem.opponents) {
     double d = (o - plan.held[0]).norm();
     for (std::size_t i = 1; i < plan.points; ++i) {
-      d = std::min(d, DistanceToSegment(o, plan.held[i - 1], plan.held[i]));
+      d = std::min(d, DistanceBetween(o, plan.held[i - 1], plan.held[i]));
     }
     result.opponents_s = std::min(result.opponents_s, std::max(0.0, d - race.reach_m) / race.speed_mps);
   }

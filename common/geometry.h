@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -40,6 +41,12 @@ inline Vec2 UnitVector(double angle_rad) {
   double s, c;
   SinCos(angle_rad, &s, &c);
   return Vec2(c, s);
+}
+
+// Distance from p to the segment from a along the unit vector dir, length_m long.
+inline double DistanceToSegment(const Vec2& p, const Vec2& a, const Vec2& dir, double length_m) {
+  const double along = std::clamp((p - a).dot(dir), 0.0, length_m);
+  return (a + along * dir - p).norm();
 }
 
 }  // namespace foresight

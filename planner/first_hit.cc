@@ -7,15 +7,9 @@ namespace foresight {
 
 namespace {
 
-// Distance from `p` to the segment [a, a + length * dir].
-double DistanceToPath(const Vec2& p, const Vec2& a, const Vec2& dir, double length) {
-  const double along = std::clamp((p - a).dot(dir), 0.0, length);
-  return (a + along * dir - p).norm();
-}
-
 void HitGoal(const GoalShapes& goal, double ball_radius, const Vec2& start, const Vec2& dir,
              double length, FirstHit& hit) {
-  if (DistanceToPath(goal.bound_centre, start, dir, length) > goal.bound_radius_m) return;
+  if (DistanceToSegment(goal.bound_centre, start, dir, length) > goal.bound_radius_m) return;
   for (const CircleShape& post : goal.posts) {
     hit.Offer(RayCircleEntry(start, dir, post.centre, post.contact_radius_m), Contact::kPost,
               post.centre, Vec2(1.0, 0.0), 0.0);
