@@ -23,6 +23,8 @@ void ParallelFor(int count, int threads, const std::function<void(int)>& body,
   std::exception_ptr error;
   std::mutex mutex;
   std::vector<int> out_of_memory;  // indices whose thread ran out of memory, to run again
+  out_of_memory.reserve(static_cast<std::size_t>(workers));  // one per thread at most: no
+                                                             // allocation when memory is gone
   int done = 0;
   const int report_every = std::max(1, count / 100);
   const auto finished = [&] {
@@ -39,19 +41,28 @@ void ParallelFor(int count, int threads, const std::function<void(int)>& body,
   // that runs out of memory (an address-space limit: every thread's stack and heap count) stops
   // and leaves its index to be run again once the other threads are done.
   const std::function<void()> work = [&] {
-    int i = 0;
     try {
-      for (i = next++; i < count && !failed; i = next++) {
-        body(i);
+      for (int i = next++; i < count && !failed; i = next++) {
+        try {
+          body(i);
+        } catch (const std::bad_alloc&) {  // the body's, not progress's: run it again later
+          std::lock_guard<std::mutex> lock(mutex);
+          out_of_memory.push_back(i);
+          return;
+        }
         finished();
       }
-    } catch (const std::bad_alloc&) {
-      std::lock_guard<std::mutex> lock(mutex);
-      out_of_memory.push_back(i);
     } catch (...) {
       fail();
     }
   };
+  if (workers == 1) {  // no thread to start: the loop itself, exceptions to the caller
+    for (int i = 0; i < count; ++i) {
+      body(i);
+      finished();
+    }
+    return;
+  }
   {
     WorkerThreads helpers(workers - 1, work, start);
     work();
