@@ -1,5 +1,6 @@
 #include "report/atomic_file.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -33,8 +34,19 @@ void WriteToDevice(const std::filesystem::path& file, std::string_view content) 
 // /dev/stdout, /dev/stderr, /dev/fd/N and /proc/self/fd/N name a descriptor this process has
 // open (a pipe, a terminal, or the file standard output was redirected to). Following the link
 // fails for a pipe and, for a redirected standard output, would replace that file (losing what
-// was printed); the content is written to the descriptor instead, after what was printed.
+// was printed); the content is written to the descriptor instead, after what was printed. Any
+// other path to what standard output or error is (a link to /dev/stdout, the redirected file by
+// its own name) is found by identity: the same device and inode.
 std::optional<int> OwnDescriptor(const std::filesystem::path& file) {
+  struct stat named {};
+  if (::stat(file.c_str(), &named) == 0) {
+    for (const int fd : {1, 2}) {
+      struct stat open {};
+      if (::fstat(fd, &open) == 0 && open.st_dev == named.st_dev && open.st_ino == named.st_ino) {
+        return fd;
+      }
+    }
+  }
   const std::string name = file.lexically_normal().string();
   if (name == "/dev/stdout") return 1;
   if (name == "/dev/stderr") return 2;

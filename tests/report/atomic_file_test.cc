@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -103,12 +105,15 @@ bool HoldsInterrupts(pid_t pid) {
   return true;
 }
 
-// Whether `pid` waits in openat(2) (/proc/PID/syscall starts with its number, 257 on x86-64).
+// Whether `pid` waits in openat(2) or open(2) (/proc/PID/syscall starts with its number).
 bool WaitsInOpen(pid_t pid) {
   std::ifstream syscall("/proc/" + std::to_string(pid) + "/syscall");
   std::string number;
   syscall >> number;
-  return number == "257" || number == "2";  // openat, open
+#ifdef SYS_open
+  if (number == std::to_string(SYS_open)) return true;
+#endif
+  return number == std::to_string(SYS_openat);
 }
 
 TEST(AtomicFileTest, AFifoWithoutAReaderWaitsWithInterruptsNotHeld) {
@@ -121,7 +126,14 @@ TEST(AtomicFileTest, AFifoWithoutAReaderWaitsWithInterruptsNotHeld) {
     ::_exit(0);
   }
   int status = 0;
+  // A deadline, not a timing assumption: a writer not yet in open() after a minute is a failure.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
   while (!WaitsInOpen(child)) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      ::kill(child, SIGKILL);
+      ::waitpid(child, &status, 0);
+      FAIL() << "the writer never waited in open()";
+    }
     ASSERT_EQ(::waitpid(child, &status, WNOHANG), 0) << "the writer ended without waiting";
     std::this_thread::yield();
   }
@@ -138,6 +150,16 @@ TEST(AtomicFileTest, StandardOutputByNameIsWrittenAfterWhatWasPrinted) {
   WriteFileAtomically("/dev/stdout", "then written");
   // The redirected standard output (a file here) is written to, not replaced.
   EXPECT_EQ(::testing::internal::GetCapturedStdout(), "printed, then written");
+}
+
+TEST(AtomicFileTest, ALinkToStandardOutputIsWrittenAfterWhatWasPrinted) {
+  const fs::path link = FreshDir("link_to_stdout") / "out.svg";
+  fs::create_symlink("/dev/stdout", link);
+  ::testing::internal::CaptureStdout();
+  std::cout << "printed, ";
+  WriteFileAtomically(link, "then written");
+  EXPECT_EQ(::testing::internal::GetCapturedStdout(), "printed, then written");
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
 }
 
 TEST(AtomicFileTest, AnOpenDescriptorByNameIsWrittenAsAStream) {
