@@ -2,7 +2,7 @@
 // of the goal posts, the ball out of the goals and their nets, bodies apart. Physics would push
 // a body out of a post at once (teleporting the ball a metre in no time) and a ball that starts
 // in a goal or outside the field ends a match before it begins, so files that place things are
-// checked with these (models/situation.h, match/scenario_checks.h). Messages say "WHAT: position
+// checked with these (models/situation.h, match/match_config.cc). Messages say "WHAT: position
 // (x, y) ..." for the caller to prefix with its file.
 #pragma once
 
