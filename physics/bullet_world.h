@@ -42,9 +42,10 @@ void MakeContactsNonSpeculative(btCollisionObject& object);
 // left the foot up to 20 % faster or slower depending on where in the step the contact fell
 // (a launch spread of about 0.04 m/s that no physical cause made). Their contacts with the
 // ball get no positional correction at all: the overlap lasts the few milliseconds of the
-// strike. Their other contacts (a robot standing on its own feet: carpet, posts, nets,
-// obstacles) keep Bullet's Baumgarte correction and speculative contacts, which hold a sole
-// resting on the carpet (without them a standing NAO crept 16 mm and tilted 2.8 deg in 2 s),
+// strike. Their other contacts (a robot standing on its own feet) keep Bullet's Baumgarte
+// correction, and with the carpet speculative contacts, which hold a sole resting on it (the
+// other statics, posts, nets and obstacles, are made non-speculative for the ball, AddStatic,
+// and Bullet takes the pair's smaller threshold, so the robot's contacts with them are too) (without them a standing NAO crept 16 mm and tilted 2.8 deg in 2 s),
 // and get the friction and restitution of `robot_contact`, which must outlive the world's
 // steps (models/physics_params.h, RobotContactParams).
 struct Material;

@@ -64,7 +64,10 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
   PhaseEnd end;
   end.ball = ball_start;
   double last_touch_s = 0.0;
-  for (double t = 0.0; t < steps.max_kick_time_s;) {
+  // The kick phase ends by max_kick_time_s; a floating robot is watched on until it has stood
+  // its settle time after its motion, however slow the motion's playback.
+  const double watch_end_s = std::max(steps.max_kick_time_s, stand_end_s);
+  for (double t = 0.0; t < watch_end_s;) {
     robot.FollowMotion(motion, t, speed_factor);
     if (!end.launched) carpet.ApplyRollingResistance(*ball, radius, dt);
     world.world().stepSimulation(dt, 0, dt);
@@ -106,6 +109,7 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
       continue;
     }
     if (!end.touched && t > motion_end_s + kMissGraceS && (!floating || t >= stand_end_s)) break;
+    if (t >= steps.max_kick_time_s && !floating) break;
   }
   return end;
 }
