@@ -26,7 +26,7 @@ py::array_t<T> Column(const std::vector<TrialResult>& trials, Field&& field) {
 py::dict Simulate(const std::string& situation, const std::string& kick, const py::object& trials,
                   const py::object& seed, const py::object& rotation_deg,
                   const py::object& threads, const py::object& kicks, const py::object& physics,
-                  const py::object& base, const std::optional<std::string>& models) {
+                  const std::optional<std::string>& models, const py::object& base) {
   SimulateOptions options;
   options.situation_file = situation;
   options.kick = kick;
@@ -90,7 +90,8 @@ void AddPhysicsFunctions(py::module_& m) {
         py::arg("trials") = py::none(), py::arg("seed") = py::none(),
         py::arg("rotation_deg") = py::none(), py::arg("threads") = py::none(),
         py::arg("kicks") = py::none(), py::arg("physics") = py::none(),
-        py::arg("base") = py::none(), py::arg("models") = py::none(),
+        py::arg("models") = py::none(), py::arg("base") = py::none(),  // base last: positions
+                                                                      // of older calls hold
         "Physics trials of one kick (`foresight simulate`): a dict of NumPy arrays, one entry "
         "per trial (rest_x_m, rest_y_m in F; category, first_contact, status as codes into "
         "category_names, contact_names, status_names; launch_speed_mps, launch_direction_deg in "
