@@ -5,7 +5,7 @@
 // forward kick: 1.9 mm ahead of the toe's collision surface), so a normal error of 1 cm put the
 // ball inside the foot in 42 % of the trials (up to 26 mm deep at the 3-sigma clip); two AIBO spots
 // even lie inside the paw (forward 6.1 mm, pass 16.9 mm: 71 and 95 % of their draws overlap,
-// docs/EXPERIMENTS.md section F). Bullet pushed such a ball out before the kick. A robot that walks
+// docs/PHYSICS.md). Bullet pushed such a ball out before the kick. A robot that walks
 // up to a ball cannot stand inside it: it touches the ball first. The placement error is therefore
 // drawn conditional on the ball lying outside the body: a draw that puts the ball inside a link of
 // the robot (standing in the kick's stance) is rejected and drawn again (trial.cc, DrawTrial), and

@@ -77,7 +77,7 @@ TEST(MotionClearanceTest, FindsAPawDrivenIntoTheCarpet) {
 // once did not (found in issue 12's fifth pass: the NAO's `forward` 34 mm and `forward_long` 19 mm
 // below it, the AIBO's `forward` 58 mm), which the fixed-base scene let them do, so their
 // launches were not ones a real robot could make; all three were redone standing up
-// (docs/EXPERIMENTS.md section D, "Kicks through the carpet" and "The NAO's kicks above the
+// (docs/PHYSICS.md, "Kicks through the carpet" and "The NAO's kicks above the
 // carpet").
 TEST(MotionClearanceTest, ShippedMotionsStayAboveTheCarpet) {
   for (const char* robot_name : {"nao", "aibo_ers7"}) {
