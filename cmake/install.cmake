@@ -19,6 +19,8 @@ foreach(lib IN LISTS foresight_libraries)
     FILES_MATCHING PATTERN "*.h")
 endforeach()
 install(TARGETS foresight RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The executable of every command but `decide` (app/front_main.cc), where `foresight` finds it.
+install(TARGETS foresight_full RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR})
 # The Python module where Debian's python3 finds it (PREFIX/lib/python3/dist-packages).
 if(TARGET foresight_python)
   install(TARGETS foresight_python LIBRARY DESTINATION ${FORESIGHT_INSTALL_PYTHON_DIR})

@@ -9,8 +9,10 @@ namespace foresight {
 
 PositionValue::PositionValue(const PotentialParams& potential, const FieldSpec& field)
     : potential_(potential) {
-  potential_min_ = Extreme(field, -1.0);
-  potential_max_ = Extreme(field, +1.0);
+  Vec2 p_min_F, p_max_F;
+  GridExtremes(field, &p_min_F, &p_max_F);
+  potential_min_ = Refine(field, p_min_F, -1.0);
+  potential_max_ = Refine(field, p_max_F, +1.0);
   const double range = potential_max_ - potential_min_;
   value_scale_ = range > 0.0 ? 1.0 / range : 0.0;  // a flat potential values every position 0
 }
@@ -35,21 +37,47 @@ Lanes PositionValue::PotentialLanes(Lanes x, Lanes y) const {
   return f;
 }
 
-double PositionValue::Extreme(const FieldSpec& field, double sign) const {
-  // A 0.1 m grid finds the basin; compass search inside the field then refines it to 1e-6 m.
+namespace {
+
+struct GridBest {
+  Vec2 p_F;
+  double f;  // sign * potential
+};
+
+}  // namespace
+
+// The grid of both extremes in one pass, kLanes points at a time (a decision process builds one
+// planner, and this grid was most of its start). Each lane has the scalar Potential's bits and the
+// points are compared in the scalar scan's order, so the extremes are those of that scan.
+void PositionValue::GridExtremes(const FieldSpec& field, Vec2* p_min_F, Vec2* p_max_F) const {
   const double hx = field.HalfLength(), hy = field.HalfWidth();
-  const int nx = static_cast<int>(std::ceil(field.field_length_m / 0.1));
-  const int ny = static_cast<int>(std::ceil(field.field_width_m / 0.1));
-  Vec2 best(-hx, -hy);
-  double best_f = sign * Potential(best);
-  for (int i = 0; i <= nx; ++i) {
-    for (int j = 0; j <= ny; ++j) {
-      const Vec2 p(-hx + field.field_length_m * i / nx, -hy + field.field_width_m * j / ny);
-      const double f = sign * Potential(p);
-      if (f > best_f) best_f = f, best = p;
+  const int nx = static_cast<int>(std::ceil(field.field_length_m / kGridStep_m));
+  const int ny = static_cast<int>(std::ceil(field.field_width_m / kGridStep_m));
+  const Vec2 corner(-hx, -hy);
+  GridBest low{corner, -Potential(corner)}, high{corner, Potential(corner)};
+  const int count = (nx + 1) * (ny + 1);
+  for (int first = 0; first < count; first += kLanes) {
+    Lanes x = Broadcast(-hx), y = Broadcast(-hy);  // padding lanes repeat the corner
+    for (int l = 0; l < kLanes && first + l < count; ++l) {
+      const int i = (first + l) / (ny + 1), j = (first + l) % (ny + 1);
+      x[l] = -hx + field.field_length_m * i / nx;
+      y[l] = -hy + field.field_width_m * j / ny;
+    }
+    const Lanes f = PotentialLanes(x, y);
+    for (int l = 0; l < kLanes && first + l < count; ++l) {
+      if (-f[l] > low.f) low = {Vec2(x[l], y[l]), -f[l]};
+      if (f[l] > high.f) high = {Vec2(x[l], y[l]), f[l]};
     }
   }
-  for (double step = 0.1; step > 1e-6; step *= 0.5) {
+  *p_min_F = low.p_F;
+  *p_max_F = high.p_F;
+}
+
+double PositionValue::Refine(const FieldSpec& field, Vec2 best, double sign) const {
+  // Compass search inside the field from the grid's best point, to 1e-6 m.
+  const double hx = field.HalfLength(), hy = field.HalfWidth();
+  double best_f = sign * Potential(best);
+  for (double step = kGridStep_m; step > 1e-6; step *= 0.5) {
     bool moved = true;
     while (moved) {
       moved = false;

@@ -37,7 +37,10 @@ class PositionValue {
   double potential_max() const { return potential_max_; }
 
  private:
-  double Extreme(const FieldSpec& field, double sign) const;  // sign +1: max, -1: min
+  // The extremes: a 0.1 m grid over the field finds each basin, a compass search refines it.
+  static constexpr double kGridStep_m = 0.1;
+  void GridExtremes(const FieldSpec& field, Vec2* p_min_F, Vec2* p_max_F) const;
+  double Refine(const FieldSpec& field, Vec2 best, double sign) const;  // sign +1: max, -1: min
 
   PotentialParams potential_;
   double potential_min_ = 0.0;

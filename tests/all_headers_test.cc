@@ -9,6 +9,7 @@
 #include "app/cbr_drawing.h"
 #include "app/cbr_retrieve_output.h"
 #include "app/check_command.h"
+#include "app/cli_main.h"
 #include "app/cli_values.h"
 #include "app/decide_command.h"
 #include "app/decision_json.h"
