@@ -72,8 +72,8 @@ experiments-quick: build
 bench: build
 	@$(BUILD)/bench/planner_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
-# Builds for the NAO's Atom (-march=silvermont), for this machine (-march=native) and with Clang
-# must decide with the same bits (scripts/same_bytes.sh); CI runs it.
+# Builds for every SIMD width (GCC default and silvermont: 2 lanes, haswell: 4, native: the
+# widest) and with Clang must decide with the same bits (scripts/same_bytes.sh); CI runs it.
 same-bytes: setup
 	@bash scripts/same_bytes.sh $(BUILD)-march
 

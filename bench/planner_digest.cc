@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "common/random.h"
+#include "planner/lanes.h"
 #include "planner/coarse_planner.h"
 #include "tests/support/test_situations.h"
 
@@ -20,6 +21,7 @@ void Print(const char* what, const ActionEvaluation& e) {
 }
 
 int Run() {
+  std::fprintf(stderr, "planner_digest: %d lanes\n", kLanes);  // not in the digest: builds differ
   RandomStream rng(StreamKey(18, 0));
   for (int scene = 0; scene < 48; ++scene) {
     const double half_x = scene % 2 == 0 ? 4.2 : 4.7, half_y = scene % 2 == 0 ? 2.8 : 3.1;
