@@ -27,6 +27,7 @@ const std::string& RunProvenance::Input(std::string_view key) const {
 }
 
 std::string ContentHash(const std::filesystem::path& file) {
+  if (file.empty()) return "";
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file.string() + ": cannot read the file");
   std::uint64_t hash = 14695981039346656037ULL;  // FNV-1a 64-bit offset basis

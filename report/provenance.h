@@ -34,8 +34,8 @@ struct RunProvenance {
 };
 
 // The file's bytes as "fnv1a64:" and 16 hex digits (FNV-1a, 64 bit): which version of a data
-// file a report used, beside its path. Not a security hash. Throws InputError when the file
-// cannot be read.
+// file a report used, beside its path. Not a security hash. An empty path (data that came from
+// memory, not a file) gives ""; a file that cannot be read throws InputError.
 std::string ContentHash(const std::filesystem::path& file);
 
 // The distinct values in order of first appearance, joined with ", " (the files a run of several

@@ -57,6 +57,7 @@ TEST(ProvenanceTest, ContentHashIsFnv1a64OfTheBytes) {
   EXPECT_NE(ContentHash(testing::WriteTempFile("hash_b_" + id, "{\"x\": 1}")),
             ContentHash(testing::WriteTempFile("hash_c_" + id, "{\"x\": 2}")));
   EXPECT_THROW(ContentHash(testing::FreshTempDir("hash_" + id) / "absent"), InputError);
+  EXPECT_EQ(ContentHash(""), "");  // data from memory has no file to hash
 }
 
 TEST(ProvenanceTest, JoinDistinctKeepsFirstAppearances) {
