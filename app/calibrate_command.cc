@@ -12,6 +12,7 @@
 #include "common/error.h"
 #include "models/model_paths.h"
 #include "report/atomic_file.h"
+#include "report/provenance.h"
 #include "validation/calibration_html.h"
 #include "validation/calibration_report.h"
 #include "validation/calibration_shard.h"
@@ -46,6 +47,10 @@ void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem
   settings.kicks_file = options.kicks_file;
   settings.physics_file = options.physics_file;
   settings.base = ParseBaseFlag(options.base);
+  if (!options.variation_file.empty()) {
+    settings.variation = LoadTrialVariation(options.variation_file, options.robot);
+    run.provenance.SetInput("variation", options.variation_file);
+  }
   settings.progress = [](const std::string& kick) {
     return TerminalProgress("calibrate " + kick + ":", "trials");
   };
@@ -59,6 +64,7 @@ void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem
   run.source = "physics";
   run.provenance.SetInput("situation", DisplayPath(physics.situation_file, models));
   run.provenance.SetInput("physics", DisplayPath(physics.physics_file, models));
+  run.provenance.SetInput("field", physics.field);
   run.provenance.SetInput("robot_base", std::string(RobotBaseName(physics.base)));
   run.carpet_deceleration_mps2 = physics.carpet_deceleration_mps2;
   run.trials_per_kick = settings.trials;
@@ -77,6 +83,7 @@ void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem
 void CalibrateFromCsv(const CalibrateOptions& options, CalibrationRun& run, const KickModel& base) {
   const ObservedKicks observed =
       ReadObservedKicks(options.from_csv, base.rolling_deceleration_mps2);
+  CheckObservedKicks(observed, base, options.from_csv);
   run.source = options.from_csv;
   run.speeds_from_rest = observed.speeds_from_rest;
   for (const std::string& name : ChosenKicks(options, observed.kick_names, options.from_csv)) {
@@ -91,19 +98,30 @@ void CalibrateFromCsv(const CalibrateOptions& options, CalibrationRun& run, cons
   }
 }
 
+// The launch offset the base model gives `kick` (0 when it has no such kick).
+double BaseLaunchOffset(const KickModel& base, const std::string& kick) {
+  const std::optional<int> index = base.Find(kick);
+  return index ? base.kicks[*index].launch_offset_m : 0.0;
+}
+
 void Fit(CalibrationRun& run) {
   std::vector<KickObservation> all;
-  std::vector<KickCalibration> fits;
-  for (CalibratedKick& kick : run.kicks) {
-    kick.fit = CalibrateKick(kick.fit.kick, kick.observations, run.settings);
-    fits.push_back(kick.fit);
+  for (const CalibratedKick& kick : run.kicks) {
     all.insert(all.end(), kick.observations.begin(), kick.observations.end());
   }
+  // The deceleration first (rows with a launch and a rest, or trajectories): a log's rows that
+  // have only a rest position get their speeds from it, not from the committed model's.
   run.deceleration = FitPooledDeceleration(all, run.settings);
-  // The launch offsets with the deceleration the model gets (physics trials have launch
-  // points; a CSV log does not, and its kicks keep the base model's offsets).
   const double a = run.deceleration ? run.deceleration->deceleration_mps2
                                     : run.base.rolling_deceleration_mps2;
+  std::vector<KickCalibration> fits;
+  for (CalibratedKick& kick : run.kicks) {
+    RederiveSpeedsFromRest(kick.observations, a, BaseLaunchOffset(run.base, kick.fit.kick));
+    kick.fit = CalibrateKick(kick.fit.kick, kick.observations, run.settings);
+    fits.push_back(kick.fit);
+  }
+  // The launch offsets with the deceleration the model gets (physics trials have launch
+  // points; a CSV log does not, and its kicks keep the base model's offsets).
   for (std::size_t i = 0; i < run.kicks.size(); ++i) {
     run.kicks[i].fit.launch_offset = FitLaunchOffset(run.kicks[i].observations, a);
     fits[i].launch_offset = run.kicks[i].fit.launch_offset;
@@ -169,13 +187,17 @@ void AddCalibrateCommand(CLI::App& app, CalibrateOptions& options) {
   cmd->add_option("--physics", options.physics_file,
                   "Physics file (default: MODELS/physics/<field>.json)");
   AddBaseOption(*cmd, options.base);
+  auto* variation = cmd->add_option(
+      "--variation", options.variation_file,
+      "Trial variation file (what --fit-variation writes) replacing robot.json's");
   cmd->add_option("--from-csv", options.from_csv,
                   "Fit observed kicks from this CSV instead of running physics")
       ->excludes(trials);
   cmd->add_flag("--fit-variation", options.fit_variation,
                 "With --from-csv: fit the physical causes of the spread (placement, playback "
-                "speed) so physics kicks spread as the logged ones; --out gets robot.json's "
-                "trial_variation");
+                "speed) so physics kicks spread as the logged ones; --out gets a variation file "
+                "that calibrate --variation and simulate --variation read")
+      ->excludes(variation);
   cmd->add_option("--fit-trials", options.fit_trials,
                   "Physics trials per kick and run of --fit-variation")
       ->capture_default_str();
@@ -196,9 +218,17 @@ int RunVariationFit(const CalibrateOptions& options, const std::filesystem::path
   const KickModel base = LoadKickModel(options.kicks_file.empty()
                                            ? DataFile(models, DataFolder::kKicks, options.robot)
                                            : std::filesystem::path(options.kicks_file));
-  const ObservedKicks observed = ReadObservedKicks(options.from_csv, base.rolling_deceleration_mps2);
+  ObservedKicks observed = ReadObservedKicks(options.from_csv, base.rolling_deceleration_mps2);
+  CheckObservedKicks(observed, base, options.from_csv);
+  // Rest-only rows' speeds with the log's own deceleration, as calibrate fits it.
+  std::vector<KickObservation> all;
+  for (const auto& [name, rows] : observed.by_kick) all.insert(all.end(), rows.begin(), rows.end());
+  const std::optional<DecelerationFit> deceleration =
+      FitPooledDeceleration(all, CalibrationSettings{});
+  const double a = deceleration ? deceleration->deceleration_mps2 : base.rolling_deceleration_mps2;
   std::map<std::string, LaunchSpread> spreads;
   for (const std::string& name : ChosenKicks(options, observed.kick_names, options.from_csv)) {
+    RederiveSpeedsFromRest(observed.by_kick.at(name), a, BaseLaunchOffset(base, name));
     spreads[name] = SpreadOf(observed.by_kick.at(name));
   }
   VariationFitSettings settings;
@@ -212,7 +242,8 @@ int RunVariationFit(const CalibrateOptions& options, const std::filesystem::path
   CheckOutputs(options);
   WriteFileAtomically(options.out_file, json);
   std::cout << text << "wrote the fitted trial_variation to " << options.out_file
-            << " (copy it into the robot's robot.json)\n"
+            << " (physics reads it with calibrate --variation " << options.out_file
+            << " or simulate --variation " << options.out_file << ")\n"
             << std::flush;
   if (!std::cout) throw InputError("cannot write to standard output");
   return 0;
@@ -242,13 +273,18 @@ CalibrationRun CalibrateInMemory(const CalibrateOptions& options,
   // The report's order; physics fills in the first two, a CSV leaves them empty.
   run.provenance.inputs = {{"situation", ""},
                            {"physics", ""},
+                           {"field", ""},
                            {"base_kicks", DisplayPath(base_file, models)},
+                           {"base_kicks_hash", ContentHash(base_file)},
                            {"out", options.out_file}};
   CheckOutputs(options);  // before the work, not after
   if (options.from_csv.empty()) {
     if (options.kick.empty() && !options.all) throw InputError("--kick or --all: say which kicks");
     CalibrateFromPhysics(options, models, run, parts);
   } else {
+    if (!options.variation_file.empty()) {
+      throw InputError("--variation: only for physics calibration, not with --from-csv");
+    }
     CalibrateFromCsv(options, run, run.base);
   }
   Fit(run);
@@ -266,6 +302,7 @@ nlohmann::ordered_json CalibrateSettings(const CalibrateOptions& o) {
   return {{"--robot", o.robot},       {"--kick", o.kick},         {"--all", o.all},
           {"--trials", o.trials},     {"--seed", o.seed},         {"--situation", o.situation_file},
           {"--kicks", o.kicks_file},  {"--physics", o.physics_file}, {"--base", o.base},
+          {"--variation", o.variation_file},
           {"--confidence", o.confidence}, {"--resamples", o.resamples}};
 }
 
@@ -288,6 +325,9 @@ int RunCalibrationShard(const CalibrateOptions& options, const Shard& shard,
   settings.kicks_file = options.kicks_file;
   settings.physics_file = options.physics_file;
   settings.base = ParseBaseFlag(options.base);
+  if (!options.variation_file.empty()) {
+    settings.variation = LoadTrialVariation(options.variation_file, options.robot);
+  }
   settings.shard = shard;
   const PhysicsCalibration part = RunPhysicsCalibration(settings, models);
   const ShardHeader header{kCalibrateCommand, FORESIGHT_VERSION, shard, CalibrateSettings(options),
@@ -323,6 +363,7 @@ int MergeCalibrationCommand(const std::vector<ShardPart>& parts, const std::stri
   options.kicks_file = SettingString(first, "--kicks");
   options.physics_file = SettingString(first, "--physics");
   options.base = SettingString(first, "--base");
+  options.variation_file = SettingString(first, "--variation");
   options.confidence = SettingString(first, "--confidence");
   options.resamples = SettingString(first, "--resamples");
   // What `calibrate --report DIR --out DIR/ROBOT_calibrated.json` writes.

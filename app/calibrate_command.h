@@ -27,6 +27,7 @@ struct CalibrateOptions {
   std::string kicks_file;      // the committed model to start from (default: the situation's)
   std::string physics_file;
   std::string base;  // --base: empty, the physics file's
+  std::string variation_file;  // --variation: replaces robot.json's trial_variation
   std::string from_csv;
   bool fit_variation = false;     // with from_csv: fit the physical causes, not the kick model
   std::string fit_trials = "400";  // physics trials per kick and run of that fit

@@ -4,9 +4,11 @@
 
 #include "app/base_flag.h"
 #include "app/cli_values.h"
+#include "app/report_text.h"
 #include "common/error.h"
 #include "models/model_paths.h"
 #include "report/atomic_file.h"
+#include "report/provenance.h"
 #include "validation/physics_checks.h"
 
 namespace foresight {
@@ -40,7 +42,13 @@ int RunCheckCommand(const CheckOptions& options, const std::string& models_dir) 
                   << std::flush;
       });
   if (!options.junit_file.empty()) {
-    WriteFileAtomically(options.junit_file, JUnitXml("foresight check " + suite.name, results));
+    WriteFileAtomically(options.junit_file,
+                        JUnitXml("foresight check " + suite.name, results,
+                                 {{"version", FORESIGHT_VERSION},
+                                  {"spec", DisplayPath(spec_file, models)},
+                                  {"spec_hash", ContentHash(spec_file)},
+                                  {"robot_base", options.base.empty() ? "as the physics files"
+                                                                      : options.base}}));
   }
   std::cout << results.size() - failed << " of " << results.size() << " checks passed\n"
             << std::flush;

@@ -11,11 +11,13 @@ namespace foresight {
 
 namespace {
 
-// Colours of the paper's Fig. 2 for the first three kicks (forward cyan, left yellow, right
-// red), then more for larger kick models.
+// The paper's Fig. 2 draws forward cyan, left yellow, right red; here the left kick is purple
+// because the field draws the opponent's posts yellow and the own posts blue, the ball orange
+// (report/field_svg.cc): every colour below is far from those and from each other, so a sample
+// is never mistaken for a post or the ball.
 const char* KickColour(int index) {
-  static const char* const kColours[] = {"#00c8e6", "#ffd400", "#e6194b", "#f58231",
-                                         "#911eb4", "#46f0f0", "#f032e6", "#bcf60c"};
+  static const char* const kColours[] = {"#00c8e6", "#911eb4", "#e6194b", "#f032e6",
+                                         "#9a6324", "#000075", "#fabebe", "#808080"};
   return kColours[static_cast<std::size_t>(index) % (sizeof kColours / sizeof *kColours)];
 }
 

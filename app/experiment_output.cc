@@ -23,7 +23,8 @@ RunProvenance ExperimentProvenance(const std::filesystem::path& params_file, con
   provenance.seed = seed;
   provenance.inputs = {{"file", DisplayPath(params_file, models)},
                        {"situation", scene.name},
-                       {"kicks", DisplayPath(scene.kicks_file, models)}};
+                       {"kicks", DisplayPath(scene.kicks_file, models)},
+                       {"kicks_hash", ContentHash(scene.kicks_file)}};
   return provenance;
 }
 

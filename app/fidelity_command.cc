@@ -10,6 +10,7 @@
 #include "common/error.h"
 #include "models/model_paths.h"
 #include "report/atomic_file.h"
+#include "report/provenance.h"
 #include "validation/fidelity_html.h"
 #include "validation/fidelity_report.h"
 #include "validation/fidelity_shard.h"
@@ -79,10 +80,27 @@ FidelityPlan PlanFidelity(const FidelityOptions& options, const std::filesystem:
   overrides.coarse_rebounds = ParseSwitch("--coarse-rebounds", options.coarse_rebounds);
   overrides.physics_file = options.physics_file;
   plan.set = LoadFidelitySet(options.situations, models, overrides, options.situation_class);
+  // What the situations used: robot, field, kick model (with its content hash) and the physics
+  // file each one's trials read (--physics, else MODELS/physics/<field>.json).
+  std::vector<std::string> robots, fields, kick_models, kick_hashes, physics_files;
+  for (const FidelityCase& c : plan.set.cases) {
+    robots.push_back(c.situation.kicks.robot);
+    fields.push_back(c.situation.field.name);
+    kick_models.push_back(DisplayPath(c.situation.kicks_file, models));
+    kick_hashes.push_back(ContentHash(c.situation.kicks_file));
+    physics_files.push_back(DisplayPath(
+        options.physics_file.empty()
+            ? DataFile(models, DataFolder::kPhysics, c.situation.field.name)
+            : std::filesystem::path(options.physics_file),
+        models));
+  }
   run.provenance.inputs = {{"situations_set", plan.set.name},
                            {"set_file", DisplayPath(plan.set.file, models)},
-                           {"physics_file", options.physics_file.empty() ? "physics/<field>.json"
-                                                                         : options.physics_file},
+                           {"robot", JoinDistinct(robots)},
+                           {"field", JoinDistinct(fields)},
+                           {"kick_model", JoinDistinct(kick_models)},
+                           {"kick_model_hash", JoinDistinct(kick_hashes)},
+                           {"physics_file", JoinDistinct(physics_files)},
                            {"class", options.situation_class.empty() ? "all"
                                                                      : options.situation_class},
                            {"coarse_rebounds", options.coarse_rebounds.empty()

@@ -65,6 +65,7 @@ RunProvenance PassingProvenance(const PassingOptions& o, const PassingInputs& in
               {"simulation", DisplayPath(setup.sim.file, models)},
               {"field", DisplayPath(setup.field_file, models)},
               {"kicks", DisplayPath(setup.kicks_file, models)},
+              {"kicks_hash", ContentHash(setup.kicks_file)},
               {"config", DisplayPath(setup.config.file, models)},
               {"team", team},
               {"team_file", team_file},

@@ -27,6 +27,8 @@ void AddSimulateCommand(CLI::App& app, SimulateOptions& options) {
   cmd->add_option("--physics", options.physics_file,
                   "Physics file (default: MODELS/physics/<field>.json)");
   AddBaseOption(*cmd, options.base);
+  cmd->add_option("--variation", options.variation_file,
+                  "Trial variation file (calibrate --fit-variation) replacing robot.json's");
   cmd->add_option("--trials", options.trials, "Number of trials")->capture_default_str();
   cmd->add_option("--seed", options.seed, "Random seed")->capture_default_str();
   cmd->add_option("--threads", options.threads, "Worker threads (0: all cores)")
@@ -62,6 +64,11 @@ SimulationPlan PlanSimulation(const SimulateOptions& options, const std::filesys
     throw InputError("--kick: robot '" + plan.setup->robot.spec.name +
                      "' has no motion for kick '" + options.kick + "'");
   }
+  if (!options.variation_file.empty()) {
+    // The scene reads the robot's variation at every trial, so this is all it takes.
+    plan.setup->robot.spec.variation =
+        LoadTrialVariation(options.variation_file, plan.setup->robot.spec.name);
+  }
   request.state = plan.setup->state;  // physics plays the world as it is: the mean state
   request.record_trace = !options.trace_file.empty();
   return plan;
@@ -78,6 +85,7 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
   run.situation = &setup->situation;
   run.robot = &setup->robot;
   run.physics_file = setup->physics_file;
+  run.variation_file = options.variation_file;
   run.base = setup->params.robot.base;
   run.models_dir = models;
   run.kick = options.kick;

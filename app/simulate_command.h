@@ -17,6 +17,7 @@ struct SimulateOptions {
   std::string kicks_file;    // replaces the situation's kick model when given
   std::string physics_file;  // default: MODELS/physics/<field>.json
   std::string base;          // --base; empty: the physics file's
+  std::string variation_file;  // --variation: replaces robot.json's trial_variation
   std::string trials = "100";
   std::string seed = "1";
   std::string threads = "0";  // 0: all cores

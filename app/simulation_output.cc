@@ -5,6 +5,7 @@
 #include "app/report_text.h"
 #include "common/geometry.h"
 #include "report/field_svg.h"
+#include "report/provenance.h"
 
 namespace foresight {
 
@@ -79,7 +80,14 @@ nlohmann::ordered_json SimulationJson(const SimulationRun& run) {
                     {"file", run.situation_file.string()},
                     {"field", DisplayPath(run.situation->field_file, run.models_dir)},
                     {"kicks", DisplayPath(run.situation->kicks_file, run.models_dir)},
-                    {"physics", DisplayPath(run.physics_file, run.models_dir)}};
+                    {"kicks_hash", ContentHash(run.situation->kicks_file)},
+                    {"physics", DisplayPath(run.physics_file, run.models_dir)},
+                    {"trial_variation",
+                     run.variation_file.empty()
+                         ? DisplayPath(run.models_dir / "robots" / run.robot->spec.name /
+                                           "robot.json",
+                                       run.models_dir)
+                         : run.variation_file.generic_string()}};
   j["robot"] = run.robot->spec.name;
   j["base"] = RobotBaseName(run.base);
   j["kick"] = run.kick;

@@ -19,6 +19,7 @@ struct SimulationRun {
   const Situation* situation = nullptr;
   const Robot* robot = nullptr;
   std::filesystem::path physics_file;
+  std::filesystem::path variation_file;  // --variation; empty: robot.json's trial_variation
   RobotBase base = RobotBase::kFixed;
   std::filesystem::path models_dir;
   std::string kick;

@@ -138,7 +138,13 @@ const std::map<std::string, Reader>& Readers() {
        [](auto d, auto n) { LoadStabilityParams(Write("st.json", d, n).string(), models); }},
       {"strategies",
        [](auto d, auto n) { LoadStrategiesParams(Write("sg.json", d, n).string(), models); }},
-      {"observed_kicks", [](auto d, auto n) { ReadObservedKicks(Write("o.csv", d, n), 0.27); }},
+      {"observed_kicks",
+       [](auto d, auto n) {
+         // The reader, then its unit and consistency checks against the shipped NAO model.
+         static const KickModel nao = LoadKickModel(DataFile(models, DataFolder::kKicks, "nao"));
+         const std::filesystem::path file = Write("o.csv", d, n);
+         CheckObservedKicks(ReadObservedKicks(file, 0.27), nao, file);
+       }},
       {"case",
        [](auto d, auto n) {
          static const CaseRules rules = LoadCaseBase(DefaultCaseBasePath(models), models).rules;

@@ -217,6 +217,19 @@ RobotSpec LoadRobotSpec(const std::filesystem::path& file) {
   return spec;
 }
 
+TrialVariation LoadTrialVariation(const std::filesystem::path& file, const std::string& robot) {
+  const JsonDocument document = JsonDocument::Load(file);
+  const JsonObject root = document.Root();
+  root.RejectUnknownKeys({"robot", "source", "spread_measure", "trial_variation", "fit"});
+  const std::string for_robot = root.String("robot");
+  if (for_robot != robot) {
+    root.Fail("robot", "the variation is for '" + for_robot + "', not for '" + robot + "'");
+  }
+  TrialVariation variation = ReadVariation(root.Object("trial_variation"));
+  variation.Validate(file.string());
+  return variation;
+}
+
 std::optional<int> Robot::FindMotion(const std::string& kick_name) const {
   for (std::size_t i = 0; i < spec.kick_motion_files.size(); ++i) {
     if (spec.kick_motion_files[i].first == kick_name) return static_cast<int>(i);

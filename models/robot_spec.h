@@ -45,6 +45,12 @@ struct RobotSpec {
 
 RobotSpec LoadRobotSpec(const std::filesystem::path& file);
 
+// A variation file: what `foresight calibrate --fit-variation` writes ({"robot", "source",
+// "spread_measure", "trial_variation": {robot.json's keys}, "fit"}), read by `calibrate
+// --variation` and `simulate --variation` in place of robot.json's trial_variation. Throws
+// InputError when the file is for another robot than `robot`.
+TrialVariation LoadTrialVariation(const std::filesystem::path& file, const std::string& robot);
+
 struct Robot;
 
 // The fastest a joint turns in a motion played as written, sampled every millisecond: the joint

@@ -1,6 +1,11 @@
 #include "report/provenance.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+
+#include "common/error.h"
 
 #include "report/report_format.h"
 
@@ -19,6 +24,32 @@ const std::string& RunProvenance::Input(std::string_view key) const {
   static const std::string kNone;
   const auto it = std::ranges::find(inputs, key, &RunInput::key);
   return it != inputs.end() ? it->value : kNone;
+}
+
+std::string ContentHash(const std::filesystem::path& file) {
+  if (file.empty()) return "";
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string() + ": cannot read the file");
+  std::uint64_t hash = 14695981039346656037ULL;  // FNV-1a 64-bit offset basis
+  for (auto it = std::istreambuf_iterator<char>(in); it != std::istreambuf_iterator<char>(); ++it) {
+    hash ^= static_cast<unsigned char>(*it);
+    hash *= 1099511628211ULL;  // FNV-1a 64-bit prime
+  }
+  if (in.bad()) throw InputError(file.string() + ": cannot read the file");
+  char text[32];
+  std::snprintf(text, sizeof text, "fnv1a64:%016llx", static_cast<unsigned long long>(hash));
+  return text;
+}
+
+std::string JoinDistinct(const std::vector<std::string>& values) {
+  std::vector<std::string> seen;
+  std::string joined;
+  for (const std::string& v : values) {
+    if (std::ranges::find(seen, v) != seen.end()) continue;
+    seen.push_back(v);
+    joined += (joined.empty() ? "" : ", ") + v;
+  }
+  return joined;
 }
 
 void AddInputsJson(nlohmann::ordered_json& json, const RunProvenance& provenance) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -31,6 +32,15 @@ struct RunProvenance {
   // The input's value; "" when the run has no such input.
   const std::string& Input(std::string_view key) const;
 };
+
+// The file's bytes as "fnv1a64:" and 16 hex digits (FNV-1a, 64 bit): which version of a data
+// file a report used, beside its path. Not a security hash. An empty path (data that came from
+// memory, not a file) gives ""; a file that cannot be read throws InputError.
+std::string ContentHash(const std::filesystem::path& file);
+
+// The distinct values in order of first appearance, joined with ", " (the files a run of several
+// situations read).
+std::string JoinDistinct(const std::vector<std::string>& values);
 
 // Appends every input to the JSON object `json` as "key": value, in order.
 void AddInputsJson(nlohmann::ordered_json& json, const RunProvenance& provenance);

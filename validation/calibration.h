@@ -40,6 +40,9 @@ struct KickObservation {
   std::vector<SpeedSample> rolling;
   double roll_distance_m = 0.0;
   bool has_roll_distance = false;
+  // A logged kick without a launch: the speed is sqrt(2 a d) from the roll distance, for an
+  // assumed deceleration until calibration has fitted one.
+  bool speed_from_rest = false;
   // Physics only, with a roll distance: how far from where the ball lay free rolling started
   // (the trial's launch point).
   double launch_offset_m = 0.0;

@@ -24,6 +24,16 @@ std::function<double(double)> NormalDensity(double mean, double sd) {
   return [mean, sd](double x) { return NormalPdf((x - mean) / sd) / sd; };
 }
 
+// The launch offset the model gets: fitted (with its standard error and the measured launch
+// point), or the committed one kept when the observations have no launch points (a log).
+std::string LaunchOffsetText(const KickCalibration& c) {
+  if (!c.launch_offset) return "not fitted (no launch points): the committed value is kept";
+  const LaunchOffsetFit& f = *c.launch_offset;
+  return Fixed(f.offset_m, 3) + " +- " + Fixed(f.standard_error_m, 3) + " (from " +
+         std::to_string(f.kicks) + " kicks; launch point at " + Fixed(f.launch_point_m, 3) +
+         " m; written to the model)";
+}
+
 void KickTable(HtmlReport& html, const CalibrationRun& run, const CalibratedKick& kick) {
   const KickCalibration& c = kick.fit;
   const std::optional<int> base = run.base.Find(c.kick);
@@ -43,7 +53,9 @@ void KickTable(HtmlReport& html, const CalibrationRun& run, const CalibratedKick
        {"sigma_alpha (deg, circular)",
         WithInterval(c.direction.sd_rad, c.direction.sd_ci_rad, 2, kRadToDeg),
         committed(&KickSpec::sigma_direction_rad, kRadToDeg, 2),
-        NormalityText(c.direction_normality, run.settings.normality_level)}});
+        NormalityText(c.direction_normality, run.settings.normality_level)},
+       {"launch offset (m)", LaunchOffsetText(c), committed(&KickSpec::launch_offset_m, 1.0, 3),
+        ""}});
 }
 
 void KickFigures(HtmlReport& html, const CalibrationRun& run, const CalibratedKick& kick) {
@@ -126,9 +138,10 @@ std::string CalibrationHtml(const CalibrationRun& run) {
       {"trials per kick", std::to_string(run.trials_per_kick)},
       {"intervals", Fixed(run.settings.confidence * 100.0, 0) + " %, bootstrap " +
                         std::to_string(run.settings.resamples) + " resamples"},
-      {"situation", p.Input("situation")},
-      {"physics", p.Input("physics")},
-      {"committed model", p.Input("base_kicks")},
+      {"situation", p.Input("situation").empty() ? "-" : p.Input("situation")},
+      {"physics", p.Input("physics").empty() ? "-" : p.Input("physics")},
+      {"field", p.Input("field").empty() ? "-" : p.Input("field")},
+      {"committed model", p.Input("base_kicks") + " (" + p.Input("base_kicks_hash") + ")"},
       {"fitted model written to", p.Input("out")}};
   for (auto& row : ProvenanceRows(p)) header.push_back(std::move(row));
   html.KeyValues(header);

@@ -138,9 +138,13 @@ std::vector<std::string> CalibrationWarnings(const CalibrationRun& run) {
   }
   if (run.speeds_from_rest > 0) {
     warnings.push_back(std::to_string(run.speeds_from_rest) +
-                       " rows had no launch speed; it was derived from the rest position with "
-                       "the assumed deceleration " +
-                       Fixed(run.base.rolling_deceleration_mps2, 4) + " m/s^2");
+                       " rows had no launch speed; it was derived from the rest position as "
+                       "sqrt(2 a (d - launch offset)) with " +
+                       (run.deceleration ? "the fitted deceleration " +
+                                               Fixed(run.deceleration->deceleration_mps2, 4)
+                                         : "the committed deceleration " +
+                                               Fixed(run.base.rolling_deceleration_mps2, 4)) +
+                       " m/s^2");
   }
   if (!run.deceleration) {
     warnings.push_back(

@@ -150,6 +150,9 @@ std::string FidelityHtml(const FidelityRun& run) {
                                std::to_string(r.physics_trials_run) + " in all; " +
                                StatusCountsText(r.physics_status) + ")"},
       {"seed", std::to_string(p.seed)},
+      {"robot", p.Input("robot")},
+      {"field", p.Input("field")},
+      {"kick model", p.Input("kick_model") + " (" + p.Input("kick_model_hash") + ")"},
       {"physics", p.Input("physics_file")}};
   for (auto& row : ProvenanceRows(p)) header.push_back(std::move(row));
   html.KeyValues(header);

@@ -92,6 +92,7 @@ PhysicsCalibration Calibration(const PhysicsCalibrationSettings& settings,
       ChooseKicks(settings.kick, KicksWithMotion(*setup), settings.kick_field,
                   "the motions of robot '" + settings.robot + "'");
   result.physics_file = setup->physics_file;
+  result.field = setup->situation.field.name;
   result.base = setup->params.robot.base;
   result.carpet_deceleration_mps2 = setup->params.carpet.rolling_deceleration_mps2;
   result.model = setup->situation.kicks;

@@ -53,6 +53,7 @@ struct PhysicsKickTrials {
 struct PhysicsCalibration {
   std::filesystem::path situation_file;  // as loaded (the default filled in)
   std::filesystem::path physics_file;
+  std::string field;                      // the situation's field
   RobotBase base = RobotBase::kFixed;     // the kicking robot's, as played
   double carpet_deceleration_mps2 = 0.0;  // the carpet's truth
   KickModel model;                        // the situation's kick model (after kicks_file)

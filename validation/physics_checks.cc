@@ -245,7 +245,8 @@ std::vector<CheckResult> RunChecks(const CheckSuite& suite, const std::filesyste
   return results;
 }
 
-std::string JUnitXml(const std::string& suite_name, const std::vector<CheckResult>& results) {
+std::string JUnitXml(const std::string& suite_name, const std::vector<CheckResult>& results,
+                     const std::vector<std::pair<std::string, std::string>>& properties) {
   int failures = 0;
   double time = 0.0;
   for (const CheckResult& r : results) {
@@ -256,6 +257,14 @@ std::string JUnitXml(const std::string& suite_name, const std::vector<CheckResul
   out += "  <testsuite name=\"" + SvgWriter::Escape(suite_name) + "\" tests=\"" +
          std::to_string(results.size()) + "\" failures=\"" + std::to_string(failures) +
          "\" errors=\"0\" time=\"" + Seconds(time) + "\">\n";
+  if (!properties.empty()) {
+    out += "    <properties>\n";
+    for (const auto& [name, value] : properties) {
+      out += "      <property name=\"" + SvgWriter::Escape(name) + "\" value=\"" +
+             SvgWriter::Escape(value) + "\"/>\n";
+    }
+    out += "    </properties>\n";
+  }
   for (const CheckResult& r : results) {
     out += "    <testcase classname=\"foresight.check." + SvgWriter::Escape(r.kind) + "\" name=\"" +
            SvgWriter::Escape(r.name) + "\" time=\"" + Seconds(r.time_s) + "\">\n";

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "validation/check_kinds.h"
@@ -38,6 +39,9 @@ std::vector<CheckResult> RunChecks(const CheckSuite& suite, const std::filesyste
                                    const std::function<void(const CheckResult&)>& on_result);
 
 // JUnit XML (the Ant/Jenkins schema most CI systems read): one testsuite, one testcase per check.
-std::string JUnitXml(const std::string& suite_name, const std::vector<CheckResult>& results);
+// `properties` (name, value) go into the testsuite's <properties>: what the run used (version,
+// spec file and its content hash).
+std::string JUnitXml(const std::string& suite_name, const std::vector<CheckResult>& results,
+                     const std::vector<std::pair<std::string, std::string>>& properties = {});
 
 }  // namespace foresight

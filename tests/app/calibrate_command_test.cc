@@ -96,6 +96,17 @@ TEST_F(CalibrateCommandTest, PhysicsCalibrationWritesModelAndReport) {
   const std::string html = ReadFile(report / "calibration.html");
   EXPECT_THAT(html, HasSubstr("<svg"));
   EXPECT_THAT(html, ::testing::Not(HasSubstr("<script")));
+  // What the run used: the committed model with its content hash, the real physics file, the
+  // field; the launch offset the model gets, in the JSON and on the page.
+  EXPECT_EQ(j["files"]["base_kicks"], "kicks/nao.json");
+  EXPECT_THAT(j["files"]["base_kicks_hash"].get<std::string>(), StartsWith("fnv1a64:"));
+  EXPECT_EQ(j["files"]["base_kicks_hash"].get<std::string>().size(), 8u + 16u);
+  EXPECT_EQ(j["files"]["physics"], "physics/spl.json");
+  EXPECT_EQ(j["files"]["field"], "spl");
+  EXPECT_TRUE(j["kicks"][0]["launch_offset"].is_object());
+  EXPECT_THAT(html, HasSubstr("launch offset (m)"));
+  EXPECT_THAT(html, HasSubstr("written to the model"));
+  EXPECT_THAT(html, HasSubstr(j["files"]["base_kicks_hash"].get<std::string>()));
 }
 
 TEST_F(CalibrateCommandTest, SameBytesWithOneThreadOrTwo) {
@@ -180,6 +191,75 @@ TEST_F(CalibrateCommandTest, FromCsvFitsObservedKicks) {
   EXPECT_EQ(CountOf(ReadFile(work() / "csv_report" / "calibration_kicks.csv"), "\n"), 13);
 }
 
+// A log whose rest-only rows roll at 0.3 m/s^2 (the rows with both a launch and a rest say so):
+// their speeds come from the fitted deceleration, not from the committed model's 0.27.
+TEST_F(CalibrateCommandTest, FromCsvRestOnlyRowsUseTheFittedDeceleration) {
+  std::string csv =
+      "kick,robot_x_m,robot_y_m,robot_theta_deg,ball_x_m,ball_y_m,launch_speed_mps,"
+      "launch_direction_deg,rest_x_m,rest_y_m\n";
+  const double speeds[] = {0.9, 1.1, 0.95, 1.05, 1.0, 1.0, 0.92, 1.08, 0.97, 1.03};
+  for (int i = 0; i < 10; ++i) {
+    const double d = speeds[i] * speeds[i] / (2.0 * 0.3);
+    const double alpha_deg = (i % 2 ? 1.0 : -1.0) * 0.5 * (i + 1);
+    const double alpha = alpha_deg * foresight::kDegToRad;
+    const bool launch = i < 4;  // four rows with both, six with the rest only
+    csv += "forward,0,0,0,0,0," +
+           (launch ? std::to_string(speeds[i]) + "," + std::to_string(alpha_deg)
+                   : std::string(",")) +
+           "," + std::to_string(d * std::cos(alpha)) + "," + std::to_string(d * std::sin(alpha)) +
+           "\n";
+  }
+  Write("rest_only.csv", csv);
+  const RunResult r = Calibrate({"--robot", "nao", "--from-csv", "rest_only.csv", "--kick",
+                                 "forward", "--out", "model.json", "--report", "rest_report"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const KickModel fitted = LoadKickModel(work() / "model.json");
+  EXPECT_NEAR(fitted.rolling_deceleration_mps2, 0.3, 2e-4);
+  // Mean of the ten speeds is 1.0; with the committed 0.2697 it would be 0.948.
+  EXPECT_NEAR(fitted.kicks[*fitted.Find("forward")].speed_mps, 1.0, 1e-3);
+  EXPECT_THAT(r.out, HasSubstr("with the fitted deceleration 0.3000"));
+}
+
+// A side kick logged in radians: refused, naming the file and the row.
+TEST_F(CalibrateCommandTest, FromCsvRadiansAreRefusedNamingTheRow) {
+  std::string csv =
+      "kick,robot_x_m,robot_y_m,robot_theta_deg,ball_x_m,ball_y_m,launch_speed_mps,"
+      "launch_direction_deg,rest_x_m,rest_y_m\n";
+  for (int i = 0; i < 10; ++i) {
+    const double alpha = (88.0 + 0.5 * i) * foresight::kDegToRad;
+    csv += "side_kick_left,0,0,0,0,0,0.7," + std::to_string(alpha) + "," +
+           std::to_string(0.8 * std::cos(alpha)) + "," + std::to_string(0.8 * std::sin(alpha)) +
+           "\n";
+  }
+  Write("radians.csv", csv);
+  const RunResult r = Calibrate({"--robot", "nao", "--from-csv", "radians.csv", "--out",
+                                 "model.json", "--report", "radian_report"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, StartsWith("foresight: error: radians.csv: line 2: launch_direction_deg: "));
+  EXPECT_THAT(r.err, HasSubstr("looks like radians"));
+  EXPECT_EQ(CountOf(r.err, "\n"), 1) << r.err;
+  EXPECT_FALSE(fs::exists(work() / "model.json"));
+  EXPECT_FALSE(fs::exists(work() / "radian_report"));
+}
+
+// The example log shipped in models/logs/ (made from physics trials) calibrates as the docs say.
+TEST_F(CalibrateCommandTest, ShippedExampleLogCalibrates) {
+  const fs::path log =
+      fs::path(FORESIGHT_TEST_MODELS_DIR) / "logs" / "nao_kicks_example.csv";
+  const RunResult r = Calibrate({"--robot", "nao", "--all", "--from-csv", log.string(), "--out",
+                                 "example.json", "--report", "example_report"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const KickModel fitted = LoadKickModel(work() / "example.json");
+  const KickModel base = ShippedNao();
+  for (const KickSpec& k : fitted.kicks) {
+    const KickSpec& was = base.kicks[*base.Find(k.name)];
+    EXPECT_NE(k.speed_mps, was.speed_mps) << k.name;  // every kick is in the log
+    // Physics kicks go where the model says, within its sigma.
+    EXPECT_NEAR(k.direction_rad, was.direction_rad, was.sigma_direction_rad) << k.name;
+  }
+  EXPECT_TRUE(fs::exists(work() / "example_report" / "calibration.html"));
+}
+
 // --fit-variation reads a log's spreads and writes the fitted causes as robot.json's block.
 TEST_F(CalibrateCommandTest, FitVariationWritesTheFittedTrialVariation) {
   std::string csv = "kick,robot_x_m,robot_y_m,robot_theta_deg,ball_x_m,ball_y_m,launch_speed_mps,"
@@ -198,6 +278,29 @@ TEST_F(CalibrateCommandTest, FitVariationWritesTheFittedTrialVariation) {
   EXPECT_GT(j["trial_variation"]["placement_sigma_x_m"].get<double>(), 0.0);
   EXPECT_EQ(j["fit"]["kicks"][0]["kick"], "forward");
   EXPECT_TRUE(j["fit"].contains("rms_residual_rel"));
+  EXPECT_THAT(r.out, HasSubstr("calibrate --variation var.json"));
+
+  // The file is the variation that physics calibration and simulate then play, no hand copy.
+  const RunResult physics = Calibrate({"--robot", "nao", "--kick", "forward", "--trials", "8",
+                                       "--variation", "var.json", "--out", "with_var.json",
+                                       "--report", "var_report"});
+  ASSERT_EQ(physics.exit_code, 0) << physics.err;
+  const nlohmann::json report =
+      nlohmann::json::parse(ReadFile(work() / "var_report" / "calibration.json"));
+  EXPECT_EQ(report["files"]["variation"], "var.json");
+  const RunResult simulate =
+      Run({"simulate", "--situation", foresight::testing::ShippedSituation("open_goal").string(),
+           "--kick", "forward", "--trials", "2", "--variation", "var.json", "--json"});
+  ASSERT_EQ(simulate.exit_code, 0) << simulate.err;
+  EXPECT_EQ(nlohmann::json::parse(simulate.out)["situation"]["trial_variation"], "var.json");
+  // A variation of another robot is refused.
+  nlohmann::json other = j;
+  other["robot"] = "aibo_ers7";
+  Write("aibo_var.json", other.dump());
+  const RunResult wrong = Calibrate({"--robot", "nao", "--kick", "forward", "--trials", "8",
+                                     "--variation", "aibo_var.json", "--out", "x.json"});
+  EXPECT_EQ(wrong.exit_code, 2);
+  EXPECT_THAT(wrong.err, HasSubstr("aibo_var.json: robot: the variation is for 'aibo_ers7'"));
 }
 
 TEST_F(CalibrateCommandTest, FitVariationNeedsALog) {

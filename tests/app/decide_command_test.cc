@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -142,6 +143,60 @@ TEST_F(DecideCommandTest, SvgIsWellFormedWithOneCirclePerSamplePerKick) {
   }
   // The text decision still goes to stdout.
   EXPECT_THAT(r.out, HasSubstr("decision: forward"));
+}
+
+// The colour after every "fill:#" in `text` ("#rgb" or "#rrggbb").
+std::vector<std::array<int, 3>> Fills(const std::string& text) {
+  std::vector<std::array<int, 3>> fills;
+  for (std::size_t at = text.find("fill:#"); at != std::string::npos;
+       at = text.find("fill:#", at + 1)) {
+    const std::size_t start = at + 6;
+    const std::size_t end = text.find_first_not_of("0123456789abcdefABCDEF", start);
+    const std::string hex = text.substr(start, end - start);
+    const auto part = [&](int i, int digits) {
+      const int v = std::stoi(hex.substr(i * digits, digits), nullptr, 16);
+      return digits == 1 ? 17 * v : v;
+    };
+    if (hex.size() == 6) fills.push_back({part(0, 2), part(1, 2), part(2, 2)});
+    if (hex.size() == 3) fills.push_back({part(0, 1), part(1, 1), part(2, 1)});
+  }
+  return fills;
+}
+
+double ColourDistance(const std::array<int, 3>& a, const std::array<int, 3>& b) {
+  return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
+
+TEST_F(DecideCommandTest, SvgKickColoursDifferFromPostsBallAndEachOther) {
+  // side_kick_left's samples were drawn in the yellow of the opponent's posts.
+  const RunResult r = Decide({"--situation", ShippedSituation("open_goal").string(), "--samples",
+                              "5", "--svg", "colours.svg"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string svg = ReadFile(work() / "colours.svg");
+  std::vector<std::array<int, 3>> kicks;  // the first fill of each kick's group
+  std::string rest = svg;                  // everything outside the kick groups
+  for (std::size_t at; (at = rest.find("<g class=\"kick\">")) != std::string::npos;) {
+    const std::size_t end = rest.find("</g>", at);
+    const std::string group = rest.substr(at, end - at);
+    ASSERT_FALSE(Fills(group).empty());
+    kicks.push_back(Fills(group).front());
+    rest.erase(at, end - at);
+  }
+  ASSERT_EQ(kicks.size(), 3u);
+  // The field's circles (posts, ball, robots) and the carpet, lines and nets.
+  const std::string field = rest.substr(0, rest.find("<text"));
+  for (const auto& k : kicks) {
+    for (const auto& other : Fills(field)) {
+      EXPECT_GT(ColourDistance(k, other), 60.0)
+          << k[0] << "," << k[1] << "," << k[2] << " vs " << other[0] << "," << other[1] << ","
+          << other[2];
+    }
+  }
+  for (std::size_t i = 0; i < kicks.size(); ++i) {
+    for (std::size_t j = i + 1; j < kicks.size(); ++j) {
+      EXPECT_GT(ColourDistance(kicks[i], kicks[j]), 60.0) << i << " vs " << j;
+    }
+  }
 }
 
 TEST_F(DecideCommandTest, SvgOfOptimalOneDrawsOnlyTheForwardKick) {

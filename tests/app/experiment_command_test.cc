@@ -97,6 +97,9 @@ TEST_F(ExperimentCommandTest, StrategiesWriteJsonCsvAndFigures) {
   const nlohmann::json j = nlohmann::json::parse(ReadFile(dir / "strategies.json"));
   EXPECT_EQ(j["params"]["starts"], 6);
   EXPECT_EQ(j["params"]["executor"], "coarse");
+  // The kick model it used, by path and content hash.
+  EXPECT_EQ(j["params"]["kicks"], "kicks/nao.json");
+  EXPECT_THAT(j["params"]["kicks_hash"].get<std::string>(), ::testing::StartsWith("fnv1a64:"));
   ASSERT_EQ(j["strategies"].size(), 4u);
   EXPECT_EQ(j["strategies"][0]["strategy"], "fast");
   EXPECT_EQ(j["strategies"][0]["runs"], 6);

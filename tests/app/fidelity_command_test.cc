@@ -53,6 +53,13 @@ TEST_F(FidelityCommandTest, OneSituationWritesJsonCsvAndHtml) {
   EXPECT_EQ(j["converged_samples"], 100);
   // Three NAO kicks at two rotations, three trials each; the decisions reuse them.
   EXPECT_EQ(j["physics_trials_run"], 18);
+  // What the run used: robot, field, the kick model with its content hash, the physics file.
+  EXPECT_EQ(j["robot"], "nao");
+  EXPECT_EQ(j["field"], "spl");
+  EXPECT_EQ(j["kick_model"], "kicks/nao.json");
+  EXPECT_THAT(j["kick_model_hash"].get<std::string>(), StartsWith("fnv1a64:"));
+  EXPECT_EQ(j["physics_file"], "physics/spl.json");
+  EXPECT_FALSE(j["version"].get<std::string>().empty());
   const std::string candidates = ReadFile(dir / "fidelity_candidates.csv");
   EXPECT_EQ(CountOf(candidates, "\n"), 1 + 3 * 2) << candidates;
   const std::string situations = ReadFile(dir / "fidelity_situations.csv");
@@ -61,6 +68,19 @@ TEST_F(FidelityCommandTest, OneSituationWritesJsonCsvAndHtml) {
   EXPECT_THAT(html, HasSubstr("<svg"));
   EXPECT_THAT(html, ::testing::Not(HasSubstr("<script")));
   EXPECT_EQ(CountOf(html, "</html>"), 1);
+  EXPECT_THAT(html, HasSubstr("kicks/nao.json (" + j["kick_model_hash"].get<std::string>() + ")"));
+  EXPECT_THAT(html, HasSubstr("physics/spl.json"));
+  EXPECT_THAT(html, ::testing::Not(HasSubstr("&lt;field&gt;")));
+}
+
+TEST_F(FidelityCommandTest, KicksFlagIsTheKickModelTheReportNames) {
+  const fs::path set = OneSituationSet();
+  const fs::path kicks = fs::path(FORESIGHT_TEST_MODELS_DIR) / "kicks" / "nao_calibrated.json";
+  const RunResult r = Fidelity({"--situations", set.string(), "--trials", "2", "--converged",
+                                "50", "--kicks", kicks.string(), "--out", "report"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(ReadFile(work() / "report" / "fidelity.json"));
+  EXPECT_EQ(j["kick_model"], "kicks/nao_calibrated.json");
 }
 
 TEST_F(FidelityCommandTest, OneTrialIsOneLineExitTwoAndNoFolder) {

@@ -3,6 +3,12 @@
 #include "report/provenance.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <string>
+
+#include "common/error.h"
+#include "tests/support/temp_files.h"
 
 namespace foresight {
 namespace {
@@ -39,6 +45,25 @@ TEST(ProvenanceTest, HtmlRowsEndWithVersionAndRunTime) {
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0], (std::pair<std::string, std::string>{"version", "1.2.3"}));
   EXPECT_EQ(rows[1], (std::pair<std::string, std::string>{"run time", "12.3 s"}));
+}
+
+TEST(ProvenanceTest, ContentHashIsFnv1a64OfTheBytes) {
+  const std::string id = std::to_string(::getpid());
+  // FNV-1a 64 of "" and of "a" (the published test vectors).
+  EXPECT_EQ(ContentHash(testing::WriteTempFile("hash_empty_" + id, "")),
+            "fnv1a64:cbf29ce484222325");
+  EXPECT_EQ(ContentHash(testing::WriteTempFile("hash_a_" + id, "a")), "fnv1a64:af63dc4c8601ec8c");
+  // One changed byte changes the hash.
+  EXPECT_NE(ContentHash(testing::WriteTempFile("hash_b_" + id, "{\"x\": 1}")),
+            ContentHash(testing::WriteTempFile("hash_c_" + id, "{\"x\": 2}")));
+  EXPECT_THROW(ContentHash(testing::FreshTempDir("hash_" + id) / "absent"), InputError);
+  EXPECT_EQ(ContentHash(""), "");  // data from memory has no file to hash
+}
+
+TEST(ProvenanceTest, JoinDistinctKeepsFirstAppearances) {
+  EXPECT_EQ(JoinDistinct({"kicks/nao.json", "kicks/aibo.json", "kicks/nao.json"}),
+            "kicks/nao.json, kicks/aibo.json");
+  EXPECT_EQ(JoinDistinct({}), "");
 }
 
 }  // namespace

@@ -20,6 +20,7 @@ namespace foresight {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 constexpr double kA = 0.27;  // assumed deceleration
 
@@ -168,6 +169,10 @@ TEST(ObservedKicksTest, ErrorsAreOneLineNamingFileLineAndColumn) {
       {"absurd_heading", launch + "forward,0,0,1e9,0.15,0,1.0,0\n", {"line 2", "robot_theta_deg"}},
       {"empty_file", "", {"no header"}},
       {"header_only", launch, {"no kicks"}},
+      // RFC 4180 quoting gone wrong.
+      {"unclosed_quote", launch + "\"forward,0,0,0,0.15,0,1,0\n", {"line 2", "never closed"}},
+      {"after_quote", launch + "\"forward\"x,0,0,0,0.15,0,1,0\n", {"line 2", "closing quote"}},
+      {"quote_inside", launch + "for\"ward,0,0,0,0.15,0,1,0\n", {"line 2", "unquoted cell"}},
   };
   for (const BadCsv& c : cases) {
     SCOPED_TRACE(c.name);
@@ -182,6 +187,114 @@ TEST(ObservedKicksTest, ErrorsAreOneLineNamingFileLineAndColumn) {
       for (const std::string& part : c.message_parts) EXPECT_THAT(message, HasSubstr(part));
     }
   }
+}
+
+TEST(ObservedKicksTest, QuotedCellsAfterRfc4180) {
+  // Quoted header and cells, a comma and a doubled quote inside quotes, a line break inside a
+  // quoted cell, CRLF line ends, spaces around quotes.
+  const auto file = Csv("quoted",
+                        "\"kick\",\"robot_x_m\",robot_y_m,robot_theta_deg,ball_x_m,ball_y_m,"
+                        "\"launch_speed_mps\",launch_direction_deg\r\n"
+                        "\"forward\",\"0\",0,0,0.15,0, \"1.05\" ,\"-3\"\r\n"
+                        "\"side, \"\"left\"\"\",1,2,90,1,2.15,0.7,92.5\r\n"
+                        "\"two\nlines\",0,0,0,0.15,0,1.1,4\r\n"
+                        "forward,0,0,0,0.15,0,1.2,2\r\n");
+  const ObservedKicks k = ReadObservedKicks(file, kA);
+  EXPECT_EQ(k.rows, 4);
+  EXPECT_EQ(k.kick_names,
+            (std::vector<std::string>{"forward", "side, \"left\"", "two\nlines"}));
+  ASSERT_EQ(k.by_kick.at("forward").size(), 2u);
+  EXPECT_DOUBLE_EQ(k.by_kick.at("forward")[0].launch_speed_mps, 1.05);
+  EXPECT_NEAR(k.by_kick.at("forward")[0].launch_direction_rad, -3.0 * kDegToRad, 1e-12);
+  // Line numbers count the line break inside the quoted cell.
+  ASSERT_EQ(k.row_list.size(), 4u);
+  EXPECT_EQ(k.row_list[2].line, 4);
+  EXPECT_EQ(k.row_list[3].line, 6);
+}
+
+// A kick model like the NAO's: forward straight ahead, the side kick to the left, 5 deg sigma.
+KickModel TwoKicks() {
+  KickModel model;
+  model.robot = "nao";
+  model.rolling_deceleration_mps2 = kA;
+  model.kicks = {{"forward", 1.0, 0.1, 0.0, 5.0 * kDegToRad, 0.0},
+                 {"side_kick_left", 0.7, 0.1, 85.0 * kDegToRad, 5.0 * kDegToRad, 0.0}};
+  return model;
+}
+
+std::string CheckError(const std::filesystem::path& file) {
+  try {
+    CheckObservedKicks(ReadObservedKicks(file, kA), TwoKicks(), file);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const std::string kBoth = kPose + ",launch_speed_mps,launch_direction_deg,rest_x_m,rest_y_m\n";
+
+TEST(ObservedKicksTest, ConsistentLaunchAndRestPass) {
+  // Robot at the origin facing +x, ball 0.15 ahead; the side kick rolls 1 m at 85 deg, logged
+  // 87 deg (2 deg off: within 3 x 5 deg).
+  const double c = std::cos(85.0 * kDegToRad), s = std::sin(85.0 * kDegToRad);
+  const auto file = Csv("consistent", kBoth + "side_kick_left,0,0,0,0.15,0,0.7,87," +
+                                          std::to_string(0.15 + c) + "," + std::to_string(s) +
+                                          "\nforward,0,0,0,0.15,0,1.0,-1,2.15,0\n");
+  EXPECT_EQ(CheckError(file), "");
+}
+
+TEST(ObservedKicksTest, RadiansInARowWithARestAreRefusedNamingTheRow) {
+  const double c = std::cos(85.0 * kDegToRad), s = std::sin(85.0 * kDegToRad);
+  const auto file = Csv("radian_row", kBoth + "forward,0,0,0,0.15,0,1.0,-1,2.15,0\n" +
+                                          "side_kick_left,0,0,0,0.15,0,0.7,1.48," +
+                                          std::to_string(0.15 + c) + "," + std::to_string(s) + "\n");
+  const std::string message = CheckError(file);
+  EXPECT_THAT(message, ::testing::StartsWith(file.string() + ": line 3: launch_direction_deg: 1.48"));
+  EXPECT_THAT(message, HasSubstr("looks like radians"));
+  EXPECT_EQ(message.find('\n'), std::string::npos);
+}
+
+TEST(ObservedKicksTest, ContradictingLaunchAndRestAreNamedWithTheAllowance) {
+  // The launch says 60 deg, the rest lies at 85 deg: 25 deg apart, more than 3 x 5 deg.
+  const double c = std::cos(85.0 * kDegToRad), s = std::sin(85.0 * kDegToRad);
+  const auto file = Csv("contradiction", kBoth + "side_kick_left,0,0,0,0.15,0,0.7,60," +
+                                             std::to_string(0.15 + c) + "," + std::to_string(s) +
+                                             "\n");
+  const std::string message = CheckError(file);
+  EXPECT_THAT(message, HasSubstr(": line 2: launch_direction_deg: 60"));
+  EXPECT_THAT(message, HasSubstr("contradicts the rest position's bearing 85.0 deg"));
+  EXPECT_THAT(message, HasSubstr("by 25.0 deg, more than 3 x sigma_direction (15.0 deg)"));
+  EXPECT_THAT(message, Not(HasSubstr("radians")));
+}
+
+TEST(ObservedKicksTest, LaunchOnlyRadiansAreRefusedNamingTheFirstRow) {
+  // Side kicks logged in radians (about 1.48 = 85 deg), no rest positions to compare with.
+  const std::string launch = kPose + ",launch_speed_mps,launch_direction_deg\n";
+  const auto file = Csv("radian_kick", launch + "forward,0,0,0,0.15,0,1.0,3\n" +
+                                           "side_kick_left,0,0,0,0.15,0,0.7,1.50\n" +
+                                           "side_kick_left,0,0,0,0.15,0,0.7,1.45\n" +
+                                           "side_kick_left,0,0,0,0.15,0,0.7,1.49\n");
+  const std::string message = CheckError(file);
+  EXPECT_THAT(message, HasSubstr(": line 3: launch_direction_deg: the 3 launches of "
+                                 "'side_kick_left' look like radians"));
+  // The same kicks in degrees pass, and so does a forward kick whose directions are all small.
+  const auto degrees = Csv("degree_kick", launch + "forward,0,0,0,0.15,0,1.0,0.5\n" +
+                                              "forward,0,0,0,0.15,0,1.0,-1.2\n" +
+                                              "side_kick_left,0,0,0,0.15,0,0.7,86\n" +
+                                              "side_kick_left,0,0,0,0.15,0,0.7,83\n");
+  EXPECT_EQ(CheckError(degrees), "");
+}
+
+TEST(ObservedKicksTest, RestOnlySpeedsAreDerivedAgainWithAGivenDeceleration) {
+  const auto file = Csv("rederive", kBoth + "forward,0,0,0,0,0,,,2,0\n" +
+                                        "forward,0,0,0,0,0,1.2,0,2.5,0\n");
+  ObservedKicks k = ReadObservedKicks(file, kA);
+  std::vector<KickObservation>& o = k.by_kick.at("forward");
+  EXPECT_TRUE(o[0].speed_from_rest);
+  EXPECT_FALSE(o[1].speed_from_rest);
+  RederiveSpeedsFromRest(o, 0.5, 0.05);
+  EXPECT_NEAR(o[0].launch_speed_mps, std::sqrt(2.0 * 0.5 * (2.0 - 0.05)), 1e-12);
+  EXPECT_DOUBLE_EQ(o[1].launch_speed_mps, 1.2);  // a logged launch stays
 }
 
 TEST(ObservedKicksTest, MissingFileIsAnInputError) {

@@ -181,6 +181,11 @@ TEST(PhysicsChecksTest, JUnitXmlCountsFailuresAndEscapes) {
   EXPECT_THAT(xml, HasSubstr(R"(<failure message="off by 9 &amp; more"/>)"));
   EXPECT_THAT(xml, HasSubstr(R"(<system-out>rolled &quot;far&quot;</system-out>)"));
   EXPECT_THAT(xml, HasSubstr(R"(time="1.750")"));
+  EXPECT_EQ(xml.find("<properties>"), std::string::npos);
+  const std::string with = JUnitXml("suite", results, {{"version", "1.2"}, {"spec", "a&b.json"}});
+  EXPECT_THAT(with, HasSubstr("<properties>\n      <property name=\"version\" value=\"1.2\"/>\n"
+                              "      <property name=\"spec\" value=\"a&amp;b.json\"/>\n"
+                              "    </properties>\n    <testcase"));
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// The minimal robot program of the README ("use it from your robot code"): load a situation,
-// build the planner once, then decide every cycle without touching the heap. Prints the
+// The minimal robot program of docs/COMMANDS.md ("Use it from your robot code"): load a
+// situation, build the planner once, then decide every cycle without touching the heap. Prints the
 // decision of the given seed as JSON, in the names of `foresight decide --json`, so the test
 // can compare the two.
 //
