@@ -65,6 +65,10 @@ void AddColliders(BulletWorld& world, btMultiBody& body, const RobotModel& model
     // Its contacts with the ball are non-speculative through the world's dispatcher; with the
     // carpet they stay speculative (bullet_world.h).
     MakeStriking(*collider, &own_contact);
+    if (floating) {
+      collider->setCollisionFlags(collider->getCollisionFlags() |
+                                  btCollisionObject::CF_HAS_FRICTION_ANCHOR);
+    }
     collider->setRestitution(params.materials.restitution.foot);
     collider->setFriction(params.materials.friction.foot);
     btMultiBodyLinkCollider* raw = collider.get();

@@ -154,5 +154,73 @@ TEST(FloatingKickTest, TheSameSeedGivesTheSameTrialsWhateverTheThreads) {
   }
 }
 
+// The AIBO on its four paws: held at its stances it stands still (without friction anchors on
+// its links' contacts its round paws crept 1.7-2.6 mm/s); its right front paw kicks (`forward`,
+// `pass`) stand through the kick with their weight shift and topple without it.
+std::unique_ptr<testing::PhysicsFixtureData> FloatingAibo() {
+  auto data = testing::LoadPhysicsFixture("four_legged", true, "aibo_ers7");
+  data->params.robot.base = RobotBase::kFloating;
+  return data;
+}
+
+KickTrialsRequest AiboRequest(const KickModel& kicks, const char* kick, int trials) {
+  KickTrialsRequest request;
+  const Vec2 ball(0.4, -0.3);
+  request.state = DrawnState{Pose2{ball, -20.0 * kDegToRad}, ball};
+  request.kick_index = *kicks.Find(kick);
+  request.trials = trials;
+  request.seed = 5;
+  return request;
+}
+
+TEST(FloatingAiboTest, TheAiboStandsStillOnItsPaws) {
+  const auto data = FloatingAibo();
+  const Robot& robot = *data->robot;
+  for (const char* kick : {"forward", "pass", "head_kick_left"}) {
+    const KickMotion& motion = robot.motions[*robot.FindMotion(kick)];
+    BulletWorld world(BulletWorld::Kind::kMultiBody, {data->params.steps.solver_iterations,
+                                                      data->params.steps.restitution_threshold_mps});
+    AddCarpet(world, data->params);
+    KickingRobot kicker(world, robot, PlanarPose(0.1, 0.2, robot.BaseHeightM(motion), -0.4),
+                        robot.StandingPositions(motion),
+                        KickJoints(robot, motion, RobotBase::kFloating), data->params);
+    const Eigen::Vector3d p0 = ToEigen(kicker.body().getBaseWorldTransform()).translation();
+    const double dt = data->params.steps.kick_time_step_s;
+    double max_tilt = 0.0;
+    for (int step = 0; step < 1000; ++step) {  // 2 s
+      world.world().stepSimulation(dt, 0, dt);
+      max_tilt = std::max(max_tilt, kicker.TiltRad());
+    }
+    const Eigen::Vector3d p1 = ToEigen(kicker.body().getBaseWorldTransform()).translation();
+    EXPECT_LT((p1 - p0).head<2>().norm(), 0.001) << kick;
+    EXPECT_LT(std::abs(p1.z() - p0.z()), 0.003) << kick;
+    EXPECT_LT(max_tilt * kRadToDeg, 1.0) << kick;
+  }
+}
+
+TEST(FloatingAiboTest, ThePawKicksKeepTheirBalanceWithTheirWeightShift) {
+  const auto data = FloatingAibo();
+  const KickModel kicks = LoadKickModel(testing::ModelsDir() / "kicks" / "aibo_ers7.json");
+  const PhysicsSimulator simulator(testing::SceneOf(*data), kicks);
+  for (const char* kick : {"forward", "pass"}) {
+    const TrialSummary summary = Summarize(RunKickTrials(simulator, AiboRequest(kicks, kick, 4)));
+    EXPECT_EQ(summary.fell, 0) << kick;
+    EXPECT_EQ(summary.launched, 4) << kick;
+    EXPECT_GT(summary.launch_speed_mean_mps, 0.6) << kick;
+    EXPECT_LT(summary.max_tilt_rad * kRadToDeg, 20.0) << kick;
+  }
+}
+
+TEST(FloatingAiboTest, WithoutItsWeightShiftThePowerKickFalls) {
+  auto data = FloatingAibo();
+  for (KickMotion& motion : data->robot->motions) motion.balance = KickBalance{};
+  const KickModel kicks = LoadKickModel(testing::ModelsDir() / "kicks" / "aibo_ers7.json");
+  const PhysicsSimulator simulator(testing::SceneOf(*data), kicks);
+  for (const TrialResult& r : RunKickTrials(simulator, AiboRequest(kicks, "forward", 3))) {
+    EXPECT_TRUE(r.fell);
+    EXPECT_EQ(r.outcome.status, OutcomeStatus::kFell);
+  }
+}
+
 }  // namespace
 }  // namespace foresight
