@@ -18,6 +18,9 @@ namespace {
 constexpr std::uint64_t kCandidateDomain = 0x6d6f74696f6e7331ULL;  // "motions1"
 constexpr std::uint64_t kTrialSeedDomain = 0x6d6f74696f6e7332ULL;
 constexpr std::uint64_t kRoundStride = 1ULL << 20;  // candidates per round stay below it
+// Stretching the segment that holds a joint's peak speed settles within a few passes; a motion
+// still too fast after these is refused for speed.
+constexpr int kMaxRetimePasses = 20;
 
 const RobotJoint& JointNamed(const RobotModel& model, const std::string& name) {
   return model.joints[static_cast<std::size_t>(*model.FindJoint(name))];
@@ -62,8 +65,10 @@ void Evaluate(const MotionSearchRun& run, Robot& robot, int motion_index, int ki
               const SearchRound& round, std::uint64_t trial_seed, SearchCandidate& c) {
   const MotionSearchSettings& settings = *run.settings;
   const double max_factor = robot.spec.variation.MaxSpeedFactor();
+  FitToSpeedLimit(c.motion, robot.model, settings.constraints.max_speed_share / max_factor);
   c.speed_share = FindPeakJointSpeed(c.motion, robot.model).share * max_factor;
-  if (c.speed_share > settings.constraints.max_speed_share) {
+  if (c.speed_share > settings.constraints.max_speed_share ||
+      c.motion.DurationS() > settings.constraints.max_duration_s) {
     c.refusal = Refusal::kSpeed;
     return;
   }
@@ -105,6 +110,20 @@ std::vector<int> Rank(const std::vector<SearchCandidate>& candidates) {
 }
 
 }  // namespace
+
+void FitToSpeedLimit(KickMotion& motion, const RobotModel& model, double max_share) {
+  for (int pass = 0; pass < kMaxRetimePasses; ++pass) {
+    const PeakJointSpeed peak = FindPeakJointSpeed(motion, model);
+    if (peak.joint < 0 || peak.share <= max_share) return;
+    // The segment holding the peak, stretched by the excess (and a hair more, so that the
+    // tangents of the neighbouring keyframes, which depend on it too, settle in a few passes).
+    std::size_t k = 1;
+    while (k + 1 < motion.keyframes.size() && motion.keyframes[k].time_s < peak.t_s) ++k;
+    const double stretch_s = (motion.keyframes[k].time_s - motion.keyframes[k - 1].time_s) *
+                             (peak.share / max_share * 1.001 - 1.0);
+    for (std::size_t i = k; i < motion.keyframes.size(); ++i) motion.keyframes[i].time_s += stretch_s;
+  }
+}
 
 std::string_view RefusalName(Refusal refusal) {
   switch (refusal) {

@@ -8,9 +8,11 @@
 // the others. A candidate moves every joint of every inner keyframe (the first and the last,
 // the stance, stay) by a normal draw, clamped to the joint's limits; stretches every segment's
 // duration by a normal factor; and adds one normal draw to the magnitude of every balance offset
-// (equal and opposite offsets stay so). Each candidate is then
-//   refused for speed     when a joint would pass max_speed_share of its URDF limit at the
-//                         fastest playback a trial draws (models/robot_spec.h);
+// (equal and opposite offsets stay so). A segment in which a joint would pass max_speed_share of
+// its URDF limit at the fastest playback a trial draws is slowed until it does not
+// (FitToSpeedLimit). Each candidate is then
+//   refused for speed     when a joint still passes it (models/robot_spec.h), or when the
+//                         slowed motion lasts longer than max_duration_s;
 //   refused for clearance when the links the motion moves come closer to the carpet than
 //                         min_clearance_m over its targets (FindSwingClearance,
 //                         physics/motion_clearance.h);
@@ -58,6 +60,12 @@ struct MotionSearchResult {
 // The score of a summary under the objective (lower is better); low_share as in SearchCandidate.
 double ScoreCandidate(const SearchObjective& objective, const TrialSummary& summary,
                       double low_share);
+
+// Slows the segments of `motion` in which a joint would turn faster than max_share of its URDF
+// limit (as written), one segment at a time, until none does or 20 passes are spent; the later
+// keyframes move by what a segment gains. The shipped motions' searches timed the strike to a
+// share of the limit likewise.
+void FitToSpeedLimit(KickMotion& motion, const RobotModel& model, double max_share);
 
 // Candidate `index` drawn around `centre` with the round's spreads (index 0 of the first round
 // is the centre itself; the caller decides).

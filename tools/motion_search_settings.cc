@@ -47,11 +47,12 @@ SearchRound ReadRound(const JsonObject& obj) {
 }
 
 SearchConstraints ReadConstraints(const JsonObject& obj) {
-  obj.RejectUnknownKeys({"min_clearance_m", "max_speed_share", "max_fall_share"});
+  obj.RejectUnknownKeys({"min_clearance_m", "max_speed_share", "max_fall_share", "max_duration_s"});
   SearchConstraints c;
   c.min_clearance_m = NumberIn(obj, "min_clearance_m", -1.0, 1.0);
   c.max_speed_share = NumberIn(obj, "max_speed_share", 0.01, 1.0);
   c.max_fall_share = NumberIn(obj, "max_fall_share", 0.0, 1.0);
+  c.max_duration_s = NumberIn(obj, "max_duration_s", 0.01, 60.0);
   return c;
 }
 

@@ -12,7 +12,8 @@
 //   "seed": 1,
 //   "rounds": [{"candidates": 200, "trials": 20, "keyframe_sigma_deg": 8, "time_sigma_rel": 0.1,
 //               "balance_sigma_deg": 1}, ...],
-//   "constraints": {"min_clearance_m": 0.005, "max_speed_share": 1.0, "max_fall_share": 0.0},
+//   "constraints": {"min_clearance_m": 0.005, "max_speed_share": 1.0, "max_fall_share": 0.0,
+//                   "max_duration_s": 3.0},
 //   "objective": {"target_speed_mps": 1.6, "target_direction_deg": 0, ...},
 //   "keep": 5
 // }
@@ -43,6 +44,7 @@ struct SearchConstraints {
   double min_clearance_m = 0.0;   // lowest point of the body over the motion's targets
   double max_speed_share = 1.0;   // peak joint speed / URDF limit at the fastest playback
   double max_fall_share = 0.0;    // trials in which the robot fell, share
+  double max_duration_s = 0.0;    // the motion as written, after FitToSpeedLimit slowed it
 };
 
 // Lower is better: |mean launch - target| (m/s) plus weighted penalties.

@@ -27,7 +27,7 @@ using testing::WriteTempFile;
 // A fixed base keeps a trial at about 10 ms; two rounds of three and two candidates, two trials.
 std::string TinySettings(const std::string& base = "fixed", int seed = 3,
                          const std::string& constraints =
-                             R"({"min_clearance_m": 0.005, "max_speed_share": 1.0, "max_fall_share": 0.0})") {
+                             R"({"min_clearance_m": 0.005, "max_speed_share": 1.0, "max_fall_share": 0.0, "max_duration_s": 3.0})") {
   return R"({
     "notes": "test: a tiny budget",
     "situation": "nao", "kicks": "nao_calibrated", "kick": "forward", "base": ")" + base + R"(",
@@ -99,7 +99,7 @@ TEST(MotionSearchTest, SameSeedSameBytesWhateverTheThreadsAndTheBaselineIsTheShi
 TEST(MotionSearchTest, RefusalRulesRefuseBeforeAnyTrial) {
   const Search slow = RunSearch(
       TinySettings("fixed", 3,
-                   R"({"min_clearance_m": 0.005, "max_speed_share": 0.1, "max_fall_share": 0.0})"),
+                   R"({"min_clearance_m": 0.005, "max_speed_share": 0.1, "max_fall_share": 0.0, "max_duration_s": 3.0})"),
       1);
   for (const SearchCandidate& c : slow.result.candidates) {
     EXPECT_EQ(c.refusal, Refusal::kSpeed);
@@ -108,7 +108,7 @@ TEST(MotionSearchTest, RefusalRulesRefuseBeforeAnyTrial) {
   EXPECT_TRUE(slow.result.best.empty());
   const Search high = RunSearch(
       TinySettings("fixed", 3,
-                   R"({"min_clearance_m": 0.5, "max_speed_share": 1.0, "max_fall_share": 0.0})"),
+                   R"({"min_clearance_m": 0.5, "max_speed_share": 1.0, "max_fall_share": 0.0, "max_duration_s": 3.0})"),
       1);
   // The speed rule comes first: a drawn candidate may be refused for speed instead.
   EXPECT_EQ(high.result.candidates[0].refusal, Refusal::kClearance);
@@ -141,6 +141,24 @@ TEST(MotionSearchTest, FloatingBaseShiftsTheBalanceAndCountsFalls) {
     EXPECT_EQ(std::signbit(drawn.balance.offsets_rad[k].second),
               std::signbit(shipped.balance.offsets_rad[k].second));
   }
+}
+
+// A motion too fast for its joints is slowed where it is too fast, its poses kept.
+TEST(MotionSearchTest, FitToSpeedLimitSlowsTheSegmentsThatAreTooFast) {
+  const Robot robot = LoadRobot("nao", ModelsDir());
+  const KickMotion& shipped = robot.motions[*robot.FindMotion("forward_long")];
+  const double share = FindPeakJointSpeed(shipped, robot.model).share;
+  KickMotion motion = shipped;
+  FitToSpeedLimit(motion, robot.model, 0.6 * share);
+  EXPECT_LE(FindPeakJointSpeed(motion, robot.model).share, 0.6 * share);
+  EXPECT_GT(motion.DurationS(), shipped.DurationS());
+  for (std::size_t k = 0; k < motion.keyframes.size(); ++k) {
+    EXPECT_EQ(motion.keyframes[k].positions_rad, shipped.keyframes[k].positions_rad);
+  }
+  EXPECT_EQ(motion.keyframes[1].time_s, shipped.keyframes[1].time_s);  // the lift was slow enough
+  KickMotion untouched = shipped;
+  FitToSpeedLimit(untouched, robot.model, 1.0);
+  EXPECT_EQ(untouched.DurationS(), shipped.DurationS());
 }
 
 TEST(MotionSearchTest, ScoreAddsTheObjectivesTerms) {
