@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -12,14 +13,20 @@ namespace foresight {
 
 namespace {
 
-double Rounded(double value, double unit) { return std::round(value / unit) * unit; }
+// The double nearest to `value` written with `decimals` decimals, so that the file shows
+// -44.9798, not the -44.979800000000004 that rounding by multiplication leaves.
+double Rounded(double value, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return std::strtod(text, nullptr);
+}
 
 nlohmann::ordered_json KeyframesJson(const KickMotion& motion) {
   nlohmann::ordered_json keyframes = nlohmann::ordered_json::array();
   for (const KickKeyframe& key : motion.keyframes) {
     nlohmann::ordered_json positions = nlohmann::ordered_json::array();
-    for (double q : key.positions_rad) positions.push_back(Rounded(q * kRadToDeg, 1e-4));
-    keyframes.push_back({{"time_s", Rounded(key.time_s, 1e-6)}, {"positions_deg", positions}});
+    for (double q : key.positions_rad) positions.push_back(Rounded(q * kRadToDeg, 4));
+    keyframes.push_back({{"time_s", Rounded(key.time_s, 6)}, {"positions_deg", positions}});
   }
   return keyframes;
 }
@@ -27,7 +34,7 @@ nlohmann::ordered_json KeyframesJson(const KickMotion& motion) {
 nlohmann::ordered_json OffsetsJson(const KickMotion& motion) {
   nlohmann::ordered_json offsets = nlohmann::ordered_json::object();
   for (const auto& [name, offset_rad] : motion.balance.offsets_rad) {
-    offsets[name] = Rounded(offset_rad * kRadToDeg, 1e-4);
+    offsets[name] = Rounded(offset_rad * kRadToDeg, 4);
   }
   return offsets;
 }
