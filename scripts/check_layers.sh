@@ -24,6 +24,8 @@ declare -A may_use=(
   [app]="common models stats report planner physics validation experiments cbr match"
   [tools]="common models stats report physics"
 )
+# The tests at the top of tests/ (every header at once) may include everything.
+may_use[top]="common models stats report planner physics validation experiments cbr match app tools"
 # Test helpers may use every library; benchmarks every library but the command line.
 may_use[support]="common models stats report planner physics"
 may_use[bench]="common models stats report planner physics validation experiments cbr match support"
@@ -52,7 +54,7 @@ layer_of() {
   if [ "$top" = tests ]; then
     rest=${path#tests/}
     top=${rest%%/*}
-    [ "$rest" = "$top" ] && top=app  # tests/*.cc at the top (all headers at once) see everything
+    [ "$rest" = "$top" ] && top=top  # tests/*.cc at the top (all headers at once) see everything
   fi
   echo "$top"
 }
