@@ -65,6 +65,10 @@ void AddColliders(BulletWorld& world, btMultiBody& body, const RobotModel& model
     // Its contacts with the ball are non-speculative through the world's dispatcher; with the
     // carpet they stay speculative (bullet_world.h).
     MakeStriking(*collider, &own_contact);
+    if (floating) {
+      collider->setCollisionFlags(collider->getCollisionFlags() |
+                                  btCollisionObject::CF_HAS_FRICTION_ANCHOR);
+    }
     collider->setRestitution(params.materials.restitution.foot);
     collider->setFriction(params.materials.friction.foot);
     btMultiBodyLinkCollider* raw = collider.get();
@@ -155,8 +159,14 @@ KickingRobot::KickingRobot(BulletWorld& world, const Robot& robot,
 
 void KickingRobot::FollowMotion(const KickMotion& motion, double t_s, double speed_factor) {
   if (motion_joint_index_.empty()) {
+    // Joint indices and balance offsets per motion joint, looked up once, not every step.
     for (const std::string& name : motion.joints) {
       motion_joint_index_.push_back(*robot_.model.FindJoint(name));
+      double offset_rad = 0.0;
+      for (const auto& [balance_joint, offset] : motion.balance.offsets_rad) {
+        if (balance_joint == name) offset_rad = offset;
+      }
+      motion_offset_rad_.push_back(offset_rad);
     }
     q_scratch_.resize(motion.joints.size());
     qdot_scratch_.resize(motion.joints.size());
@@ -165,12 +175,7 @@ void KickingRobot::FollowMotion(const KickMotion& motion, double t_s, double spe
   for (std::size_t k = 0; k < motion_joint_index_.size(); ++k) {
     LineLimitedJointMotor* motor = motors_[motion_joint_index_[k]];
     assert(motor != nullptr);  // the robot was built with the motion's joints moving
-    double offset_rad = 0.0;
-    if (balance_share_ > 0.0) {
-      for (const auto& [name, offset] : motion.balance.offsets_rad) {
-        if (name == motion.joints[k]) offset_rad = balance_share_ * offset;
-      }
-    }
+    const double offset_rad = balance_share_ * motion_offset_rad_[k];
     // A target the offset would push past a limit stops at it (the side kicks swing the
     // kicking leg's hip roll to its limit; shifted, they reach it earlier).
     const RobotJoint& joint = robot_.model.joints[motion_joint_index_[k]];

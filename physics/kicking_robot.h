@@ -79,7 +79,10 @@ class KickingRobot {
   std::vector<double> standing_q_;
   std::vector<RigidGroup> groups_;              // groups_[g] is multibody link g - 1
   std::vector<LineLimitedJointMotor*> motors_;  // per model joint; null for welded joints
-  std::vector<int> motion_joint_index_;         // scratch: motion joint -> model joint
+  // The motion FollowMotion plays (one per robot): motion joint -> model joint, and -> the
+  // balance's offset on it (0 for none).
+  std::vector<int> motion_joint_index_;
+  std::vector<double> motion_offset_rad_;
   std::vector<double> q_scratch_, qdot_scratch_;
 };
 

@@ -47,7 +47,12 @@ double LowestPointZ(const RobotLink& link, const Eigen::Isometry3d& pose_F_L) {
   return lowest;
 }
 
-MotionClearance FindMotionClearance(const Robot& robot, const KickMotion& motion, double step_s) {
+namespace {
+
+// The lowest point over the motion of the links marked in `counted` (model.links order).
+// ... sampled from t_begin_s to t_end_s.
+MotionClearance LowestOver(const Robot& robot, const KickMotion& motion, double step_s,
+                           const std::vector<bool>& counted, double t_begin_s, double t_end_s) {
   std::vector<int> joint_of;
   for (const std::string& name : motion.joints) joint_of.push_back(*robot.model.FindJoint(name));
   std::vector<double> q = robot.StandingPositions(motion);
@@ -55,19 +60,47 @@ MotionClearance FindMotionClearance(const Robot& robot, const KickMotion& motion
   const Eigen::Isometry3d pose_F_root(
       Eigen::Translation3d(0.0, 0.0, robot.BaseHeightM(motion)));
   MotionClearance clearance{std::numeric_limits<double>::infinity(), 0.0, -1};
-  const int steps = static_cast<int>(std::ceil(motion.DurationS() / step_s));
+  const int steps = static_cast<int>(std::ceil((t_end_s - t_begin_s) / step_s));
   for (int i = 0; i <= steps; ++i) {
-    const double t_s = std::min(i * step_s, motion.DurationS());
+    const double t_s = std::min(t_begin_s + i * step_s, t_end_s);
     motion.Sample(t_s, target, speed);
     for (std::size_t k = 0; k < joint_of.size(); ++k) q[joint_of[k]] = target[k];
     const std::vector<Eigen::Isometry3d> pose_root_L = LinkPoses(robot.model, q);
     for (std::size_t l = 0; l < robot.model.links.size(); ++l) {
+      if (!counted[l]) continue;
       const double z = LowestPointZ(robot.model.links[l], pose_F_root * pose_root_L[l]);
       if (z < clearance.lowest_m) clearance = {z, t_s, static_cast<int>(l), ""};
     }
   }
-  clearance.link_name = robot.model.links[clearance.link].name;
+  if (clearance.link >= 0) clearance.link_name = robot.model.links[clearance.link].name;
   return clearance;
+}
+
+}  // namespace
+
+MotionClearance FindMotionClearance(const Robot& robot, const KickMotion& motion, double step_s) {
+  return LowestOver(robot, motion, step_s, std::vector<bool>(robot.model.links.size(), true), 0.0,
+                    motion.DurationS());
+}
+
+MotionClearance FindSwingClearance(const Robot& robot, const KickMotion& motion, double step_s) {
+  // A link moves with the motion when turning one of the motion's joints moves it.
+  const std::vector<double> q = robot.StandingPositions(motion);
+  const std::vector<Eigen::Isometry3d> still = LinkPoses(robot.model, q);
+  std::vector<bool> moved(robot.model.links.size(), false);
+  for (const std::string& name : motion.joints) {
+    std::vector<double> turned = q;
+    turned[*robot.model.FindJoint(name)] += 0.1;
+    const std::vector<Eigen::Isometry3d> poses = LinkPoses(robot.model, turned);
+    for (std::size_t l = 0; l < moved.size(); ++l) {
+      if (!poses[l].isApprox(still[l], 1e-12)) moved[l] = true;
+    }
+  }
+  // The lift from the stance and the set-down start and end on the carpet; in between the swing.
+  const std::size_t n = motion.keyframes.size();
+  if (n < 3) return LowestOver(robot, motion, step_s, moved, 0.0, motion.DurationS());
+  return LowestOver(robot, motion, step_s, moved, motion.keyframes[1].time_s,
+                    motion.keyframes[n - 2].time_s);
 }
 
 }  // namespace foresight

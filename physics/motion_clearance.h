@@ -32,4 +32,12 @@ struct MotionClearance {
 MotionClearance FindMotionClearance(const Robot& robot, const KickMotion& motion,
                                     double step_s = 0.001);
 
+// The same over the links the motion moves only (the swinging leg, not the support foot that
+// stands on the carpet) and only between the motion's first and last inner keyframes (the lift
+// from the stance and the set-down start and end with the foot on the carpet; a motion of two
+// keyframes is taken whole): the motion search's clearance rule (tools/motion_search.h).
+// Infinite (link -1) when the motion moves no link with collision shapes.
+MotionClearance FindSwingClearance(const Robot& robot, const KickMotion& motion,
+                                   double step_s = 0.001);
+
 }  // namespace foresight

@@ -8,7 +8,8 @@ namespace foresight {
 std::unique_ptr<PhysicsSetup> LoadPhysicsSetup(Situation situation,
                                                const std::filesystem::path& models_dir,
                                                const std::filesystem::path& physics_file,
-                                               std::optional<RobotBase> base) {
+                                               std::optional<RobotBase> base,
+                                               const SettledStances* settled) {
   auto setup = std::make_unique<PhysicsSetup>();
   setup->situation = std::move(situation);
   const Situation& s = setup->situation;
@@ -20,7 +21,8 @@ std::unique_ptr<PhysicsSetup> LoadPhysicsSetup(Situation situation,
   if (base) setup->params.robot.base = *base;
   setup->state = DrawnState{s.state.robot, s.state.MeanBallInField()};
   setup->simulator.emplace(
-      MakePhysicsScene(s.field, setup->params, &setup->robot, s.obstacles, setup->state.p_F_ball),
+      MakePhysicsScene(s.field, setup->params, &setup->robot, s.obstacles, setup->state.p_F_ball,
+                       settled),
       s.kicks);
   return setup;
 }

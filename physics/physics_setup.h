@@ -29,11 +29,14 @@ struct PhysicsSetup {
 };
 
 // `physics_file` empty: MODELS/physics/<field>.json; `base` replaces the file's robot base
-// (`--base`). Throws InputError on bad files.
+// (`--base`). `settled`, when given, are the robot's settled stances under these physics
+// (SettleStances of an earlier setup of the same robot, field and physics file: a run over many
+// situations settles once). Throws InputError on bad files.
 std::unique_ptr<PhysicsSetup> LoadPhysicsSetup(Situation situation,
                                                const std::filesystem::path& models_dir,
                                                const std::filesystem::path& physics_file = {},
-                                               std::optional<RobotBase> base = {});
+                                               std::optional<RobotBase> base = {},
+                                               const SettledStances* settled = nullptr);
 
 // InputError "WHERE: kicks: robot 'R' has no motion for kick 'K'" unless the robot has a motion
 // for every kick of the situation's model (for runs that may execute any of them).

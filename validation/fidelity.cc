@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 
 #include "common/error.h"
@@ -63,10 +64,18 @@ std::vector<StrategyAgreement> CompareDecisions(ActionEvaluator& coarse,
   return out;
 }
 
+// Settled stances (floating base) per robot and field: the situations of a set share them, so
+// each robot settles its kicks' weight shifts once per run, not once per situation.
+using SettledByWorld = std::map<std::string, SettledStances>;
+
 SituationFidelity RunOne(const FidelityCase& fc, const std::vector<double>& rotations,
                          const std::filesystem::path& models, const FidelitySettings& settings,
-                         int coarse_samples) {
-  auto setup = LoadPhysicsSetup(fc.situation, models, settings.physics_file, settings.base);
+                         int coarse_samples, SettledByWorld& settled) {
+  const std::string world = fc.situation.kicks.robot + "|" + fc.situation.field.name;
+  const auto known = settled.find(world);
+  auto setup = LoadPhysicsSetup(fc.situation, models, settings.physics_file, settings.base,
+                                known == settled.end() ? nullptr : &known->second);
+  if (known == settled.end()) settled.emplace(world, setup->simulator->scene().settled_stances);
   const Situation& situation = setup->situation;
   RequireAllKickMotions(*setup, fc.file.string());
   const CoarsePlanner planner(situation);
@@ -197,11 +206,12 @@ FidelityResult RunFidelity(const FidelitySet& set, const std::filesystem::path& 
   result.coarse_samples = FidelityCoarseSamples(set, settings);
   const Shard& shard = settings.shard;
   const int owned = shard.OwnedCount(static_cast<int>(set.cases.size()));
+  SettledByWorld settled;
   for (int k = 0; k < owned; ++k) {
     const FidelityCase& fc = set.cases[shard.Item(k)];
     const int n =
         settings.coarse_samples > 0 ? settings.coarse_samples : fc.situation.evaluation.samples;
-    result.situations.push_back(RunOne(fc, set.rotations_rad, models_dir, settings, n));
+    result.situations.push_back(RunOne(fc, set.rotations_rad, models_dir, settings, n, settled));
     if (settings.progress) settings.progress(k + 1, owned);
   }
   if (shard.IsWhole()) FinishFidelity(result, settings.confidence);

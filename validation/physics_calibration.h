@@ -45,7 +45,10 @@ struct PhysicsKickTrials {
   std::vector<TrialDraw> draws;
   std::vector<int> trials;  // the trial index of each observation
   int missed = 0;  // the robot did not touch the ball (and did not fall)
-  int fell = 0;    // the robot fell (floating base); neither is an observation
+  // The robot fell (floating base), whether before or after it launched the ball: a fall is
+  // counted here and never observed, so a launch the robot fell after is not in the fit (the
+  // kick model describes kicks the robot stands through; the report prints the count).
+  int fell = 0;
   std::vector<int> fell_trials;  // the trial index of each fall, ascending
   MotionClearance clearance;  // of the kick's motion (physics/motion_clearance.h)
 };

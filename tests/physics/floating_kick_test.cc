@@ -32,31 +32,47 @@ void AddCarpet(BulletWorld& world, const PhysicsParams& params) {
                   {params.materials.restitution.carpet, params.materials.friction.carpet});
 }
 
+// How far a floating robot held at a kick's stance moves in 2 s on a bare carpet.
+struct Standing {
+  double drift_m = 0.0;   // horizontal
+  double sink_m = 0.0;    // vertical, either way
+  double max_tilt_deg = 0.0;
+};
+
+Standing StandFor2s(const testing::PhysicsFixtureData& data, const char* kick,
+                    const Eigen::Isometry3d& pose_F_start_at_height_0) {
+  const Robot& robot = *data.robot;
+  const KickMotion& motion = robot.motions[*robot.FindMotion(kick)];
+  BulletWorld world(BulletWorld::Kind::kMultiBody, {data.params.steps.solver_iterations,
+                                                    data.params.steps.restitution_threshold_mps});
+  AddCarpet(world, data.params);
+  Eigen::Isometry3d start = pose_F_start_at_height_0;
+  start.translation().z() = robot.BaseHeightM(motion);
+  KickingRobot kicker(world, robot, start, robot.StandingPositions(motion),
+                      KickJoints(robot, motion, RobotBase::kFloating), data.params);
+  const Eigen::Vector3d p0 = ToEigen(kicker.body().getBaseWorldTransform()).translation();
+  const double dt = data.params.steps.kick_time_step_s;
+  Standing standing;
+  for (int step = 0; step < 1000; ++step) {  // 2 s
+    world.world().stepSimulation(dt, 0, dt);
+    standing.max_tilt_deg = std::max(standing.max_tilt_deg, kicker.TiltRad() * kRadToDeg);
+  }
+  const Eigen::Vector3d p1 = ToEigen(kicker.body().getBaseWorldTransform()).translation();
+  standing.drift_m = (p1 - p0).head<2>().norm();
+  standing.sink_m = std::abs(p1.z() - p0.z());
+  return standing;
+}
+
 // Held at a kick's stance by its motors, the robot stands still on its soles: its own contact
 // parameters hold it (the ball's striking ones, zero contact ERP and no speculative contacts,
 // let it creep 16 mm and tilt 2.8 deg in 2 s).
 TEST(FloatingBaseTest, TheRobotStandsStillOnItsSoles) {
   const auto data = FloatingNao();
-  const Robot& robot = *data->robot;
   for (const char* kick : {"forward", "side_kick_left"}) {
-    const KickMotion& motion = robot.motions[*robot.FindMotion(kick)];
-    BulletWorld world(BulletWorld::Kind::kMultiBody, {data->params.steps.solver_iterations,
-                                                      data->params.steps.restitution_threshold_mps});
-    AddCarpet(world, data->params);
-    const Eigen::Isometry3d start = PlanarPose(0.3, -0.2, robot.BaseHeightM(motion), 0.5);
-    KickingRobot kicker(world, robot, start, robot.StandingPositions(motion),
-                        KickJoints(robot, motion, RobotBase::kFloating), data->params);
-    const Eigen::Vector3d p0 = ToEigen(kicker.body().getBaseWorldTransform()).translation();
-    const double dt = data->params.steps.kick_time_step_s;
-    double max_tilt = 0.0;
-    for (int step = 0; step < 1000; ++step) {  // 2 s
-      world.world().stepSimulation(dt, 0, dt);
-      max_tilt = std::max(max_tilt, kicker.TiltRad());
-    }
-    const Eigen::Vector3d p1 = ToEigen(kicker.body().getBaseWorldTransform()).translation();
-    EXPECT_LT((p1 - p0).head<2>().norm(), 0.003) << kick;
-    EXPECT_LT(std::abs(p1.z() - p0.z()), 0.003) << kick;  // on the carpet, not in it
-    EXPECT_LT(max_tilt * kRadToDeg, 1.0) << kick;
+    const Standing standing = StandFor2s(*data, kick, PlanarPose(0.3, -0.2, 0.0, 0.5));
+    EXPECT_LT(standing.drift_m, 0.003) << kick;
+    EXPECT_LT(standing.sink_m, 0.003) << kick;  // on the carpet, not in it
+    EXPECT_LT(standing.max_tilt_deg, 1.0) << kick;
   }
 }
 
@@ -151,6 +167,59 @@ TEST(FloatingKickTest, TheSameSeedGivesTheSameTrialsWhateverTheThreads) {
     EXPECT_EQ(one[i].launch_direction_rad, two[i].launch_direction_rad);
     EXPECT_EQ(one[i].outcome.p_F_rest, two[i].outcome.p_F_rest);
     EXPECT_EQ(one[i].max_tilt_rad, two[i].max_tilt_rad);
+  }
+}
+
+// The AIBO on its four paws: held at its stances it stands still (without friction anchors on
+// its links' contacts its round paws crept 1.7-2.6 mm/s); its right front paw kicks (`forward`,
+// `pass`) stand through the kick with their weight shift and topple without it.
+std::unique_ptr<testing::PhysicsFixtureData> FloatingAibo() {
+  auto data = testing::LoadPhysicsFixture("four_legged", true, "aibo_ers7");
+  data->params.robot.base = RobotBase::kFloating;
+  return data;
+}
+
+KickTrialsRequest AiboRequest(const KickModel& kicks, const char* kick, int trials) {
+  KickTrialsRequest request;
+  const Vec2 ball(0.4, -0.3);
+  request.state = DrawnState{Pose2{ball, -20.0 * kDegToRad}, ball};
+  request.kick_index = *kicks.Find(kick);
+  request.trials = trials;
+  request.seed = 5;
+  return request;
+}
+
+TEST(FloatingAiboTest, TheAiboStandsStillOnItsPaws) {
+  const auto data = FloatingAibo();
+  for (const char* kick : {"forward", "pass", "head_kick_left"}) {
+    const Standing standing = StandFor2s(*data, kick, PlanarPose(0.1, 0.2, 0.0, -0.4));
+    EXPECT_LT(standing.drift_m, 0.001) << kick;
+    EXPECT_LT(standing.sink_m, 0.003) << kick;
+    EXPECT_LT(standing.max_tilt_deg, 1.0) << kick;
+  }
+}
+
+TEST(FloatingAiboTest, ThePawKicksKeepTheirBalanceWithTheirWeightShift) {
+  const auto data = FloatingAibo();
+  const KickModel kicks = LoadKickModel(testing::ModelsDir() / "kicks" / "aibo_ers7.json");
+  const PhysicsSimulator simulator(testing::SceneOf(*data), kicks);
+  for (const char* kick : {"forward", "pass"}) {
+    const TrialSummary summary = Summarize(RunKickTrials(simulator, AiboRequest(kicks, kick, 4)));
+    EXPECT_EQ(summary.fell, 0) << kick;
+    EXPECT_EQ(summary.launched, 4) << kick;
+    EXPECT_GT(summary.launch_speed_mean_mps, 0.6) << kick;
+    EXPECT_LT(summary.max_tilt_rad * kRadToDeg, 20.0) << kick;
+  }
+}
+
+TEST(FloatingAiboTest, WithoutItsWeightShiftThePowerKickFalls) {
+  auto data = FloatingAibo();
+  for (KickMotion& motion : data->robot->motions) motion.balance = KickBalance{};
+  const KickModel kicks = LoadKickModel(testing::ModelsDir() / "kicks" / "aibo_ers7.json");
+  const PhysicsSimulator simulator(testing::SceneOf(*data), kicks);
+  for (const TrialResult& r : RunKickTrials(simulator, AiboRequest(kicks, "forward", 3))) {
+    EXPECT_TRUE(r.fell);
+    EXPECT_EQ(r.outcome.status, OutcomeStatus::kFell);
   }
 }
 

@@ -91,5 +91,18 @@ TEST(MotionClearanceTest, ShippedMotionsStayAboveTheCarpet) {
   }
 }
 
+// The swing's clearance leaves out what the motion does not move: the NAO's forward kick stands
+// on its left sole (the body's lowest point is on the carpet) while the right foot swings at
+// least 5 mm above it (the motion's notes).
+TEST(MotionClearanceTest, SwingClearanceCountsOnlyTheLinksTheMotionMoves) {
+  const Robot robot = LoadRobot("nao", testing::ModelsDir());
+  const KickMotion& forward = robot.motions[*robot.FindMotion("forward")];
+  EXPECT_NEAR(FindMotionClearance(robot, forward).lowest_m, 0.0, 1e-3);
+  const MotionClearance swing = FindSwingClearance(robot, forward);
+  EXPECT_GT(swing.lowest_m, 0.0045);
+  EXPECT_LT(swing.lowest_m, 0.05);
+  EXPECT_EQ(swing.link_name.front(), 'r') << swing.link_name;
+}
+
 }  // namespace
 }  // namespace foresight

@@ -1,0 +1,271 @@
+// The motion search on a tiny budget: the same settings give the same bytes whatever the thread
+// count, the first candidate is the shipped motion, the refusal rules refuse, the score adds
+// what the objective says, bad settings name their field, and a written motion file loads back
+// as the candidate.
+#include "tools/motion_search.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+
+#include "common/error.h"
+#include "common/geometry.h"
+#include "tests/support/model_test_util.h"
+#include "tests/support/temp_files.h"
+#include "tools/motion_search_output.h"
+
+namespace foresight {
+namespace {
+
+using testing::ModelsDir;
+using testing::WriteTempFile;
+
+// A fixed base keeps a trial at about 10 ms; two rounds of three and two candidates, two trials.
+std::string TinySettings(const std::string& base = "fixed", int seed = 3,
+                         const std::string& constraints =
+                             R"({"min_clearance_m": 0.005, "max_speed_share": 1.0, "max_fall_share": 0.0, "max_duration_s": 3.0})") {
+  return R"({
+    "notes": "test: a tiny budget",
+    "situation": "nao", "kicks": "nao_calibrated", "kick": "forward", "base": ")" + base + R"(",
+    "seed": )" + std::to_string(seed) + R"(,
+    "rounds": [
+      {"candidates": 3, "trials": 2, "keyframe_sigma_deg": 3, "time_sigma_rel": 0.05, "balance_sigma_deg": 1},
+      {"candidates": 2, "trials": 2, "keyframe_sigma_deg": 1, "time_sigma_rel": 0.02, "balance_sigma_deg": 0.5}
+    ],
+    "constraints": )" + constraints + R"(,
+    "objective": {"target_speed_mps": 1.1, "target_direction_deg": 0, "speed_sd_max_mps": 0.05,
+                  "sd_weight": 1, "min_speed_mps": 0.98, "low_weight": 1, "direction_max_deg": 3,
+                  "direction_weight_per_deg": 0.01, "miss_weight": 1, "fall_weight": 10},
+    "keep": 2
+  })";
+}
+
+struct Search {
+  MotionSearchSettings settings;
+  std::unique_ptr<PhysicsSetup> setup;
+  MotionSearchResult result;
+};
+
+Search RunSearch(const std::string& text, int threads) {
+  Search s;
+  s.settings = LoadMotionSearchSettings(WriteTempFile("search.json", text), ModelsDir());
+  s.setup = LoadSearchSetup(s.settings, ModelsDir());
+  MotionSearchRun run;
+  run.settings = &s.settings;
+  run.setup = s.setup.get();
+  run.threads = threads;
+  s.result = RunMotionSearch(run);
+  return s;
+}
+
+TEST(MotionSearchTest, SameSeedSameBytesWhateverTheThreadsAndTheBaselineIsTheShippedMotion) {
+  const Search one = RunSearch(TinySettings(), 1);
+  const Search two = RunSearch(TinySettings(), 2);
+  const std::string bytes = SearchJson(one.settings, one.result).dump();
+  EXPECT_EQ(bytes, SearchJson(two.settings, two.result).dump());
+  ASSERT_EQ(one.result.candidates.size(), 5u);
+  const KickMotion& shipped = one.setup->robot.motions[*one.setup->robot.FindMotion("forward")];
+  const KickMotion& baseline = one.result.candidates[0].motion;
+  ASSERT_EQ(baseline.keyframes.size(), shipped.keyframes.size());
+  for (std::size_t k = 0; k < shipped.keyframes.size(); ++k) {
+    EXPECT_EQ(baseline.keyframes[k].time_s, shipped.keyframes[k].time_s);
+    EXPECT_EQ(baseline.keyframes[k].positions_rad, shipped.keyframes[k].positions_rad);
+  }
+  // The shipped forward kick launches near 1.08 m/s on the fixed base: it is scored.
+  const SearchCandidate& first = one.result.candidates[0];
+  EXPECT_EQ(first.refusal, Refusal::kNone);
+  EXPECT_EQ(first.summary.trials, 2);
+  EXPECT_NEAR(first.summary.launch_speed_mean_mps, 1.08, 0.1);
+  // Other candidates moved the inner keyframes and kept the stance at both ends.
+  const KickMotion& drawn = one.result.candidates[1].motion;
+  EXPECT_NE(drawn.keyframes[2].positions_rad, shipped.keyframes[2].positions_rad);
+  EXPECT_EQ(drawn.keyframes.front().positions_rad, shipped.keyframes.front().positions_rad);
+  EXPECT_EQ(drawn.keyframes.back().positions_rad, shipped.keyframes.back().positions_rad);
+  // The best list holds the scored candidates in order of score.
+  ASSERT_FALSE(one.result.best.empty());
+  for (std::size_t k = 1; k < one.result.best.size(); ++k) {
+    EXPECT_LE(one.result.candidates[one.result.best[k - 1]].score,
+              one.result.candidates[one.result.best[k]].score);
+  }
+  // Another seed draws other candidates.
+  const Search other = RunSearch(TinySettings("fixed", 4), 1);
+  EXPECT_NE(bytes, SearchJson(other.settings, other.result).dump());
+}
+
+TEST(MotionSearchTest, RefusalRulesRefuseBeforeAnyTrial) {
+  const Search slow = RunSearch(
+      TinySettings("fixed", 3,
+                   R"({"min_clearance_m": 0.005, "max_speed_share": 0.1, "max_fall_share": 0.0, "max_duration_s": 3.0})"),
+      1);
+  for (const SearchCandidate& c : slow.result.candidates) {
+    EXPECT_EQ(c.refusal, Refusal::kSpeed);
+    EXPECT_EQ(c.summary.trials, 0);
+  }
+  EXPECT_TRUE(slow.result.best.empty());
+  const Search high = RunSearch(
+      TinySettings("fixed", 3,
+                   R"({"min_clearance_m": 0.5, "max_speed_share": 1.0, "max_fall_share": 0.0, "max_duration_s": 3.0})"),
+      1);
+  // The speed rule comes first: a drawn candidate may be refused for speed instead.
+  EXPECT_EQ(high.result.candidates[0].refusal, Refusal::kClearance);
+  for (const SearchCandidate& c : high.result.candidates) {
+    EXPECT_NE(c.refusal, Refusal::kNone);
+    EXPECT_EQ(c.summary.trials, 0);
+  }
+}
+
+TEST(MotionSearchTest, FloatingBaseShiftsTheBalanceAndCountsFalls) {
+  std::string text = TinySettings("floating");
+  text = testing::ReplaceOnce(text, R"("candidates": 3, "trials": 2)", R"("candidates": 2, "trials": 1)");
+  text = testing::ReplaceOnce(text, R"("candidates": 2, "trials": 2)", R"("candidates": 1, "trials": 1)");
+  const Search s = RunSearch(text, 1);
+  ASSERT_EQ(s.result.candidates.size(), 3u);
+  const KickMotion& shipped = s.setup->robot.motions[*s.setup->robot.FindMotion("forward")];
+  const SearchCandidate& baseline = s.result.candidates[0];
+  EXPECT_EQ(baseline.refusal, Refusal::kNone);
+  EXPECT_EQ(baseline.summary.fell, 0);
+  // A drawn candidate changes every offset's magnitude by the same amount, keeping the signs.
+  const KickMotion& drawn = s.result.candidates[1].motion;
+  ASSERT_EQ(drawn.balance.offsets_rad.size(), shipped.balance.offsets_rad.size());
+  const double change = std::abs(drawn.balance.offsets_rad[0].second) -
+                        std::abs(shipped.balance.offsets_rad[0].second);
+  EXPECT_NE(change, 0.0);
+  for (std::size_t k = 0; k < shipped.balance.offsets_rad.size(); ++k) {
+    EXPECT_NEAR(std::abs(drawn.balance.offsets_rad[k].second) -
+                    std::abs(shipped.balance.offsets_rad[k].second),
+                change, 1e-12);
+    EXPECT_EQ(std::signbit(drawn.balance.offsets_rad[k].second),
+              std::signbit(shipped.balance.offsets_rad[k].second));
+  }
+}
+
+// A motion too fast for its joints is slowed where it is too fast, its poses kept.
+TEST(MotionSearchTest, FitToSpeedLimitSlowsTheSegmentsThatAreTooFast) {
+  const Robot robot = LoadRobot("nao", ModelsDir());
+  const KickMotion& shipped = robot.motions[*robot.FindMotion("forward_long")];
+  const double share = FindPeakJointSpeed(shipped, robot.model).share;
+  KickMotion motion = shipped;
+  FitToSpeedLimit(motion, robot.model, 0.6 * share);
+  EXPECT_LE(FindPeakJointSpeed(motion, robot.model).share, 0.6 * share);
+  EXPECT_GT(motion.DurationS(), shipped.DurationS());
+  for (std::size_t k = 0; k < motion.keyframes.size(); ++k) {
+    EXPECT_EQ(motion.keyframes[k].positions_rad, shipped.keyframes[k].positions_rad);
+  }
+  EXPECT_EQ(motion.keyframes[1].time_s, shipped.keyframes[1].time_s);  // the lift was slow enough
+  KickMotion untouched = shipped;
+  FitToSpeedLimit(untouched, robot.model, 1.0);
+  EXPECT_EQ(untouched.DurationS(), shipped.DurationS());
+}
+
+TEST(MotionSearchTest, ScoreAddsTheObjectivesTerms) {
+  SearchObjective o;
+  o.target_speed_mps = 1.5;
+  o.speed_sd_max_mps = 0.1;
+  o.sd_weight = 2.0;
+  o.low_weight = 3.0;
+  o.direction_max_rad = 3.0 * kDegToRad;
+  o.direction_weight = 0.5 * kRadToDeg;  // 0.5 per degree
+  o.miss_weight = 4.0;
+  o.fall_weight = 10.0;
+  TrialSummary s;
+  s.trials = 10;
+  s.touched = 9;
+  s.launched = 8;
+  s.fell = 1;
+  s.launch_speed_mean_mps = 1.3;
+  s.launch_speed_sd_mps = 0.15;
+  s.launch_direction_mean_rad = -5.0 * kDegToRad;
+  const double expected = 0.2 + 2.0 * 0.05 + 3.0 * 0.25 + 0.5 * 2.0 + 4.0 * 0.2 + 10.0 * 0.1;
+  EXPECT_NEAR(ScoreCandidate(o, s, 0.25), expected, 1e-9);
+}
+
+TEST(MotionSearchTest, BadSettingsNameTheFileAndField) {
+  const auto error_of = [](const std::string& text) {
+    try {
+      LoadMotionSearchSettings(WriteTempFile("bad_search.json", text), ModelsDir());
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error_of(testing::ReplaceOnce(TinySettings(), R"("candidates": 3, "trials": 2)", R"("candidates": 3, "trials": 0)"))
+                .find("rounds[0].trials: must be in [1, 100000], got 0"),
+            std::string::npos);
+  EXPECT_NE(error_of(testing::ReplaceOnce(TinySettings(), R"("base": "fixed")", R"("base": "flying")"))
+                .find("base: must be one of fixed, floating, got 'flying'"),
+            std::string::npos);
+  EXPECT_NE(error_of(testing::ReplaceOnce(TinySettings(), R"("keep": 2)", R"("keep": 2, "kep": 1)"))
+                .find("kep"),
+            std::string::npos);
+  const std::string message =
+      error_of(testing::ReplaceOnce(TinySettings(), R"("max_speed_share": 1.0)", R"("max_speed_share": 1.2)"));
+  EXPECT_NE(message.find("bad_search.json"), std::string::npos) << message;
+  EXPECT_NE(message.find("constraints.max_speed_share: must be in [0.01, 1], got 1.2"),
+            std::string::npos)
+      << message;
+  // An unknown kick is named with the file.
+  const MotionSearchSettings settings = LoadMotionSearchSettings(
+      WriteTempFile("kick_search.json",
+                    testing::ReplaceOnce(TinySettings(), R"("kick": "forward")", R"("kick": "lob")")),
+      ModelsDir());
+  EXPECT_THROW(LoadSearchSetup(settings, ModelsDir()), InputError);
+}
+
+TEST(MotionSearchTest, AWrittenMotionFileLoadsBackAsTheCandidate) {
+  const Search s = RunSearch(TinySettings(), 2);
+  ASSERT_FALSE(s.result.best.empty());
+  const SearchCandidate& best = s.result.candidates[s.result.best[0]];
+  const int m = *s.setup->robot.FindMotion("forward");
+  const std::string text =
+      MotionFileText(s.setup->robot.spec.kick_motion_files[m].second, best.motion);
+  const KickMotion loaded = LoadKickMotion(WriteTempFile("best_1.json", text));
+  ASSERT_EQ(loaded.keyframes.size(), best.motion.keyframes.size());
+  for (std::size_t k = 0; k < loaded.keyframes.size(); ++k) {
+    EXPECT_NEAR(loaded.keyframes[k].time_s, best.motion.keyframes[k].time_s, 1e-6);
+    for (std::size_t j = 0; j < loaded.joints.size(); ++j) {
+      EXPECT_NEAR(loaded.keyframes[k].positions_rad[j], best.motion.keyframes[k].positions_rad[j],
+                  1e-4 * kDegToRad);
+    }
+  }
+  EXPECT_EQ(loaded.p_R_ball, best.motion.p_R_ball);
+  EXPECT_EQ(loaded.stance.base_height_m, best.motion.stance.base_height_m);
+}
+
+// The command: bad input is one line naming the file and field, exit status 2, nothing written;
+// a run writes search.json and the best motions.
+TEST(MotionSearchCommandTest, BadSettingsExitTwoAndGoodOnesWriteTheirFiles) {
+  const std::filesystem::path out = testing::FreshTempDir("search_out");
+  const std::filesystem::path bad = WriteTempFile(
+      "cmd_bad.json", testing::ReplaceOnce(TinySettings(), R"("seed": 3)", R"("seed": -1)"));
+  const std::string command = std::string(FORESIGHT_MOTION_SEARCH) + " " + bad.string() +
+                              " --out " + (out / "bad").string() + " --models " +
+                              ModelsDir().string() + " 2>" + (out / "err.txt").string();
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  std::ifstream err(out / "err.txt");
+  std::string line, rest;
+  std::getline(err, line);
+  EXPECT_NE(line.find("cmd_bad.json: seed: must be in [0, 2147483647], got -1"), std::string::npos)
+      << line;
+  EXPECT_FALSE(std::getline(err, rest));  // one line
+  EXPECT_FALSE(std::filesystem::exists(out / "bad"));
+
+  const std::filesystem::path good = WriteTempFile("cmd_good.json", TinySettings());
+  const std::string run = std::string(FORESIGHT_MOTION_SEARCH) + " " + good.string() + " --out " +
+                          (out / "good").string() + " --threads 1 --models " +
+                          ModelsDir().string() + " >" + (out / "log.txt").string();
+  const int ok = std::system(run.c_str());
+  ASSERT_TRUE(WIFEXITED(ok));
+  EXPECT_EQ(WEXITSTATUS(ok), 0);
+  EXPECT_TRUE(std::filesystem::exists(out / "good" / "search.json"));
+  EXPECT_TRUE(std::filesystem::exists(out / "good" / "best_1.json"));
+  EXPECT_NO_THROW(LoadKickMotion(out / "good" / "best_1.json"));
+}
+
+}  // namespace
+}  // namespace foresight
