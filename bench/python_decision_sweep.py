@@ -8,7 +8,9 @@ From Python a Planner is built once, then
   loop:  planner.decide(robot=Pose, ball=Ball, seed=i) 1000 times (a Decision object each), and
   array: planner.decide_many(robots (1000, 3), balls (1000, 2), seed=seeds) once.
 Each is timed 5 times; the medians per decision are printed beside planner_bench's medians of
-BM_Decision for the same strategy, from one run, with their ratio.
+BM_Decision for the same strategy, from one run, with their ratio. For comparison, the last
+column times foresight.decide(FILE) (reads the files and builds the planner every call) on the
+scene with the first pose, 200 calls.
 
 Usage: PYTHONPATH=BUILD/python python3 bench/python_decision_sweep.py [BUILD]
 """
@@ -17,6 +19,7 @@ import pathlib
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 
 import numpy as np
@@ -45,12 +48,12 @@ def cpp_medians_us():
     return medians
 
 
-def median_per_decision_us(sweep):
+def median_per_decision_us(sweep, decisions=DECISIONS):
     times = []
     for _ in range(REPETITIONS):
         start = time.perf_counter()
         sweep()
-        times.append((time.perf_counter() - start) / DECISIONS * 1e6)
+        times.append((time.perf_counter() - start) / decisions * 1e6)
     return statistics.median(times)
 
 
@@ -69,7 +72,10 @@ def main():
     print(f"{DECISIONS} decisions per sweep, {SAMPLES} samples, median of {REPETITIONS} sweeps, "
           f"microseconds per decision")
     print(f"{'strategy':<12} {'C++':>8} {'Python loop':>12} {'ratio':>6} "
-          f"{'decide_many':>12} {'ratio':>6}")
+          f"{'decide_many':>12} {'ratio':>6} {'decide(FILE)':>13}")
+    first = dict(scene, robot=poses[0]["robot"], ball=poses[0]["ball"])
+    file = pathlib.Path(tempfile.mkdtemp()) / "bench_scene.json"
+    file.write_text(json.dumps(first))
     for strategy, bench_name in STRATEGIES.items():
         # The situation's own belief is the first pose's; every pose brings its own sigmas.
         planner = foresight.Planner(dict(scene, robot=poses[0]["robot"], ball=poses[0]["ball"]),
@@ -87,10 +93,15 @@ def main():
         many = planner.decide_many(robot_rows[:16], ball_rows[:16], seed=seeds[:16])
         assert [decide(robot=robots[i], ball=balls[i], seed=i).kick_index
                 for i in range(16)] == list(many["kick_index"])
+        def from_file():
+            for i in range(200):
+                foresight.decide(file, strategy=strategy, samples=SAMPLES, seed=i)
+
         py_loop, py_array = median_per_decision_us(loop), median_per_decision_us(array)
+        py_file = median_per_decision_us(from_file, 200)
         c = cpp[bench_name]
         print(f"{strategy:<12} {c:8.2f} {py_loop:12.2f} {py_loop / c:6.2f} {py_array:12.2f} "
-              f"{py_array / c:6.2f}")
+              f"{py_array / c:6.2f} {py_file:13.1f}")
 
 
 if __name__ == "__main__":
