@@ -37,6 +37,17 @@ void SetFlag(std::string& flag, const py::object& value) {
   if (!value.is_none()) flag = FlagText(value);
 }
 
+// `work()`'s JSON, computed without the GIL (a short call: no Ctrl-C polling), as Python objects.
+template <typename Work>
+py::object JsonWithoutGil(Work&& work) {
+  nlohmann::ordered_json json;
+  {
+    py::gil_scoped_release release;
+    json = work();
+  }
+  return ToPython(json);
+}
+
 py::object LoadDataFile(const std::filesystem::path& file) {
   return ToPython(JsonDocument::Load(file).Tree());
 }
@@ -61,12 +72,7 @@ py::object Decide(const py::object& situation, const py::object& strategy,
     SetFlag(options.samples, samples);
     SetFlag(options.seed, seed);
     SetFlag(options.kicks_file, kicks);
-    nlohmann::ordered_json json;
-    {
-      py::gil_scoped_release release;
-      json = DecideJson(options, ModelsDir(models));
-    }
-    return ToPython(json);
+    return JsonWithoutGil([&] { return DecideJson(options, ModelsDir(models)); });
   }
   DecisionResult r;
   r.core = MakePlannerCore(situation, kicks, strategy, samples, py::none(), models);
@@ -130,12 +136,7 @@ py::object CbrRetrieve(const py::object& problem, const py::object& case_base,
     options.problem_file = path->string();
     SetFlag(options.case_base, case_base);
     SetFlag(options.params_file, params);
-    nlohmann::ordered_json json;
-    {
-      py::gil_scoped_release release;
-      json = CbrRetrieveJsonFor(options, ModelsDir(models));
-    }
-    return ToPython(json);
+    return JsonWithoutGil([&] { return CbrRetrieveJsonFor(options, ModelsDir(models)); });
   }
   return py::module_::import("foresight").attr("CaseBase")(case_base, params, models)
       .attr("retrieve")(problem);
