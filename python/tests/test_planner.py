@@ -1,7 +1,7 @@
 """The module's in-memory objects: a Planner built once from a file or from Python data decides
 as the command line does (the same bytes of JSON for the same seed), for any pose given as a
 Pose, a dict or a tuple, and row by row for NumPy arrays; KickModel, CaseBase and passing()
-agree with the command line too; bad input names the argument, the field and the value."""
+(trial by trial with `experiment passing`'s CSV) agree with the command line too; bad input names the argument, the field and the value."""
 import json
 import os
 import pathlib
@@ -180,3 +180,23 @@ def test_passing_plays_the_match_simulator_deterministically():
     assert np.all(one["time_s"] > 0)
     with pytest.raises(foresight.InputError):
         foresight.passing("dg", trials=0)
+
+
+def test_passing_plays_the_trials_of_the_command(tmp_path):
+    out = tmp_path / "passing"
+    subprocess.run([BINARY, "experiment", "passing", "--config", "dg", "--team", "cbr",
+                    "--scenarios", "1,2", "--trials", "4", "--seed", "2", "--out", str(out)],
+                   capture_output=True, check=True)
+    lines = (out / "passing_trials.csv").read_text().splitlines()
+    rows = [dict(zip(lines[0].split(","), line.split(","))) for line in lines[1:]]
+    mine = foresight.passing("dg", team="cbr", scenarios=[1, 2], trials=4, seed=2)
+    assert mine["team_names"] == ["cbr"] and len(rows) == 8
+    for i, row in enumerate(rows):
+        assert int(row["scenario"]) == mine["scenario"][i]
+        assert int(row["trial"]) == mine["trial"][i]
+        assert row["outcome"] == mine["outcome_names"][mine["outcome"][i]]
+        assert float(row["time_s"]) == pytest.approx(mine["time_s"][i], abs=0.005)
+        assert int(row["kicks_A"]) + int(row["kicks_B"]) == mine["attacker_kicks"][i]
+        assert int(row["touches_D"]) + int(row["touches_G"]) == mine["opponent_touches"][i]
+        assert int(row["shots_on_target"]) == mine["shots_on_target"][i]
+        assert int(row["grabs_failed"]) == mine["grabs_failed"][i]
