@@ -19,6 +19,8 @@ inline std::vector<testing::StateSpec> BenchPoses(int count) {
   return poses;
 }
 
-inline std::vector<Obstacle> BenchObstacles() { return {{Vec2(3.8, 0.4), 0.15}}; }
+inline std::vector<Obstacle> BenchObstacles() {
+  return {{Vec2(3.8, 0.4), 0.15}};
+}
 
 }  // namespace foresight::bench

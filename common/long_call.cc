@@ -24,7 +24,9 @@ ScopedLongCallHost::~ScopedLongCallHost() {
   poll_every = previous_interval_;
 }
 
-LongCallHost* CurrentLongCallHost() { return current_host; }
+LongCallHost* CurrentLongCallHost() {
+  return current_host;
+}
 
 void PollLongCall() {
   if (current_host == nullptr) return;

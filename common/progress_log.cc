@@ -24,8 +24,7 @@ std::string Duration(double s) {
 }
 
 double SteadySeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 }  // namespace
@@ -49,7 +48,9 @@ ProgressLog::ProgressLog(std::string label, std::string unit, ProgressLogSetting
   last_line_s_ = start_s_;
 }
 
-double ProgressLog::Now() const { return settings_.clock_s ? settings_.clock_s() : SteadySeconds(); }
+double ProgressLog::Now() const {
+  return settings_.clock_s ? settings_.clock_s() : SteadySeconds();
+}
 
 std::string ProgressLog::Line(const std::string& label, const std::string& unit, int done,
                               int total, double elapsed_s) {
@@ -62,8 +63,8 @@ std::string ProgressLog::Line(const std::string& label, const std::string& unit,
   if (done > 0 && elapsed_s > 0.0) {
     const double rate = done / elapsed_s;
     n = std::snprintf(text, sizeof text, ", %.3g %s/s, about ", rate, unit.c_str());
-    line += std::string(text, static_cast<std::size_t>(n)) + Duration((total - done) / rate) +
-            " left";
+    line +=
+        std::string(text, static_cast<std::size_t>(n)) + Duration((total - done) / rate) + " left";
   }
   return line;
 }

@@ -19,7 +19,7 @@ namespace foresight {
 inline constexpr double kDefaultProgressIntervalS = 5.0;
 
 struct ProgressLogSettings {
-  bool terminal = false;       // rewrite one line in place
+  bool terminal = false;                          // rewrite one line in place
   double interval_s = kDefaultProgressIntervalS;  // lines into a log: at most one per interval
   std::function<double()> clock_s;  // seconds, monotonic; empty: std::chrono::steady_clock
   std::FILE* out = stderr;

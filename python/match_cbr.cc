@@ -55,7 +55,8 @@ py::dict Passing(const py::object& config, const py::object& team, const py::obj
   if (!team.is_none()) o.team = FlagText(team);
   if (!scenarios.is_none()) {
     std::string list;
-    for (const py::handle s : scenarios) list += (list.empty() ? "" : ",") + FlagText(py::reinterpret_borrow<py::object>(s));
+    for (const py::handle s : scenarios)
+      list += (list.empty() ? "" : ",") + FlagText(py::reinterpret_borrow<py::object>(s));
     o.scenarios = list;
   }
   if (!trials.is_none()) o.trials = FlagText(trials);
@@ -119,8 +120,8 @@ py::object Retrieve(const CaseBaseObject& base, const py::object& problem) {
     return ToPython(CbrRetrieveJson(RetrieveRun(base.retriever, p, *path)));
   }
   // A dict's field path ending in ".json" resolves against the working directory.
-  const Problem p = ParseProblem(DictText(problem, "problem"), "problem (dict)", "",
-                                 base.retriever.models_dir);
+  const Problem p =
+      ParseProblem(DictText(problem, "problem"), "problem (dict)", "", base.retriever.models_dir);
   return ToPython(CbrRetrieveJson(RetrieveRun(base.retriever, p, "")));
 }
 
@@ -129,9 +130,9 @@ py::object Retrieve(const CaseBaseObject& base, const py::object& problem) {
 void AddMatchAndCbr(py::module_& m) {
   m.def("passing", &Passing, py::arg("config"), py::arg("team") = py::none(),
         py::arg("scenarios") = py::none(), py::arg("trials") = py::none(),
-        py::arg("seed") = py::none(), py::arg("threads") = py::none(),
-        py::arg("mirror") = false, py::arg("physics") = false, py::arg("kicks") = py::none(),
-        py::arg("models") = py::none(), py::arg("progress") = py::none(),
+        py::arg("seed") = py::none(), py::arg("threads") = py::none(), py::arg("mirror") = false,
+        py::arg("physics") = false, py::arg("kicks") = py::none(), py::arg("models") = py::none(),
+        py::arg("progress") = py::none(),
         "The passing experiment's trials in the match simulator (`foresight experiment "
         "passing`): config 'dg' or '2d' (or a file), team 'reactive', 'cbr' or 'both', "
         "scenarios a list of 1-based numbers (None: all), trials per scenario. Returns NumPy "
@@ -152,9 +153,9 @@ void AddMatchAndCbr(py::module_& m) {
            }),
            py::arg("case_base") = py::none(), py::arg("params") = py::none(),
            py::arg("models") = py::none())
-      .def_property_readonly("size", [](const CaseBaseObject& b) {
-        return b.retriever.base.cases.size();
-      }, "Stored cases, the symmetric copies included.")
+      .def_property_readonly(
+          "size", [](const CaseBaseObject& b) { return b.retriever.base.cases.size(); },
+          "Stored cases, the symmetric copies included.")
       .def("retrieve", &Retrieve, py::arg("problem"),
            "Case retrieval for a problem (a path or a dict with the problem file's keys: field, "
            "defending, ball, teammates, opponents; metres and degrees in the field frame): what "

@@ -90,7 +90,8 @@ py::object Calibrate(const std::string& robot, const py::object& kick, const py:
                      const py::object& situation, const py::object& kicks,
                      const py::object& physics, const py::object& from_csv,
                      const py::object& confidence, const py::object& resamples,
-                     const std::optional<std::filesystem::path>& models, const py::object& progress) {
+                     const std::optional<std::filesystem::path>& models,
+                     const py::object& progress) {
   CalibrateOptions options;
   options.robot = robot;
   SetFlag(options.kick, kick);
@@ -113,7 +114,8 @@ py::object Calibrate(const std::string& robot, const py::object& kick, const py:
 py::object Fidelity(const py::object& situations, const py::object& trials,
                     const py::object& samples, const py::object& converged, const py::object& seed,
                     const py::object& threads, const py::object& kicks, const py::object& physics,
-                    const std::optional<std::filesystem::path>& models, const py::object& progress) {
+                    const std::optional<std::filesystem::path>& models,
+                    const py::object& progress) {
   FidelityOptions options;
   SetFlag(options.situations, situations);
   SetFlag(options.trials, trials);
@@ -130,7 +132,8 @@ py::object Fidelity(const py::object& situations, const py::object& trials,
 }
 
 py::object CbrRetrieve(const py::object& problem, const py::object& case_base,
-                       const py::object& params, const std::optional<std::filesystem::path>& models) {
+                       const py::object& params,
+                       const std::optional<std::filesystem::path>& models) {
   if (const auto path = AsPath(problem)) {
     CbrOptions options;
     options.problem_file = path->string();

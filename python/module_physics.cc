@@ -25,7 +25,8 @@ py::array_t<T> Column(const std::vector<TrialResult>& trials, Field&& field) {
   return column;
 }
 
-py::dict Simulate(const std::filesystem::path& situation, const std::string& kick, const py::object& trials,
+py::dict Simulate(const std::filesystem::path& situation, const std::string& kick,
+                  const py::object& trials,
                   const py::object& seed, const py::object& rotation_deg,
                   const py::object& threads, const py::object& kicks, const py::object& physics,
                   const std::optional<std::filesystem::path>& models, const py::object& base,
@@ -92,13 +93,15 @@ void AddPhysicsFunctions(py::module_& m) {
         py::arg("trials") = py::none(), py::arg("seed") = py::none(),
         py::arg("rotation_deg") = py::none(), py::arg("threads") = py::none(),
         py::arg("kicks") = py::none(), py::arg("physics") = py::none(),
-        py::arg("models") = py::none(), py::arg("base") = py::none(),  // base, progress last:
-        py::arg("progress") = py::none(),                               // older calls' positions hold
+        // base and progress last: older calls that pass arguments by position keep working
+        py::arg("models") = py::none(), py::arg("base") = py::none(),
+        py::arg("progress") = py::none(),
         "Physics trials of one kick (`foresight simulate`): a dict of NumPy arrays, one entry "
         "per trial (rest_x_m, rest_y_m in F; category, first_contact, status as codes into "
         "category_names, contact_names, status_names; launch_speed_mps, launch_direction_deg in "
         "the intended robot frame; fell and max_tilt_deg on a floating base (base='floating'); "
-        "the drawn perturbations). Ctrl-C stops it; progress(label, done, total) hears how far it is.");
+        "the drawn perturbations). Ctrl-C stops it; progress(label, done, total) hears how far "
+        "it is.");
 }
 
 }  // namespace foresight::python

@@ -78,9 +78,8 @@ py::dict DecideMany(const std::shared_ptr<PlannerCore>& core, const py::object& 
     const ProgressFunction report = LongCallProgress("decide", "poses", {});
     const py::ssize_t every = std::max<py::ssize_t>(1, n / 100);
     for (py::ssize_t i = 0; i < n; ++i) {
-      WithFile("robots[" + std::to_string(i) + "]", [&] {
-        DecideLocked(*core, states[i], chosen, sample_count, seeds[i]);
-      });
+      WithFile("robots[" + std::to_string(i) + "]",
+               [&] { DecideLocked(*core, states[i], chosen, sample_count, seeds[i]); });
       const Decision& d = core->scratch;
       k(i) = d.kick_index;
       rot(i) = d.rotation_rad * kRadToDeg;

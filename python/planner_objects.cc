@@ -25,8 +25,9 @@ std::string TypeName(const py::handle& value) {
 }
 
 double Number(const py::handle& value, const std::string& where) {
-  if (py::isinstance<py::bool_>(value) || !(PyFloat_Check(value.ptr()) || PyLong_Check(value.ptr()) ||
-                                            py::hasattr(value, "__float__"))) {
+  if (py::isinstance<py::bool_>(value) ||
+      !(PyFloat_Check(value.ptr()) || PyLong_Check(value.ptr()) ||
+        py::hasattr(value, "__float__"))) {
     throw InputError(where + ": must be a number, got a " + TypeName(value));
   }
   return value.cast<double>();
@@ -78,8 +79,8 @@ PoseArg PoseFrom(const py::handle& value, const std::string& where) {
   if (py::isinstance<py::sequence>(value) && !py::isinstance<py::str>(value)) {
     const py::sequence s = value.cast<py::sequence>();
     if (s.size() != 3) {
-      throw InputError(where + ": must be (x_m, y_m, theta_deg), got " +
-                       std::to_string(s.size()) + " values");
+      throw InputError(where + ": must be (x_m, y_m, theta_deg), got " + std::to_string(s.size()) +
+                       " values");
     }
     p.x_m = Number(s[0], where + "[0]");
     p.y_m = Number(s[1], where + "[1]");
@@ -108,8 +109,7 @@ BallArg BallFrom(const py::handle& value, const std::string& where) {
   if (py::isinstance<py::sequence>(value) && !py::isinstance<py::str>(value)) {
     const py::sequence s = value.cast<py::sequence>();
     if (s.size() != 2) {
-      throw InputError(where + ": must be (x_m, y_m), got " + std::to_string(s.size()) +
-                       " values");
+      throw InputError(where + ": must be (x_m, y_m), got " + std::to_string(s.size()) + " values");
     }
     b.x_m = Number(s[0], where + "[0]");
     b.y_m = Number(s[1], where + "[1]");
@@ -141,8 +141,8 @@ KickModelArg KickModelFrom(const py::handle& value) {
 }  // namespace
 
 std::uint64_t SeedFrom(const py::handle& value) {
-  if (PyLong_Check(value.ptr()) || (py::hasattr(value, "__index__") &&
-                                    !py::isinstance<py::bool_>(value))) {
+  if (PyLong_Check(value.ptr()) ||
+      (py::hasattr(value, "__index__") && !py::isinstance<py::bool_>(value))) {
     const py::object number = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
     if (number) {
       const unsigned long long seed = PyLong_AsUnsignedLongLong(number.ptr());
@@ -159,8 +159,7 @@ Strategy StrategyFrom(const py::handle& value, Strategy fallback) {
   const std::string name = py::str(value).cast<std::string>();
   const std::optional<Strategy> strategy = ParseStrategy(name);
   if (!strategy) {
-    throw InputError("strategy: unknown strategy '" + name + "' (one of: " + StrategyNames() +
-                     ")");
+    throw InputError("strategy: unknown strategy '" + name + "' (one of: " + StrategyNames() + ")");
   }
   return *strategy;
 }
@@ -182,8 +181,7 @@ int SamplesFrom(const py::handle& value, int fallback) {
 // --- the planner ----------------------------------------------------------------------------
 
 std::shared_ptr<PlannerCore> MakePlannerCore(const py::object& situation, const py::object& kicks,
-                                             const py::object& strategy,
-                                             const py::object& samples,
+                                             const py::object& strategy, const py::object& samples,
                                              const py::object& coarse_rebounds,
                                              const std::optional<std::filesystem::path>& models) {
   auto core = std::make_shared<PlannerCore>();
@@ -243,11 +241,11 @@ py::dict SituationDict(const Situation& s) {
       py::arg("kicks_file") = s.kicks_file.string(),
       py::arg("evaluation_file") = s.evaluation_file.string(), py::arg("kicks") = kick_names,
       py::arg("samples") = s.evaluation.samples,
-      py::arg("robot") = py::dict(py::arg("x_m") = e.robot.p_F.x(), py::arg("y_m") = e.robot.p_F.y(),
-                                  py::arg("theta_rad") = e.robot.theta_rad,
-                                  py::arg("sigma_x_m") = e.sigma_robot_x_m,
-                                  py::arg("sigma_y_m") = e.sigma_robot_y_m,
-                                  py::arg("sigma_theta_rad") = e.sigma_robot_theta_rad),
+      py::arg("robot") = py::dict(
+          py::arg("x_m") = e.robot.p_F.x(), py::arg("y_m") = e.robot.p_F.y(),
+          py::arg("theta_rad") = e.robot.theta_rad, py::arg("sigma_x_m") = e.sigma_robot_x_m,
+          py::arg("sigma_y_m") = e.sigma_robot_y_m,
+          py::arg("sigma_theta_rad") = e.sigma_robot_theta_rad),
       py::arg("ball") = py::dict(py::arg("x_m") = e.p_R_ball.x(), py::arg("y_m") = e.p_R_ball.y(),
                                  py::arg("sigma_x_m") = e.sigma_ball_x_m,
                                  py::arg("sigma_y_m") = e.sigma_ball_y_m),
@@ -255,15 +253,16 @@ py::dict SituationDict(const Situation& s) {
 }
 
 py::object DecisionDict(const DecisionResult& r) {
-  const DecisionRun run{r.core->situation_file, r.core->planner.get(), r.decision, r.samples,
-                        r.seed, r.core->models};
+  const DecisionRun run{
+      r.core->situation_file, r.core->planner.get(), r.decision, r.samples, r.seed, r.core->models};
   return ToPython(DecisionJson(run));
 }
 
 void AddPlannerObjects(py::module_& m) {
-  py::class_<PoseArg>(m, "Pose", "A robot pose in the field frame F: x_m, y_m (metres), theta_deg "
-                                 "(degrees, 0 = towards the opponent goal); sigmas of the belief "
-                                 "(None: the situation's).")
+  py::class_<PoseArg>(m, "Pose",
+                      "A robot pose in the field frame F: x_m, y_m (metres), theta_deg "
+                      "(degrees, 0 = towards the opponent goal); sigmas of the belief "
+                      "(None: the situation's).")
       .def(py::init<double, double, double, std::optional<double>, std::optional<double>,
                     std::optional<double>>(),
            py::arg("x_m"), py::arg("y_m"), py::arg("theta_deg"), py::arg("sigma_x_m") = py::none(),
@@ -274,48 +273,63 @@ void AddPlannerObjects(py::module_& m) {
       .def_readwrite("sigma_x_m", &PoseArg::sigma_x_m)
       .def_readwrite("sigma_y_m", &PoseArg::sigma_y_m)
       .def_readwrite("sigma_theta_deg", &PoseArg::sigma_theta_deg)
-      .def("to_dict", [](const PoseArg& p) {
-        py::dict d = Items({{"x_m", p.x_m}, {"y_m", p.y_m}, {"theta_deg", p.theta_deg},
-                            {"sigma_x_m", p.sigma_x_m}, {"sigma_y_m", p.sigma_y_m},
-                            {"sigma_theta_deg", p.sigma_theta_deg}});
-        return d;
-      }, "The situation file's `robot` object (unset sigmas left out).")
+      .def(
+          "to_dict",
+          [](const PoseArg& p) {
+            py::dict d = Items({{"x_m", p.x_m},
+                                {"y_m", p.y_m},
+                                {"theta_deg", p.theta_deg},
+                                {"sigma_x_m", p.sigma_x_m},
+                                {"sigma_y_m", p.sigma_y_m},
+                                {"sigma_theta_deg", p.sigma_theta_deg}});
+            return d;
+          },
+          "The situation file's `robot` object (unset sigmas left out).")
       .def("__repr__", [](const PoseArg& p) {
-        return "Pose(x_m=" + std::string(py::repr(py::float_(p.x_m))) + ", y_m=" +
-               std::string(py::repr(py::float_(p.y_m))) + ", theta_deg=" +
-               std::string(py::repr(py::float_(p.theta_deg))) + ")";
+        return "Pose(x_m=" + std::string(py::repr(py::float_(p.x_m))) +
+               ", y_m=" + std::string(py::repr(py::float_(p.y_m))) +
+               ", theta_deg=" + std::string(py::repr(py::float_(p.theta_deg))) + ")";
       });
-  py::class_<BallArg>(m, "Ball", "The ball relative to the robot, in the robot frame R: x_m "
-                                 "ahead, y_m to the left (metres); sigmas of the belief (None: "
-                                 "the situation's).")
-      .def(py::init<double, double, std::optional<double>, std::optional<double>>(),
-           py::arg("x_m"), py::arg("y_m"), py::arg("sigma_x_m") = py::none(),
-           py::arg("sigma_y_m") = py::none())
+  py::class_<BallArg>(m, "Ball",
+                      "The ball relative to the robot, in the robot frame R: x_m "
+                      "ahead, y_m to the left (metres); sigmas of the belief (None: "
+                      "the situation's).")
+      .def(py::init<double, double, std::optional<double>, std::optional<double>>(), py::arg("x_m"),
+           py::arg("y_m"), py::arg("sigma_x_m") = py::none(), py::arg("sigma_y_m") = py::none())
       .def_readwrite("x_m", &BallArg::x_m)
       .def_readwrite("y_m", &BallArg::y_m)
       .def_readwrite("sigma_x_m", &BallArg::sigma_x_m)
       .def_readwrite("sigma_y_m", &BallArg::sigma_y_m)
-      .def("to_dict", [](const BallArg& b) {
-        return Items({{"x_m", b.x_m}, {"y_m", b.y_m}, {"sigma_x_m", b.sigma_x_m},
-                      {"sigma_y_m", b.sigma_y_m}});
-      }, "The situation file's `ball` object (unset sigmas left out).")
+      .def(
+          "to_dict",
+          [](const BallArg& b) {
+            return Items({{"x_m", b.x_m},
+                          {"y_m", b.y_m},
+                          {"sigma_x_m", b.sigma_x_m},
+                          {"sigma_y_m", b.sigma_y_m}});
+          },
+          "The situation file's `ball` object (unset sigmas left out).")
       .def("__repr__", [](const BallArg& b) {
-        return "Ball(x_m=" + std::string(py::repr(py::float_(b.x_m))) + ", y_m=" +
-               std::string(py::repr(py::float_(b.y_m))) + ")";
+        return "Ball(x_m=" + std::string(py::repr(py::float_(b.x_m))) +
+               ", y_m=" + std::string(py::repr(py::float_(b.y_m))) + ")";
       });
-  py::class_<ObstacleArg>(m, "Obstacle", "An obstacle robot in the field frame F: a disc at x_m, "
-                                         "y_m of radius_m (None: the field's default), metres.")
+  py::class_<ObstacleArg>(m, "Obstacle",
+                          "An obstacle robot in the field frame F: a disc at x_m, "
+                          "y_m of radius_m (None: the field's default), metres.")
       .def(py::init<double, double, std::optional<double>>(), py::arg("x_m"), py::arg("y_m"),
            py::arg("radius_m") = py::none())
       .def_readwrite("x_m", &ObstacleArg::x_m)
       .def_readwrite("y_m", &ObstacleArg::y_m)
       .def_readwrite("radius_m", &ObstacleArg::radius_m)
-      .def("to_dict", [](const ObstacleArg& o) {
-        return Items({{"x_m", o.x_m}, {"y_m", o.y_m}, {"radius_m", o.radius_m}});
-      }, "The situation file's obstacle object.")
+      .def(
+          "to_dict",
+          [](const ObstacleArg& o) {
+            return Items({{"x_m", o.x_m}, {"y_m", o.y_m}, {"radius_m", o.radius_m}});
+          },
+          "The situation file's obstacle object.")
       .def("__repr__", [](const ObstacleArg& o) {
-        return "Obstacle(x_m=" + std::string(py::repr(py::float_(o.x_m))) + ", y_m=" +
-               std::string(py::repr(py::float_(o.y_m))) + ")";
+        return "Obstacle(x_m=" + std::string(py::repr(py::float_(o.x_m))) +
+               ", y_m=" + std::string(py::repr(py::float_(o.y_m))) + ")";
       });
 
   py::class_<KickModelArg>(m, "KickModel",
@@ -327,38 +341,50 @@ void AddPlannerObjects(py::module_& m) {
            py::arg("source"))
       .def_property_readonly("robot", [](const KickModelArg& k) { return k.model.robot; })
       .def_property_readonly("source", [](const KickModelArg& k) { return k.source; })
-      .def_property_readonly("rolling_deceleration_mps2",
-                             [](const KickModelArg& k) { return k.model.rolling_deceleration_mps2; })
-      .def_property_readonly("names", [](const KickModelArg& k) {
-        std::vector<std::string> names;
-        for (const KickSpec& s : k.model.kicks) names.push_back(s.name);
-        return names;
-      }, "The kicks' names in the model's order (the kick_index of a decision).")
-      .def("to_dict", [](const KickModelArg& k) {
-        return ToPython(JsonDocument::Parse(KickModelJson(k.model, ""), k.source).Tree());
-      }, "The model as its file's content (degrees, m/s, m/s^2).")
+      .def_property_readonly(
+          "rolling_deceleration_mps2",
+          [](const KickModelArg& k) { return k.model.rolling_deceleration_mps2; })
+      .def_property_readonly(
+          "names",
+          [](const KickModelArg& k) {
+            std::vector<std::string> names;
+            for (const KickSpec& s : k.model.kicks) names.push_back(s.name);
+            return names;
+          },
+          "The kicks' names in the model's order (the kick_index of a decision).")
+      .def(
+          "to_dict",
+          [](const KickModelArg& k) {
+            return ToPython(JsonDocument::Parse(KickModelJson(k.model, ""), k.source).Tree());
+          },
+          "The model as its file's content (degrees, m/s, m/s^2).")
       .def("__repr__", [](const KickModelArg& k) {
         return "KickModel(robot='" + k.model.robot + "', kicks=[" + k.model.Names() + "])";
       });
 
   py::class_<DecisionResult>(m, "Decision", "One decision of a Planner.")
-      .def_property_readonly("kick", [](const DecisionResult& r) {
-        return r.core->situation.kicks.NameOf(r.decision.kick_index);
-      }, "The chosen kick's name, or 'none' (leave the ball).")
-      .def_property_readonly("kick_index", [](const DecisionResult& r) {
-        return r.decision.kick_index;
-      }, "Index into the planner's kick_names; -1 for none.")
-      .def_property_readonly("rotation_deg", [](const DecisionResult& r) {
-        return r.decision.rotation_rad * kRadToDeg;
-      }, "The turn around the ball before the kick, degrees, counter-clockwise.")
-      .def_property_readonly("note", [](const DecisionResult& r) { return r.decision.note; },
-                             "Why a fallback was taken; empty normally.")
-      .def_property_readonly("strategy", [](const DecisionResult& r) {
-        return std::string(StrategyName(r.decision.strategy));
-      })
-      .def_property_readonly("hypotheses", [](const DecisionResult& r) {
-        return r.decision.evaluations;
-      }, "Hypotheses (kick, rotation) simulated, each over `samples` samples.")
+      .def_property_readonly(
+          "kick",
+          [](const DecisionResult& r) {
+            return r.core->situation.kicks.NameOf(r.decision.kick_index);
+          },
+          "The chosen kick's name, or 'none' (leave the ball).")
+      .def_property_readonly(
+          "kick_index", [](const DecisionResult& r) { return r.decision.kick_index; },
+          "Index into the planner's kick_names; -1 for none.")
+      .def_property_readonly(
+          "rotation_deg",
+          [](const DecisionResult& r) { return r.decision.rotation_rad * kRadToDeg; },
+          "The turn around the ball before the kick, degrees, counter-clockwise.")
+      .def_property_readonly(
+          "note", [](const DecisionResult& r) { return r.decision.note; },
+          "Why a fallback was taken; empty normally.")
+      .def_property_readonly(
+          "strategy",
+          [](const DecisionResult& r) { return std::string(StrategyName(r.decision.strategy)); })
+      .def_property_readonly(
+          "hypotheses", [](const DecisionResult& r) { return r.decision.evaluations; },
+          "Hypotheses (kick, rotation) simulated, each over `samples` samples.")
       .def_readonly("samples", &DecisionResult::samples)
       .def_readonly("seed", &DecisionResult::seed)
       .def("to_dict", &DecisionDict,
@@ -382,36 +408,39 @@ void AddPlannerObjects(py::module_& m) {
            py::arg("coarse_rebounds") = py::none(), py::arg("models") = py::none())
       .def_property_readonly("situation",
                              [](const PlannerCore& c) { return SituationDict(c.situation); })
-      .def_property_readonly("kick_names", [](const PlannerCore& c) {
-        std::vector<std::string> names;
-        for (const KickSpec& s : c.situation.kicks.kicks) names.push_back(s.name);
-        return names;
-      })
-      .def_property_readonly("strategy",
-                             [](const PlannerCore& c) { return std::string(StrategyName(c.strategy)); })
+      .def_property_readonly("kick_names",
+                             [](const PlannerCore& c) {
+                               std::vector<std::string> names;
+                               for (const KickSpec& s : c.situation.kicks.kicks)
+                                 names.push_back(s.name);
+                               return names;
+                             })
+      .def_property_readonly(
+          "strategy", [](const PlannerCore& c) { return std::string(StrategyName(c.strategy)); })
       .def_readonly("samples", &PlannerCore::samples)
-      .def("decide",
-           [](const std::shared_ptr<PlannerCore>& core, const py::object& robot,
-              const py::object& ball, const py::object& seed, const py::object& strategy,
-              const py::object& samples) {
-             DecisionResult r;
-             r.core = core;
-             r.state = StateFrom(*core, robot, ball);
-             r.seed = SeedFrom(seed);
-             r.samples = SamplesFrom(samples, core->samples);
-             const Strategy s = StrategyFrom(strategy, core->strategy);
-             {
-               std::lock_guard<std::mutex> lock(core->mutex);
-               DecideLocked(*core, r.state, s, r.samples, r.seed);
-               r.decision = core->scratch;
-             }
-             return r;
-           },
-           py::arg("robot") = py::none(), py::arg("ball") = py::none(), py::arg("seed") = 1,
-           py::arg("strategy") = py::none(), py::arg("samples") = py::none(),
-           "The decision for the robot pose `robot` (Pose, dict or (x_m, y_m, theta_deg) in F; "
-           "None: the situation's) with the ball at `ball` (Ball, dict or (x_m, y_m) in the "
-           "robot frame; None: the situation's), drawing its samples from `seed`.");
+      .def(
+          "decide",
+          [](const std::shared_ptr<PlannerCore>& core, const py::object& robot,
+             const py::object& ball, const py::object& seed, const py::object& strategy,
+             const py::object& samples) {
+            DecisionResult r;
+            r.core = core;
+            r.state = StateFrom(*core, robot, ball);
+            r.seed = SeedFrom(seed);
+            r.samples = SamplesFrom(samples, core->samples);
+            const Strategy s = StrategyFrom(strategy, core->strategy);
+            {
+              std::lock_guard<std::mutex> lock(core->mutex);
+              DecideLocked(*core, r.state, s, r.samples, r.seed);
+              r.decision = core->scratch;
+            }
+            return r;
+          },
+          py::arg("robot") = py::none(), py::arg("ball") = py::none(), py::arg("seed") = 1,
+          py::arg("strategy") = py::none(), py::arg("samples") = py::none(),
+          "The decision for the robot pose `robot` (Pose, dict or (x_m, y_m, theta_deg) in F; "
+          "None: the situation's) with the ball at `ball` (Ball, dict or (x_m, y_m) in the "
+          "robot frame; None: the situation's), drawing its samples from `seed`.");
   AddPlannerArrays(planner);
 }
 

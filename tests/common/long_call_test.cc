@@ -97,7 +97,8 @@ TEST(LongCallTest, ProgressGoesToTheHostOrElseTheFallback) {
   TestHost host(0);
   ScopedLongCallHost installed(host);
   const ProgressFunction report = LongCallProgress("simulate", "trials", fallback);
-  ParallelFor(4, 2, [](int) {}, report);
+  ParallelFor(
+      4, 2, [](int) {}, report);
   EXPECT_EQ(fallback_calls, 1);
   ASSERT_FALSE(host.heard.empty());
   EXPECT_EQ(host.heard.back(), "simulate 4/4 trials");
