@@ -67,6 +67,16 @@ std::shared_ptr<PlannerCore> MakePlannerCore(const pybind11::object& situation,
                                              const pybind11::object& coarse_rebounds,
                                              const std::optional<std::filesystem::path>& models);
 
+// A robot pose, a ball and a kick model from the Python values a decision accepts: the class, a
+// dict with the situation file's keys or a tuple (x_m, y_m[, theta_deg]); a kick model also from
+// a path or a dict. Bad values are InputErrors naming `where` (value_objects.cc).
+PoseArg PoseFrom(const pybind11::handle& value, const std::string& where);
+BallArg BallFrom(const pybind11::handle& value, const std::string& where);
+KickModelArg KickModelFrom(const pybind11::handle& value);
+// The pose or ball set into `state`; unset sigmas stay.
+void ApplyPose(const PoseArg& pose, StateEstimate& state);
+void ApplyBall(const BallArg& ball, StateEstimate& state);
+
 // The flags of a decision from Python values (None: `fallback`); bad values are InputErrors.
 std::uint64_t SeedFrom(const pybind11::handle& value);
 Strategy StrategyFrom(const pybind11::handle& value, Strategy fallback);
@@ -92,7 +102,9 @@ pybind11::object DecisionDict(const DecisionResult& result);
 // The situation as a dict: name, files, kick names, belief (robot in F, ball in R), obstacles.
 pybind11::dict SituationDict(const Situation& situation);
 
-// Registers Pose, Ball, Obstacle, KickModel, Decision and Planner.
+// Registers Pose, Ball, Obstacle and KickModel (value_objects.cc).
+void AddValueObjects(pybind11::module_& module);
+// Registers those, Decision and Planner.
 void AddPlannerObjects(pybind11::module_& module);
 // Planner.decide_many: decisions for many poses, NumPy in and out (planner_arrays.cc).
 void AddPlannerArrays(pybind11::class_<PlannerCore, std::shared_ptr<PlannerCore>>& planner);

@@ -6,6 +6,10 @@ namespace py = pybind11;
 
 namespace foresight::python {
 
+std::string TypeName(const py::handle& value) {
+  return py::str(value.get_type().attr("__name__")).cast<std::string>();
+}
+
 std::optional<std::filesystem::path> AsPath(const py::handle& value) {
   if (py::isinstance<py::str>(value)) return std::filesystem::path(value.cast<std::string>());
   if (py::hasattr(value, "__fspath__")) {
@@ -49,14 +53,13 @@ nlohmann::json ToJson(const py::handle& value, const std::string& where) {
   }
   if (py::hasattr(value, "__index__")) return value.cast<long long>();
   if (py::hasattr(value, "__float__")) return value.cast<double>();
-  throw InputError(where + ": a " + std::string(py::str(value.get_type().attr("__name__"))) +
+  throw InputError(where + ": a " + TypeName(value) +
                    " is not JSON data (dict, list, str, number, bool or None)");
 }
 
 std::string DictText(const py::handle& value, const std::string& what) {
   if (!py::isinstance<py::dict>(value)) {
-    throw InputError(what + ": must be a path or a dict, got a " +
-                     std::string(py::str(value.get_type().attr("__name__"))));
+    throw InputError(what + ": must be a path or a dict, got a " + TypeName(value));
   }
   return ToJson(value, "").dump();
 }

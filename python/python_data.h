@@ -13,6 +13,9 @@
 
 namespace foresight::python {
 
+// The name of a value's type, for messages ("dict", "str").
+std::string TypeName(const pybind11::handle& value);
+
 // str or os.PathLike as a path; nullopt for anything else.
 std::optional<std::filesystem::path> AsPath(const pybind11::handle& value);
 
