@@ -70,7 +70,7 @@ int RunAblationsCommand(const PassingOptions& o, const std::filesystem::path& mo
   const AblationsInputs a = LoadAblationsInputs(o, models);
   const std::vector<PassingResult> results =
       PlayAblations(a.in.setup, a.variants, *a.in.executor, seed, threads,
-                    TerminalProgress("ablations:", "trials"), shard.value_or(Shard{}));
+                    CommandProgress("ablations", "trials"), shard.value_or(Shard{}));
   if (shard) {
     const std::vector<std::string> teams = AblationTeams(a.variants);
     const ShardHeader header{kAblationsCommand, FORESIGHT_VERSION, *shard, Settings(o),

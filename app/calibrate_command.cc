@@ -52,7 +52,7 @@ void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem
     run.provenance.SetInput("variation", options.variation_file);
   }
   settings.progress = [](const std::string& kick) {
-    return TerminalProgress("calibrate " + kick + ":", "trials");
+    return CommandProgress("calibrate " + kick, "trials");
   };
   PhysicsCalibration physics;
   if (parts) {
@@ -236,6 +236,9 @@ int RunVariationFit(const CalibrateOptions& options, const std::filesystem::path
   settings.trials = ParseCount("--fit-trials", options.fit_trials, 50, kMaxTrials);
   settings.seed = ParseSeed(options.seed);
   settings.threads = ParseCount("--threads", options.threads, 0, kMaxThreads);
+  settings.progress = [](const std::string& kick) {
+    return CommandProgress("fit-variation " + kick, "trials");
+  };
   const VariationFit fit = FitVariation(settings, spreads, models);
   const std::string json = VariationFitJson(options.robot, options.from_csv, fit).dump(2) + "\n";
   const std::string text = VariationFitText(fit);

@@ -77,18 +77,9 @@ KickModel CheckKicks(const CbrOptions& o, const fs::path& models, const LoadedCa
 // `use` (the run points into the case base, which lives only during the call).
 template <class Use>
 auto WithRetrieval(const CbrOptions& o, const fs::path& models, Use&& use) {
-  CbrRetrieveRun run;
-  run.problem_file = o.problem_file;
-  run.case_base_path = CaseBasePath(o, models);
-  run.params_file = ParamsPath(o, models);
-  run.models_dir = models;
-  run.problem = LoadProblem(run.problem_file, models);
-  const LoadedCaseBase base = LoadCaseBase(run.case_base_path, models);
-  run.base = &base;
-  run.params = ParamsFor(o, models, base.rules.field, base.rules.kicks);
-  run.cases = base.cases.Defending(run.problem.defending);
-  run.result = Retrieve(run.cases, run.problem, run.params);
-  return use(run, base);
+  const Problem problem = LoadProblem(o.problem_file, models);
+  const CbrRetriever retriever = LoadCbrRetriever(o, models);
+  return use(RetrieveRun(retriever, problem, o.problem_file), retriever.base);
 }
 
 int RunRetrieve(const CbrOptions& o, const fs::path& models) {
@@ -236,6 +227,31 @@ void AddCbrCommand(CLI::App& app, CbrOptions& options) {
   options.atlas->add_option("--params", options.params_file,
                             "Retrieval parameters for the ball paths (default: "
                             "MODELS/cbr/retrieval.json)");
+}
+
+CbrRetriever LoadCbrRetriever(const CbrOptions& options, const std::filesystem::path& models) {
+  CbrRetriever r;
+  r.case_base_path = CaseBasePath(options, models);
+  r.params_file = ParamsPath(options, models);
+  r.models_dir = models;
+  r.base = LoadCaseBase(r.case_base_path, models);
+  r.params = ParamsFor(options, models, r.base.rules.field, r.base.rules.kicks);
+  return r;
+}
+
+CbrRetrieveRun RetrieveRun(const CbrRetriever& retriever, const Problem& problem,
+                           const std::filesystem::path& problem_file) {
+  CbrRetrieveRun run;
+  run.problem_file = problem_file;
+  run.case_base_path = retriever.case_base_path;
+  run.params_file = retriever.params_file;
+  run.models_dir = retriever.models_dir;
+  run.problem = problem;
+  run.base = &retriever.base;
+  run.params = retriever.params;
+  run.cases = retriever.base.cases.Defending(problem.defending);
+  run.result = Retrieve(run.cases, run.problem, run.params);
+  return run;
 }
 
 nlohmann::ordered_json CbrRetrieveJsonFor(const CbrOptions& options,

@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "app/cbr_retrieve_output.h"
+
 namespace foresight {
 
 struct CbrOptions {
@@ -33,6 +35,19 @@ void AddCbrCommand(CLI::App& app, CbrOptions& options);
 // options.params_file), as JSON; bad input throws InputError (the Python module's cbr_retrieve).
 nlohmann::ordered_json CbrRetrieveJsonFor(const CbrOptions& options,
                                           const std::filesystem::path& models);
+
+// A case base and the retrieval parameters, loaded once for many retrievals (the Python
+// module's CaseBase): options.case_base and options.params_file as `cbr retrieve` reads them.
+struct CbrRetriever {
+  std::filesystem::path case_base_path, params_file, models_dir;
+  LoadedCaseBase base;
+  RetrievalParams params;
+};
+CbrRetriever LoadCbrRetriever(const CbrOptions& options, const std::filesystem::path& models);
+// One retrieval for `problem` (named `problem_file` in the output; "" for one not from a file).
+// The run points into `retriever`.
+CbrRetrieveRun RetrieveRun(const CbrRetriever& retriever, const Problem& problem,
+                           const std::filesystem::path& problem_file);
 
 // Runs the chosen subcommand; bad input throws InputError. Returns the exit code.
 int RunCbrCommand(const CbrOptions& options, const std::string& models_dir);

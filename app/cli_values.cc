@@ -1,14 +1,15 @@
 #include "app/cli_values.h"
 
-#include <unistd.h>
-
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 #include "app/report_text.h"
 #include "common/checks.h"
 #include "common/error.h"
+#include "common/long_call.h"
+#include "common/progress_log.h"
 #include "report/atomic_file.h"
 #include "report/report_folder.h"
 
@@ -60,12 +61,9 @@ std::string DisplayPath(const std::filesystem::path& file,
   return file.generic_string();
 }
 
-std::function<void(int, int)> TerminalProgress(const std::string& label, const std::string& unit) {
-  if (!isatty(STDERR_FILENO)) return {};
-  return [label, unit](int done, int total) {
-    std::fprintf(stderr, "\r%s %d / %d %s", label.c_str(), done, total, unit.c_str());
-    if (done == total) std::fprintf(stderr, "\n");
-  };
+std::function<void(int, int)> CommandProgress(const std::string& label, const std::string& unit) {
+  auto log = std::make_shared<ProgressLog>(label, unit, StderrProgressSettings());
+  return LongCallProgress(label, unit, [log](int done, int total) { log->Report(done, total); });
 }
 
 void WriteReportFiles(const std::string& dir, const std::string& flag, const ReportFiles& files) {

@@ -23,9 +23,12 @@ std::optional<bool> ParseSwitch(const std::string& flag, const std::string& text
 // (the settings struct): integers in full, numbers in the shortest form ("0.95", not "0.950000").
 std::string DefaultText(double value);
 
-// Progress "LABEL done / total UNIT" on stderr, only when stderr is a terminal
-// (docs/ARCHITECTURE.md, "Output").
-std::function<void(int, int)> TerminalProgress(const std::string& label, const std::string& unit);
+// A long loop's progress "LABEL: done / total UNIT (..%), rate, time left": to the long-call
+// host of the calling thread if there is one (the Python module's callback, common/long_call.h),
+// otherwise on stderr: rewritten in place on a terminal, a line at most every few seconds in a
+// log (common/progress_log.h; docs/ARCHITECTURE.md, "Output"). Make it on the thread that runs
+// the loop.
+std::function<void(int, int)> CommandProgress(const std::string& label, const std::string& unit);
 
 // Writes the report folder `dir` whole (report/report_folder.h): the files, given as paths in
 // `dir`, replace the previous report at once. Call it only once every content is computed.

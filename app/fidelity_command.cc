@@ -73,7 +73,7 @@ FidelityPlan PlanFidelity(const FidelityOptions& options, const std::filesystem:
   run.settings.threads = ParseCount("--threads", options.threads, 0, 1024);
   run.settings.physics_file = options.physics_file;
   run.settings.base = ParseBaseFlag(options.base);
-  run.settings.progress = TerminalProgress("fidelity:", "situations");
+  run.settings.progress = CommandProgress("fidelity", "situations");
   if (!options.out_dir.empty()) CheckReportDir(options.out_dir, "--out");  // before the work
   SituationOverrides overrides;
   overrides.kicks_file = options.kicks_file;
@@ -152,7 +152,6 @@ FidelityRun RunFidelityInMemory(const FidelityOptions& options,
                                 const std::filesystem::path& models) {
   const auto start = std::chrono::steady_clock::now();
   FidelityPlan plan = PlanFidelity(options, models);
-  plan.run.settings.progress = {};
   plan.run.result = RunFidelity(plan.set, models, plan.run.settings);
   plan.run.provenance.run_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

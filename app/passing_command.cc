@@ -143,7 +143,7 @@ int RunPassingCommand(const PassingOptions& o, const std::filesystem::path& mode
     const std::string& team = setup.teams[t];
     trials.results.push_back(
         RunPassing(setup, team, *in.executor, seed, threads,
-                   TerminalProgress("passing " + team + ":", "trials"),
+                   CommandProgress("passing " + team, "trials"),
                    TeamShard(setup, static_cast<int>(t), shard.value_or(Shard{}))));
     trials.run_times_s.push_back(SecondsSince(start));
   }

@@ -71,6 +71,7 @@ SimulationPlan PlanSimulation(const SimulateOptions& options, const std::filesys
   }
   request.state = plan.setup->state;  // physics plays the world as it is: the mean state
   request.record_trace = !options.trace_file.empty();
+  request.progress = CommandProgress("simulate", "trials");
   return plan;
 }
 
@@ -92,7 +93,6 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
   run.rotation_rad = request.rotation_rad;
   run.seed = request.seed;
   run.state = request.state;
-  request.progress = TerminalProgress("simulate:", "trials");
   run.results = RunKickTrials(*setup->simulator, request);
   run.summary = Summarize(run.results);
 

@@ -96,7 +96,7 @@ int RunStabilityCommand(const StabilityOptions& o, const std::filesystem::path& 
   const int threads = ParseCount("--threads", o.threads, 0, 1024);
   const std::optional<Shard> shard = ParseShardFlag(o.shard);
   const StabilityParams params = LoadStabilityRun(o, models);
-  const auto progress = TerminalProgress("stability:", "poses");
+  const auto progress = CommandProgress("stability", "poses");
   if (shard) {
     const StabilityResult part = RunStability(params, seed, threads, progress, *shard);
     const ShardHeader header{kStabilityCommand, FORESIGHT_VERSION, *shard, StabilitySettings(o),

@@ -128,7 +128,7 @@ int RunStrategiesCommand(const StrategiesOptions& o, const std::filesystem::path
   const std::optional<Shard> shard = ParseShardFlag(o.shard);
   const std::unique_ptr<StrategiesPlan> plan = PlanStrategies(o, models);
   const OutcomeSimulator* executor = plan->physics ? &*plan->physics->simulator : nullptr;
-  const auto progress = TerminalProgress("strategies:", "runs");
+  const auto progress = CommandProgress("strategies", "runs");
   if (shard) {
     const StrategiesResult part =
         RunStrategies(plan->params, executor, seed, threads, progress, *shard);

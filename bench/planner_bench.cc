@@ -5,6 +5,7 @@
 // Scenes are the shared test scenes (tests/support), so tests and benchmarks agree on them.
 #include <benchmark/benchmark.h>
 
+#include "bench/bench_scenes.h"
 #include "common/random.h"
 #include "models/physics_params.h"
 #include "planner/coarse_planner.h"
@@ -21,12 +22,10 @@ enum class Contacts { kPaper, kRebounds };
 // Positions all over the field so that rolls meet posts, nets, lines and open carpet.
 std::vector<Situation> Field(int count, Contacts contacts = Contacts::kPaper) {
   std::vector<Situation> situations;
-  RandomStream rng(StreamKey(123, 0));
   const BallPairs e =
       LoadPhysicsParams(testing::ModelsDir() / "physics" / "spl.json").materials.restitution;
-  for (int i = 0; i < count; ++i) {
-    situations.push_back(
-        testing::MakeSituation(testing::RandomPose(rng, 4.2, 2.8), {{Vec2(3.8, 0.4), 0.15}}));
+  for (const testing::StateSpec& pose : bench::BenchPoses(count)) {
+    situations.push_back(testing::MakeSituation(pose, bench::BenchObstacles()));
     if (contacts == Contacts::kRebounds) {
       situations.back().evaluation.rebounds = {true, 8, e.post, e.net, e.robot};
     }

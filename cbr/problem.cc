@@ -19,14 +19,12 @@ Vec2 ReadPoint(const JsonObject& o, const FieldSpec& field) {
   return p;
 }
 
-}  // namespace
-
-Problem LoadProblem(const std::filesystem::path& file, const std::filesystem::path& models_dir) {
-  const JsonDocument doc = JsonDocument::Load(file);
+Problem ReadProblem(const JsonDocument& doc, const std::filesystem::path& dir,
+                    const std::filesystem::path& models_dir) {
   const JsonObject root = doc.Root();
   root.RejectUnknownKeys({"field", "defending", "ball", "teammates", "opponents"});
   const std::filesystem::path field_file = ResolveModelFile(
-      root.StringOr("field", "four_legged"), DataFolder::kFields, file.parent_path(), models_dir);
+      root.StringOr("field", "four_legged"), DataFolder::kFields, dir, models_dir);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(field_file, ec)) {
     root.Fail("field", "refers to " + field_file.string() + ", which does not exist");
@@ -68,6 +66,17 @@ Problem LoadProblem(const std::filesystem::path& file, const std::filesystem::pa
     problem.opponents.push_back(ReadPoint(o, field));
   }
   return problem;
+}
+
+}  // namespace
+
+Problem LoadProblem(const std::filesystem::path& file, const std::filesystem::path& models_dir) {
+  return ReadProblem(JsonDocument::Load(file), file.parent_path(), models_dir);
+}
+
+Problem ParseProblem(std::string_view text, const std::string& origin,
+                     const std::filesystem::path& dir, const std::filesystem::path& models_dir) {
+  return ReadProblem(JsonDocument::Parse(text, origin), dir, models_dir);
 }
 
 }  // namespace foresight

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "cbr/case.h"
@@ -35,5 +37,10 @@ struct Problem {
 // in MODELS_DIR/fields (models/model_paths.h).
 Problem LoadProblem(const std::filesystem::path& file,
                     const std::filesystem::path& models_dir = DefaultModelsDir());
+// The same from a problem file's text that came from elsewhere (the Python module's dicts):
+// `origin` names it in messages; a field path ending in ".json" resolves against `dir`.
+Problem ParseProblem(std::string_view text, const std::string& origin,
+                     const std::filesystem::path& dir,
+                     const std::filesystem::path& models_dir = DefaultModelsDir());
 
 }  // namespace foresight

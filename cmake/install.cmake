@@ -21,9 +21,10 @@ endforeach()
 install(TARGETS foresight RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The executable of every command but `decide` (app/front_main.cc), where `foresight` finds it.
 install(TARGETS foresight_full RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR})
-# The Python module where Debian's python3 finds it (PREFIX/lib/python3/dist-packages).
+# The Python package where Debian's python3 finds it (PREFIX/lib/python3/dist-packages/foresight).
 if(TARGET foresight_python)
   install(TARGETS foresight_python LIBRARY DESTINATION ${FORESIGHT_INSTALL_PYTHON_DIR})
+  install(FILES ${FORESIGHT_PYTHON_PACKAGE_FILES} DESTINATION ${FORESIGHT_INSTALL_PYTHON_DIR})
 endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/models/ DESTINATION ${FORESIGHT_INSTALL_MODELS_DIR}
   PATTERN "*.h" EXCLUDE PATTERN "*.cc" EXCLUDE PATTERN "CMakeLists.txt" EXCLUDE)

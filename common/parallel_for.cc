@@ -8,6 +8,8 @@
 #include <thread>
 #include <vector>
 
+#include "common/long_call.h"
+
 namespace foresight {
 
 int HardwareThreads() {
@@ -51,6 +53,7 @@ void ParallelFor(int count, int threads, const std::function<void(int)>& body,
           return;
         }
         finished();
+        PollLongCall();  // the calling thread's host (Ctrl-C); helper threads have none
       }
     } catch (...) {
       fail();
@@ -60,6 +63,7 @@ void ParallelFor(int count, int threads, const std::function<void(int)>& body,
     for (int i = 0; i < count; ++i) {
       body(i);
       finished();
+      PollLongCall();
     }
     return;
   }
@@ -75,10 +79,12 @@ void ParallelFor(int count, int threads, const std::function<void(int)>& body,
       if (failed) break;
       body(i);
       finished();
+      PollLongCall();
     }
     for (int i = next++; i < count && !failed; i = next++) {
       body(i);
       finished();
+      PollLongCall();
     }
   } catch (...) {
     fail();

@@ -7,7 +7,8 @@
 // (std::bad_alloc: under an address-space limit every thread's stack and heap count): it stops,
 // and its index runs again after the other threads are done, on the calling thread, where
 // running out of memory is the caller's error. So body(i) must be safe to run twice (each index
-// writes only its own slot).
+// writes only its own slot). The calling thread polls its long-call host (common/long_call.h)
+// after each of its items, so a host's exception (Ctrl-C) stops the hand-out like a body's.
 #pragma once
 
 #include <functional>

@@ -42,11 +42,16 @@ std::filesystem::path DefaultModelsDir() {
     const std::filesystem::path beside = exe.parent_path() / FORESIGHT_MODELS_FROM_BIN;
     if (std::filesystem::is_directory(beside, error)) return beside.lexically_normal();
   }
+  // The Python module (the package folder foresight/ holding the code): its own models/ when
+  // pip installed it from a wheel, PREFIX/share/foresight/models when cmake --install or the
+  // .deb did.
   Dl_info self{};
   if (dladdr(reinterpret_cast<void*>(&DefaultModelsDir), &self) != 0 && self.dli_fname != nullptr) {
-    const std::filesystem::path beside =
-        std::filesystem::path(self.dli_fname).parent_path() / FORESIGHT_MODELS_FROM_PYTHON;
-    if (std::filesystem::is_directory(beside, error)) return beside.lexically_normal();
+    const std::filesystem::path package = std::filesystem::path(self.dli_fname).parent_path();
+    for (const std::filesystem::path& beside :
+         {package / "models", package / FORESIGHT_MODELS_FROM_PYTHON}) {
+      if (std::filesystem::is_directory(beside, error)) return beside.lexically_normal();
+    }
   }
   // Compile definitions: the source tree's models/, then the install prefix's data folder (a
   // program linked against an installed foresight lives elsewhere than PREFIX/bin).

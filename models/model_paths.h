@@ -5,7 +5,8 @@
 // that names it. MODELS_DIR is, in this order: the --models flag, the environment variable
 // FORESIGHT_MODELS_DIR, the installed data beside the running binary (BIN/../share/foresight/
 // models, so an installed tree can be moved) or beside the installed Python module that holds
-// this code, the source tree's models/ folder compiled into the
+// this code (its package's models/ from a pip-installed wheel, or the prefix's share/foresight/
+// models), the source tree's models/ folder compiled into the
 // library, or the install prefix's data folder compiled into it (for programs linked against an
 // installed foresight that live outside its bin/).
 #pragma once

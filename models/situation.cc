@@ -106,19 +106,24 @@ void Situation::ValidatePlacement() const {
   }
 }
 
-Situation LoadSituation(const std::filesystem::path& file, const std::filesystem::path& models_dir,
+namespace {
+
+Situation ReadSituation(const JsonDocument& doc, const std::string& origin,
+                        const std::string& default_name, const std::filesystem::path& dir,
+                        const std::filesystem::path& models_dir,
                         const SituationOverrides& overrides) {
-  JsonDocument doc = JsonDocument::Load(file);
   JsonObject root = doc.Root();
   root.RejectUnknownKeys({"name", "field", "kicks", "evaluation", "robot", "ball", "obstacles"});
-  const std::filesystem::path dir = file.parent_path();
 
   Situation situation;
-  situation.name = root.StringOr("name", file.stem().string());
+  situation.name = root.StringOr("name", default_name);
   situation.field_file =
       ResolveModelFile(root.String("field"), DataFolder::kFields, dir, models_dir);
   situation.field = LoadReferenced(root, "field", situation.field_file, LoadFieldSpec);
-  if (overrides.kicks_file.empty()) {
+  if (overrides.kicks) {
+    situation.kicks_file = overrides.kicks_file;
+    situation.kicks = *overrides.kicks;
+  } else if (overrides.kicks_file.empty()) {
     situation.kicks_file =
         ResolveModelFile(root.String("kicks"), DataFolder::kKicks, dir, models_dir);
     situation.kicks = LoadReferenced(root, "kicks", situation.kicks_file, LoadKickModel);
@@ -135,7 +140,7 @@ Situation LoadSituation(const std::filesystem::path& file, const std::filesystem
                                                DataFolder::kEvaluation, dir, models_dir);
   std::error_code ec;
   if (!root.Has("evaluation") && !std::filesystem::is_regular_file(situation.evaluation_file, ec)) {
-    throw InputError(file.string() + ": no evaluation for field '" + situation.field.name + "' (" +
+    throw InputError(origin + ": no evaluation for field '" + situation.field.name + "' (" +
                      situation.evaluation_file.string() +
                      " does not exist); name one with \"evaluation\"");
   }
@@ -153,11 +158,26 @@ Situation LoadSituation(const std::filesystem::path& file, const std::filesystem
         {Vec2(item.Number("x_m"), item.Number("y_m")),
          item.NumberOr("radius_m", situation.field.default_obstacle_radius_m)});
   }
-  WithFile(file.string(), [&] {
+  WithFile(origin, [&] {
     situation.Validate();
     situation.ValidatePlacement();
   });
   return situation;
+}
+
+}  // namespace
+
+Situation LoadSituation(const std::filesystem::path& file, const std::filesystem::path& models_dir,
+                        const SituationOverrides& overrides) {
+  return ReadSituation(JsonDocument::Load(file), file.string(), file.stem().string(),
+                       file.parent_path(), models_dir, overrides);
+}
+
+Situation ParseSituation(std::string_view text, const std::string& origin,
+                         const std::filesystem::path& dir, const std::filesystem::path& models_dir,
+                         const SituationOverrides& overrides) {
+  return ReadSituation(JsonDocument::Parse(text, origin), origin, origin, dir, models_dir,
+                       overrides);
 }
 
 }  // namespace foresight

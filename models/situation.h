@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/geometry.h"
@@ -61,9 +62,18 @@ struct SituationOverrides {
   // Where the coarse rebounds' restitution is read when not empty (the run's --physics file);
   // otherwise MODELS/physics/<field>.json, as physics reads it.
   std::filesystem::path physics_file;
+  // An in-memory kick model replacing the situation's (the Python module's KickModel); it wins
+  // over kicks_file, which then only names it in reports.
+  std::optional<KickModel> kicks;
 };
 
 Situation LoadSituation(const std::filesystem::path& file, const std::filesystem::path& models_dir,
                         const SituationOverrides& overrides = {});
+// The same from a situation file's text that came from elsewhere (the Python module's dicts):
+// `origin` names it in messages and is the name unless "name" says otherwise; references ending
+// in ".json" resolve against `dir`.
+Situation ParseSituation(std::string_view text, const std::string& origin,
+                         const std::filesystem::path& dir, const std::filesystem::path& models_dir,
+                         const SituationOverrides& overrides = {});
 
 }  // namespace foresight

@@ -1,6 +1,7 @@
 #include "python/module.h"
 
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "app/calibrate_command.h"
 #include "app/cbr_command.h"
@@ -11,13 +12,16 @@
 #include "models/model_paths.h"
 #include "models/situation.h"
 #include "python/json_to_python.h"
+#include "python/long_call.h"
+#include "python/planner_objects.h"
+#include "python/python_data.h"
 
 namespace py = pybind11;
 
 namespace foresight::python {
 
-std::filesystem::path ModelsDir(const std::optional<std::string>& models) {
-  return models ? std::filesystem::path(*models) : DefaultModelsDir();
+std::filesystem::path ModelsDir(const std::optional<std::filesystem::path>& models) {
+  return models ? *models : DefaultModelsDir();
 }
 
 std::string FlagText(const py::object& value) {
@@ -33,53 +37,52 @@ void SetFlag(std::string& flag, const py::object& value) {
   if (!value.is_none()) flag = FlagText(value);
 }
 
-py::object LoadDataFile(const std::string& file) {
-  return ToPython(JsonDocument::Load(file).Tree());
-}
-
-py::dict LoadSituationDict(const std::string& file, const std::optional<std::string>& kicks,
-                           const std::optional<std::string>& models) {
-  SituationOverrides overrides;
-  if (kicks) overrides.kicks_file = *kicks;
-  const Situation s = LoadSituation(file, ModelsDir(models), overrides);
-  py::list kick_names, obstacles;
-  for (const KickSpec& k : s.kicks.kicks) kick_names.append(k.name);
-  for (const Obstacle& o : s.obstacles) {
-    obstacles.append(py::dict(py::arg("x_m") = o.p_F.x(), py::arg("y_m") = o.p_F.y(),
-                              py::arg("radius_m") = o.radius_m));
-  }
-  const StateEstimate& e = s.state;
-  return py::dict(
-      py::arg("name") = s.name, py::arg("field_file") = s.field_file.string(),
-      py::arg("kicks_file") = s.kicks_file.string(),
-      py::arg("evaluation_file") = s.evaluation_file.string(), py::arg("kicks") = kick_names,
-      py::arg("samples") = s.evaluation.samples,
-      py::arg("robot") = py::dict(py::arg("x_m") = e.robot.p_F.x(), py::arg("y_m") = e.robot.p_F.y(),
-                                  py::arg("theta_rad") = e.robot.theta_rad,
-                                  py::arg("sigma_x_m") = e.sigma_robot_x_m,
-                                  py::arg("sigma_y_m") = e.sigma_robot_y_m,
-                                  py::arg("sigma_theta_rad") = e.sigma_robot_theta_rad),
-      py::arg("ball") = py::dict(py::arg("x_m") = e.p_R_ball.x(), py::arg("y_m") = e.p_R_ball.y(),
-                                 py::arg("sigma_x_m") = e.sigma_ball_x_m,
-                                 py::arg("sigma_y_m") = e.sigma_ball_y_m),
-      py::arg("obstacles") = obstacles);
-}
-
-py::object Decide(const std::string& situation, const py::object& strategy,
-                  const py::object& samples, const py::object& seed, const py::object& kicks,
-                  const std::optional<std::string>& models) {
-  DecideOptions options;
-  options.situation_file = situation;
-  SetFlag(options.strategy, strategy);
-  SetFlag(options.samples, samples);
-  SetFlag(options.seed, seed);
-  SetFlag(options.kicks_file, kicks);
+// `work()`'s JSON, computed without the GIL (a short call: no Ctrl-C polling), as Python objects.
+template <typename Work>
+py::object JsonWithoutGil(Work&& work) {
   nlohmann::ordered_json json;
   {
     py::gil_scoped_release release;
-    json = DecideJson(options, ModelsDir(models));
+    json = work();
   }
   return ToPython(json);
+}
+
+py::object LoadDataFile(const std::filesystem::path& file) {
+  return ToPython(JsonDocument::Load(file).Tree());
+}
+
+py::dict LoadSituationDict(const std::filesystem::path& file, const py::object& kicks,
+                           const std::optional<std::filesystem::path>& models) {
+  SituationOverrides overrides;
+  if (!kicks.is_none()) overrides.kicks_file = FlagText(kicks);
+  return SituationDict(LoadSituation(file, ModelsDir(models), overrides));
+}
+
+// A situation file with an optional kick-model file: the command's own code (its messages name
+// the flags). A dict, or a kick model given as a dict or KickModel: a Planner's decision.
+py::object Decide(const py::object& situation, const py::object& strategy,
+                  const py::object& samples, const py::object& seed, const py::object& kicks,
+                  const std::optional<std::filesystem::path>& models) {
+  const auto situation_path = AsPath(situation);
+  if (situation_path && (kicks.is_none() || AsPath(kicks))) {
+    DecideOptions options;
+    options.situation_file = situation_path->string();
+    SetFlag(options.strategy, strategy);
+    SetFlag(options.samples, samples);
+    SetFlag(options.seed, seed);
+    SetFlag(options.kicks_file, kicks);
+    return JsonWithoutGil([&] { return DecideJson(options, ModelsDir(models)); });
+  }
+  DecisionResult r;
+  r.core = MakePlannerCore(situation, kicks, strategy, samples, py::none(), models);
+  r.state = r.core->situation.state;
+  r.seed = seed.is_none() ? 1 : SeedFrom(seed);
+  r.samples = r.core->samples;
+  std::lock_guard<std::mutex> lock(r.core->mutex);
+  DecideLocked(*r.core, r.state, r.core->strategy, r.samples, r.seed);
+  r.decision = r.core->scratch;
+  return DecisionDict(r);
 }
 
 py::object Calibrate(const std::string& robot, const py::object& kick, const py::object& trials,
@@ -87,7 +90,8 @@ py::object Calibrate(const std::string& robot, const py::object& kick, const py:
                      const py::object& situation, const py::object& kicks,
                      const py::object& physics, const py::object& from_csv,
                      const py::object& confidence, const py::object& resamples,
-                     const std::optional<std::string>& models) {
+                     const std::optional<std::filesystem::path>& models,
+                     const py::object& progress) {
   CalibrateOptions options;
   options.robot = robot;
   SetFlag(options.kick, kick);
@@ -101,18 +105,17 @@ py::object Calibrate(const std::string& robot, const py::object& kick, const py:
   SetFlag(options.from_csv, from_csv);
   SetFlag(options.confidence, confidence);
   SetFlag(options.resamples, resamples);
-  nlohmann::ordered_json json;
-  {
-    py::gil_scoped_release release;
-    json = CalibrationJson(CalibrateInMemory(options, ModelsDir(models)));
-  }
-  return ToPython(json);
+  const std::filesystem::path dir = ModelsDir(models);
+  return ToPython(RunLongCall(progress, [&] {
+    return CalibrationJson(CalibrateInMemory(options, dir));
+  }));
 }
 
 py::object Fidelity(const py::object& situations, const py::object& trials,
                     const py::object& samples, const py::object& converged, const py::object& seed,
                     const py::object& threads, const py::object& kicks, const py::object& physics,
-                    const std::optional<std::string>& models) {
+                    const std::optional<std::filesystem::path>& models,
+                    const py::object& progress) {
   FidelityOptions options;
   SetFlag(options.situations, situations);
   SetFlag(options.trials, trials);
@@ -122,50 +125,48 @@ py::object Fidelity(const py::object& situations, const py::object& trials,
   SetFlag(options.threads, threads);
   SetFlag(options.kicks_file, kicks);
   SetFlag(options.physics_file, physics);
-  nlohmann::ordered_json json;
-  {
-    py::gil_scoped_release release;
-    json = FidelityJson(RunFidelityInMemory(options, ModelsDir(models)));
-  }
-  return ToPython(json);
+  const std::filesystem::path dir = ModelsDir(models);
+  return ToPython(RunLongCall(progress, [&] {
+    return FidelityJson(RunFidelityInMemory(options, dir));
+  }));
 }
 
-py::object CbrRetrieve(const std::string& problem, const py::object& case_base,
-                       const py::object& params, const std::optional<std::string>& models) {
-  CbrOptions options;
-  options.problem_file = problem;
-  SetFlag(options.case_base, case_base);
-  SetFlag(options.params_file, params);
-  nlohmann::ordered_json json;
-  {
-    py::gil_scoped_release release;
-    json = CbrRetrieveJsonFor(options, ModelsDir(models));
+py::object CbrRetrieve(const py::object& problem, const py::object& case_base,
+                       const py::object& params,
+                       const std::optional<std::filesystem::path>& models) {
+  if (const auto path = AsPath(problem)) {
+    CbrOptions options;
+    options.problem_file = path->string();
+    SetFlag(options.case_base, case_base);
+    SetFlag(options.params_file, params);
+    return JsonWithoutGil([&] { return CbrRetrieveJsonFor(options, ModelsDir(models)); });
   }
-  return ToPython(json);
+  return py::module_::import("foresight").attr("CaseBase")(case_base, params, models)
+      .attr("retrieve")(problem);
 }
 
 }  // namespace
 
 }  // namespace foresight::python
 
-PYBIND11_MODULE(foresight, m) {
+PYBIND11_MODULE(_foresight, m) {
   using namespace foresight::python;
   m.doc() = "foresight: robot-soccer kick selection by forward simulation, checked against "
             "Bullet physics, and case-based coordinated action selection. Each function returns what the command of the same name writes as "
             "JSON; bad input raises foresight.InputError with the command's one-line message.";
   m.attr("__version__") = FORESIGHT_VERSION;
   py::register_exception<foresight::InputError>(m, "InputError", PyExc_ValueError);
-  m.def("models_dir", [](const std::optional<std::string>& models) {
+  m.def("models_dir", [](const std::optional<std::filesystem::path>& models) {
     return ModelsDir(models).string();
   }, py::arg("models") = py::none(), "The data folder the functions read (models/).");
   m.def("load_situation", &LoadSituationDict, py::arg("situation"), py::arg("kicks") = py::none(),
         py::arg("models") = py::none(),
         "Loads and checks a situation file: its name, files, kick names, belief and obstacles.");
-  m.def("load_kick_model", [](const std::string& file) {
+  m.def("load_kick_model", [](const std::filesystem::path& file) {
     foresight::LoadKickModel(file);  // checks it as every command does
     return LoadDataFile(file);
   }, py::arg("file"), "Loads and checks a kick-model file; returns its content.");
-  m.def("load_field", [](const std::string& file) {
+  m.def("load_field", [](const std::filesystem::path& file) {
     foresight::LoadFieldSpec(file);
     return LoadDataFile(file);
   }, py::arg("file"), "Loads and checks a field file; returns its content.");
@@ -179,16 +180,19 @@ PYBIND11_MODULE(foresight, m) {
         py::arg("kicks") = py::none(), py::arg("physics") = py::none(),
         py::arg("from_csv") = py::none(), py::arg("confidence") = py::none(),
         py::arg("resamples") = py::none(), py::arg("models") = py::none(),
+        py::arg("progress") = py::none(),
         "Calibrates a robot's kicks (all, or `kick`): the report's calibration.json as a dict.");
   m.def("fidelity", &Fidelity, py::arg("situations") = py::none(), py::arg("trials") = py::none(),
         py::arg("samples") = py::none(), py::arg("converged") = py::none(),
         py::arg("seed") = py::none(), py::arg("threads") = py::none(),
         py::arg("kicks") = py::none(), py::arg("physics") = py::none(),
-        py::arg("models") = py::none(),
+        py::arg("models") = py::none(), py::arg("progress") = py::none(),
         "Coarse model against physics on a situation set: the report's fidelity.json as a dict.");
   m.def("cbr_retrieve", &CbrRetrieve, py::arg("problem"), py::arg("case_base") = py::none(),
         py::arg("params") = py::none(), py::arg("models") = py::none(),
         "Case retrieval (Ros et al. 2009) for a problem file: what `foresight cbr retrieve "
         "--json` prints (the retrieved case, the ranking, every case's verdict), as a dict.");
   AddPhysicsFunctions(m);
+  AddPlannerObjects(m);
+  AddMatchAndCbr(m);
 }

@@ -13,12 +13,15 @@
 namespace foresight::python {
 
 // The data folder: `models`, or the one the command would use (models/model_paths.h).
-std::filesystem::path ModelsDir(const std::optional<std::string>& models);
+std::filesystem::path ModelsDir(const std::optional<std::filesystem::path>& models);
 
 // A keyword argument as the flag's text: "" for None, str(value) otherwise (so 0.1 stays 0.1).
 std::string FlagText(const pybind11::object& value);
 
 // `simulate`: physics trials as NumPy arrays (module_physics.cc).
 void AddPhysicsFunctions(pybind11::module_& module);
+
+// `passing` and `CaseBase`: the match simulator and case retrieval (match_cbr.cc).
+void AddMatchAndCbr(pybind11::module_& module);
 
 }  // namespace foresight::python

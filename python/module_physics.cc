@@ -2,9 +2,11 @@
 // order (trial i draws from its own stream, so the arrays do not depend on `threads`).
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "app/simulate_command.h"
 #include "common/geometry.h"
+#include "python/long_call.h"
 #include "python/module.h"
 
 namespace py = pybind11;
@@ -23,12 +25,14 @@ py::array_t<T> Column(const std::vector<TrialResult>& trials, Field&& field) {
   return column;
 }
 
-py::dict Simulate(const std::string& situation, const std::string& kick, const py::object& trials,
+py::dict Simulate(const std::filesystem::path& situation, const std::string& kick,
+                  const py::object& trials,
                   const py::object& seed, const py::object& rotation_deg,
                   const py::object& threads, const py::object& kicks, const py::object& physics,
-                  const std::optional<std::string>& models, const py::object& base) {
+                  const std::optional<std::filesystem::path>& models, const py::object& base,
+                  const py::object& progress) {
   SimulateOptions options;
-  options.situation_file = situation;
+  options.situation_file = situation.string();
   options.kick = kick;
   const auto set = [](std::string& flag, const py::object& value) {
     if (!value.is_none()) flag = FlagText(value);
@@ -40,12 +44,11 @@ py::dict Simulate(const std::string& situation, const std::string& kick, const p
   set(options.kicks_file, kicks);
   set(options.physics_file, physics);
   set(options.base, base);
-  std::vector<TrialResult> r;
-  {
-    py::gil_scoped_release release;
-    const SimulationPlan plan = PlanSimulation(options, ModelsDir(models));
-    r = RunKickTrials(*plan.setup->simulator, plan.request);
-  }
+  const std::filesystem::path dir = ModelsDir(models);
+  const std::vector<TrialResult> r = RunLongCall(progress, [&] {
+    const SimulationPlan plan = PlanSimulation(options, dir);
+    return RunKickTrials(*plan.setup->simulator, plan.request);
+  });
   using T = const TrialResult&;
   py::dict out;
   out["rest_x_m"] = Column<double>(r, [](T t) { return t.outcome.p_F_rest.x(); });
@@ -90,13 +93,15 @@ void AddPhysicsFunctions(py::module_& m) {
         py::arg("trials") = py::none(), py::arg("seed") = py::none(),
         py::arg("rotation_deg") = py::none(), py::arg("threads") = py::none(),
         py::arg("kicks") = py::none(), py::arg("physics") = py::none(),
-        py::arg("models") = py::none(), py::arg("base") = py::none(),  // base last: positions
-                                                                      // of older calls hold
+        // base and progress last: older calls that pass arguments by position keep working
+        py::arg("models") = py::none(), py::arg("base") = py::none(),
+        py::arg("progress") = py::none(),
         "Physics trials of one kick (`foresight simulate`): a dict of NumPy arrays, one entry "
         "per trial (rest_x_m, rest_y_m in F; category, first_contact, status as codes into "
         "category_names, contact_names, status_names; launch_speed_mps, launch_direction_deg in "
         "the intended robot frame; fell and max_tilt_deg on a floating base (base='floating'); "
-        "the drawn perturbations).");
+        "the drawn perturbations). Ctrl-C stops it; progress(label, done, total) hears how far "
+        "it is.");
 }
 
 }  // namespace foresight::python

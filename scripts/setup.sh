@@ -11,6 +11,7 @@ packages=(
   librsvg2-bin
   clang libclang-rt-14-dev
   python3 pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
+  python3-venv python3-pip python3-setuptools python3-wheel
   parallel slurm-wlm munge
 )
 

@@ -28,6 +28,7 @@ std::map<std::string, LaunchSpread> Spreads(const VariationFitSettings& settings
     s.seed = settings.seed;
     s.threads = settings.threads;
     s.variation = variation;
+    s.progress = settings.progress;
     const PhysicsCalibration run = RunPhysicsCalibration(s, models);
     spreads[kick] = SpreadOf(run.kicks.front().observations);
   }

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -48,6 +49,8 @@ struct VariationFitSettings {
   int trials = 400;  // per kick and run (three runs)
   std::uint64_t seed = 1;
   int threads = 0;
+  // A progress reporter for each physics run of a kick (empty: none).
+  std::function<std::function<void(int, int)>(const std::string& kick)> progress;
 };
 
 struct KickSpreadFit {

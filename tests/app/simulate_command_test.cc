@@ -128,3 +128,23 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<BadSimulate>& info) { return info.param.name; });
 
 }  // namespace
+
+// Into a log (stderr not a terminal) progress comes as whole lines with the rate and the time
+// left; FORESIGHT_PROGRESS_INTERVAL_S=0 writes one per report instead of one every few seconds,
+// so the test needs no real time. A run shorter than the interval (an hour) writes none.
+TEST_F(SimulateCommandTest, ALogGetsProgressLines) {
+  ::setenv("FORESIGHT_PROGRESS_INTERVAL_S", "0", 1);
+  const RunResult r = Simulate(OpenGoal("forward", 6));
+  ::unsetenv("FORESIGHT_PROGRESS_INTERVAL_S");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(CountOf(r.err, "\r"), 0);
+  EXPECT_EQ(CountOf(r.err, "simulate: "), 6) << r.err;  // one per trial: 6 reports
+  EXPECT_THAT(r.err, HasSubstr("simulate: 1 / 6 trials (16 %), "));
+  EXPECT_THAT(r.err, HasSubstr(" trials/s, about "));
+  EXPECT_THAT(r.err, HasSubstr("simulate: 6 / 6 trials (100 %), done in "));
+  ::setenv("FORESIGHT_PROGRESS_INTERVAL_S", "3600", 1);
+  const RunResult quiet = Simulate(OpenGoal("forward", 6));
+  ::unsetenv("FORESIGHT_PROGRESS_INTERVAL_S");
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "");
+}

@@ -1,0 +1,108 @@
+#include "common/long_call.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "common/parallel_for.h"
+
+namespace foresight {
+namespace {
+
+struct Stop : std::runtime_error {
+  Stop() : std::runtime_error("stop") {}
+};
+
+// A host that says stop at its `stop_at`-th poll and records the progress it hears.
+class TestHost : public LongCallHost {
+ public:
+  explicit TestHost(int stop_at) : stop_at_(stop_at) {}
+  void Poll() override {
+    if (++polls == stop_at_) throw Stop();
+  }
+  void Progress(const std::string& label, int done, int total, const std::string& unit) override {
+    heard.push_back(label + " " + std::to_string(done) + "/" + std::to_string(total) + " " + unit);
+  }
+  int polls = 0;
+  std::vector<std::string> heard;
+
+ private:
+  int stop_at_;
+};
+
+TEST(LongCallTest, WithoutAHostAPollDoesNothing) {
+  EXPECT_EQ(CurrentLongCallHost(), nullptr);
+  PollLongCall();  // no host: nothing to call, nothing thrown
+}
+
+TEST(LongCallTest, TheHostStopsAParallelLoopOnTheCallingThread) {
+  for (const int threads : {1, 3}) {
+    TestHost host(5);
+    ScopedLongCallHost installed(host, std::chrono::nanoseconds(0));
+    std::atomic<int> done{0};
+    EXPECT_THROW(ParallelFor(10000, threads, [&](int) { ++done; }), Stop) << threads;
+    // Stopped after the calling thread's fifth item; each helper finishes at most the item it
+    // had begun, and the hand-out ends.
+    EXPECT_EQ(host.polls, 5);
+    EXPECT_LT(done.load(), 10000);
+  }
+}
+
+TEST(LongCallTest, HelperThreadsNeverPoll) {
+  TestHost host(0);  // never stops
+  ScopedLongCallHost installed(host, std::chrono::nanoseconds(0));
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<int> on_helpers{0};
+  ParallelFor(400, 4, [&](int) {
+    if (std::this_thread::get_id() != caller) {
+      PollLongCall();  // a helper has no host: nothing happens
+      ++on_helpers;
+    }
+  });
+  // Only the calling thread's own items polled (one poll each, inside ParallelFor).
+  EXPECT_EQ(host.polls, 400 - on_helpers.load());
+}
+
+TEST(LongCallTest, PollsAreSpacedByTheInterval) {
+  TestHost host(0);
+  ScopedLongCallHost installed(host, std::chrono::hours(1));
+  for (int i = 0; i < 1000; ++i) PollLongCall();
+  EXPECT_EQ(host.polls, 0);  // an hour has not passed
+}
+
+TEST(LongCallTest, ScopesNestAndRestore) {
+  TestHost outer(0), inner(0);
+  {
+    ScopedLongCallHost a(outer);
+    EXPECT_EQ(CurrentLongCallHost(), &outer);
+    {
+      ScopedLongCallHost b(inner);
+      EXPECT_EQ(CurrentLongCallHost(), &inner);
+    }
+    EXPECT_EQ(CurrentLongCallHost(), &outer);
+  }
+  EXPECT_EQ(CurrentLongCallHost(), nullptr);
+}
+
+TEST(LongCallTest, ProgressGoesToTheHostOrElseTheFallback) {
+  int fallback_calls = 0;
+  const auto fallback = [&](int, int) { ++fallback_calls; };
+  LongCallProgress("simulate", "trials", fallback)(1, 2);
+  EXPECT_EQ(fallback_calls, 1);
+  TestHost host(0);
+  ScopedLongCallHost installed(host);
+  const ProgressFunction report = LongCallProgress("simulate", "trials", fallback);
+  ParallelFor(
+      4, 2, [](int) {}, report);
+  EXPECT_EQ(fallback_calls, 1);
+  ASSERT_FALSE(host.heard.empty());
+  EXPECT_EQ(host.heard.back(), "simulate 4/4 trials");
+}
+
+}  // namespace
+}  // namespace foresight
