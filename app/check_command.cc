@@ -6,7 +6,7 @@
 #include "app/cli_values.h"
 #include "common/error.h"
 #include "models/model_paths.h"
-#include "report/atomic_file.h"
+#include "report/output_set.h"
 #include "validation/physics_checks.h"
 
 namespace foresight {
@@ -25,6 +25,8 @@ int RunCheckCommand(const CheckOptions& options, const std::string& models_dir) 
   const std::filesystem::path models =
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
   const int threads = ParseCount("--threads", options.threads, 0, 1024);
+  OutputSet outputs;  // located and checked before the checks run
+  outputs.AddFile("--junit", options.junit_file);
   const std::filesystem::path spec_file = options.spec_file.empty()
                                               ? DataFile(models, DataFolder::kCheckSpecs, "default")
                                               : std::filesystem::path(options.spec_file);
@@ -39,9 +41,10 @@ int RunCheckCommand(const CheckOptions& options, const std::string& models_dir) 
                   << static_cast<int>(r.time_s * 10.0 + 0.5) / 10.0 << " s): " << r.detail << "\n"
                   << std::flush;
       });
-  if (!options.junit_file.empty()) {
-    WriteFileAtomically(options.junit_file, JUnitXml("foresight check " + suite.name, results));
+  if (outputs.Has("--junit")) {
+    outputs.Put("--junit", JUnitXml("foresight check " + suite.name, results));
   }
+  outputs.Commit();
   std::cout << results.size() - failed << " of " << results.size() << " checks passed\n"
             << std::flush;
   if (!std::cout) throw InputError("cannot write to standard output");

@@ -60,18 +60,37 @@ std::string DisplayPath(const std::filesystem::path& file,
   return file.generic_string();
 }
 
+namespace {
+std::function<void()>& ProgressCheck() {
+  static std::function<void()> check;
+  return check;
+}
+}  // namespace
+
+void SetProgressCheck(std::function<void()> check) {
+  ProgressCheck() = std::move(check);
+}
+
 std::function<void(int, int)> TerminalProgress(const std::string& label, const std::string& unit) {
-  if (!isatty(STDERR_FILENO)) return {};
-  return [label, unit](int done, int total) {
+  const bool terminal = isatty(STDERR_FILENO);
+  const std::function<void()>& check = ProgressCheck();
+  if (!terminal && !check) return {};
+  return [label, unit, terminal, check](int done, int total) {
+    if (check) check();
+    if (!terminal) return;
     std::fprintf(stderr, "\r%s %d / %d %s", label.c_str(), done, total, unit.c_str());
     if (done == total) std::fprintf(stderr, "\n");
   };
 }
 
-void WriteReportFiles(const std::string& dir, const std::string& flag, const ReportFiles& files) {
+std::vector<ReportFile> ReportFolderFiles(const ReportFiles& files) {
   std::vector<ReportFile> named;
   for (const auto& [file, content] : files) named.push_back({file.filename().string(), content});
-  WriteReportFolder(dir, named, flag);
+  return named;
+}
+
+void WriteReportFiles(const std::string& dir, const std::string& flag, const ReportFiles& files) {
+  WriteReportFolder(dir, ReportFolderFiles(files), flag);
 }
 
 void CheckReportDir(const std::string& dir, const std::string& flag) {

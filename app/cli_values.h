@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "report/report_folder.h"
+
 namespace foresight {
 
 int ParseCount(const std::string& flag, const std::string& text, int lo, int hi);
@@ -24,15 +26,22 @@ std::optional<bool> ParseSwitch(const std::string& flag, const std::string& text
 std::string DefaultText(double value);
 
 // Progress "LABEL done / total UNIT" on stderr, only when stderr is a terminal
-// (docs/ARCHITECTURE.md, "Output").
+// (docs/ARCHITECTURE.md, "Output"). Every report first runs the progress check, if one is set.
 std::function<void(int, int)> TerminalProgress(const std::string& label, const std::string& unit);
+
+// A check that every progress report of a long loop runs (at least every 1 % of its items, from
+// any thread); it ends the run by throwing. The Python module sets one that ends a call on
+// Ctrl-C (python/module.cc). Set it before any run starts.
+void SetProgressCheck(std::function<void()> check);
 
 // Writes the report folder `dir` whole (report/report_folder.h): the files, given as paths in
 // `dir`, replace the previous report at once. Call it only once every content is computed.
 using ReportFiles = std::vector<std::pair<std::filesystem::path, std::string>>;
 void WriteReportFiles(const std::string& dir, const std::string& flag, const ReportFiles& files);
+// The same files as an OutputSet's folder content (report/output_set.h).
+std::vector<ReportFile> ReportFolderFiles(const ReportFiles& files);
 
-// Checks, without creating anything, that WriteReportFiles can succeed (CheckReportFolder), so
+// Checks, leaving nothing behind, that WriteReportFiles can succeed (CheckReportFolder), so
 // that a bad flag fails before the work instead of after it.
 void CheckReportDir(const std::string& dir, const std::string& flag);
 

@@ -15,6 +15,7 @@
 #include "app/merge_command.h"
 #include "app/simulate_command.h"
 #include "common/error.h"
+#include "common/one_line.h"
 #include "models/model_paths.h"
 
 namespace {
@@ -22,29 +23,42 @@ namespace {
 constexpr int kExitBadInput = 2;
 constexpr int kExitInternal = 3;
 
-constexpr std::size_t kMaxMessageBytes = 2000;
-
-// The promise is one line: control characters (a name with a newline in it) are escaped, and a
-// message is cut after kMaxMessageBytes.
-std::string OneLine(const std::string& message) {
-  std::string line;
-  for (const char c : message.substr(0, kMaxMessageBytes)) {
-    if (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f) {
-      line += c;
-    } else {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned char>(c));
-      line += c == '\n' ? std::string("\\n") : std::string(escaped);
-    }
-  }
-  if (message.size() > kMaxMessageBytes)
-    line += "... (" + std::to_string(message.size()) + " bytes)";
-  return line;
+int Fail(const std::string& message) {
+  std::cerr << "foresight: error: " << foresight::OneLine(message) << "\n";
+  return kExitBadInput;
 }
 
-int Fail(const std::string& message) {
-  std::cerr << "foresight: error: " << OneLine(message) << "\n";
-  return kExitBadInput;
+// An empty value is refused, never read as "flag not given" (`--svg ''` would draw nothing,
+// `check --spec ''` run the default spec for minutes).
+void RefuseEmptyValues(const CLI::App& app) {
+  for (const CLI::Option* option : app.get_options()) {
+    if (option->count() == 0 || option->get_expected_min() == 0) continue;  // a flag
+    for (const std::string& value : option->results()) {
+      if (value.empty()) {
+        throw foresight::InputError(option->get_name() + ": empty value (leave the flag out for "
+                                    "its default)");
+      }
+    }
+  }
+  for (const CLI::App* sub : app.get_subcommands()) RefuseEmptyValues(*sub);
+}
+
+// CLI11 words a mistyped command "A subcommand is required"; the user gets the word instead.
+std::string UnknownCommand(const CLI::App& app, int argc, char** argv) {
+  std::string names;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word == "--models") {
+      ++i;
+      continue;
+    }
+    if (word.empty() || word[0] == '-') continue;
+    return "unknown command '" + word + "' (one of: " + names + ")";
+  }
+  return "a command is required (one of: " + names + ")";
 }
 
 }  // namespace
@@ -83,10 +97,12 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    if (app.get_subcommands().empty()) return Fail(UnknownCommand(app, argc, argv));
     return Fail(e.what());
   }
 
   try {
+    RefuseEmptyValues(app);
     if (app.got_subcommand("decide")) return foresight::RunDecide(decide, models_dir);
     if (app.got_subcommand("simulate")) return foresight::RunSimulate(simulate, models_dir);
     if (app.got_subcommand("calibrate")) return foresight::RunCalibrate(calibrate, models_dir);
@@ -105,7 +121,7 @@ int main(int argc, char** argv) {
     // Not a bug but the machine's or the job's limit (`ulimit -v`, a Slurm job's memory).
     return Fail("out of memory (a memory limit such as ulimit -v? a smaller run may fit)");
   } catch (const std::exception& e) {
-    std::cerr << "foresight: internal error: " << OneLine(e.what()) << "\n";
+    std::cerr << "foresight: internal error: " << foresight::OneLine(e.what()) << "\n";
     return kExitInternal;
   }
   return kExitBadInput;

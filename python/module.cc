@@ -1,12 +1,17 @@
 #include "python/module.h"
 
 #include <pybind11/stl.h>
+#include <signal.h>
+
+#include <atomic>
 
 #include "app/calibrate_command.h"
 #include "app/cbr_command.h"
 #include "app/decide_command.h"
+#include "app/cli_values.h"
 #include "app/fidelity_command.h"
 #include "common/error.h"
+#include "common/one_line.h"
 #include "common/json_reader.h"
 #include "models/model_paths.h"
 #include "models/situation.h"
@@ -76,7 +81,7 @@ py::object Decide(const std::string& situation, const py::object& strategy,
   SetFlag(options.kicks_file, kicks);
   nlohmann::ordered_json json;
   {
-    py::gil_scoped_release release;
+    const ReleasedCall call;
     json = DecideJson(options, ModelsDir(models));
   }
   return ToPython(json);
@@ -103,7 +108,7 @@ py::object Calibrate(const std::string& robot, const py::object& kick, const py:
   SetFlag(options.resamples, resamples);
   nlohmann::ordered_json json;
   {
-    py::gil_scoped_release release;
+    const ReleasedCall call;
     json = CalibrationJson(CalibrateInMemory(options, ModelsDir(models)));
   }
   return ToPython(json);
@@ -124,7 +129,7 @@ py::object Fidelity(const py::object& situations, const py::object& trials,
   SetFlag(options.physics_file, physics);
   nlohmann::ordered_json json;
   {
-    py::gil_scoped_release release;
+    const ReleasedCall call;
     json = FidelityJson(RunFidelityInMemory(options, ModelsDir(models)));
   }
   return ToPython(json);
@@ -138,13 +143,57 @@ py::object CbrRetrieve(const std::string& problem, const py::object& case_base,
   SetFlag(options.params_file, params);
   nlohmann::ordered_json json;
   {
-    py::gil_scoped_release release;
+    const ReleasedCall call;
     json = CbrRetrieveJsonFor(options, ModelsDir(models));
   }
   return ToPython(json);
 }
 
+// Ctrl-C during a call. The work runs with the GIL released, where Python's own SIGINT handler
+// only notes the signal for the interpreter to act on when the call returns. A handler chained in
+// front of Python's notes it here too; the commands' progress check (app/cli_values.h), which the
+// long loops run at least every 1 % of their items from any thread, then ends the call, and the
+// exception becomes Python's KeyboardInterrupt (or whatever the script's handler raises).
+struct Interrupted {};
+std::atomic<bool> interrupt_pending{false};
+std::atomic<int> calls_running{0};  // a Ctrl-C between calls is Python's alone
+struct sigaction python_sigint {};
+
+void NoteInterrupt(int signal, siginfo_t* info, void* context) {
+  if (calls_running.load() > 0) interrupt_pending.store(true);
+  if (python_sigint.sa_flags & SA_SIGINFO) {
+    python_sigint.sa_sigaction(signal, info, context);
+  } else if (python_sigint.sa_handler != SIG_DFL && python_sigint.sa_handler != SIG_IGN) {
+    python_sigint.sa_handler(signal);
+  }
+}
+
+void WatchInterrupts() {
+  struct sigaction current {};
+  if (::sigaction(SIGINT, nullptr, &current) != 0) return;
+  const bool python_handles = (current.sa_flags & SA_SIGINFO) ||
+                              (current.sa_handler != SIG_DFL && current.sa_handler != SIG_IGN);
+  if (!python_handles) return;  // an embedding without Python's handler: leave SIGINT alone
+  python_sigint = current;
+  struct sigaction chained = current;
+  chained.sa_flags |= SA_SIGINFO;
+  chained.sa_sigaction = NoteInterrupt;
+  ::sigaction(SIGINT, &chained, nullptr);
+  interrupt_pending.store(false);
+  SetProgressCheck([] {
+    if (interrupt_pending.exchange(false)) throw Interrupted{};
+  });
+}
+
 }  // namespace
+
+ReleasedCall::ReleasedCall() {
+  if (calls_running.fetch_add(1) == 0) interrupt_pending.store(false);
+}
+
+ReleasedCall::~ReleasedCall() {
+  calls_running.fetch_sub(1);
+}
 
 }  // namespace foresight::python
 
@@ -154,7 +203,18 @@ PYBIND11_MODULE(foresight, m) {
             "Bullet physics, and case-based coordinated action selection. Each function returns what the command of the same name writes as "
             "JSON; bad input raises foresight.InputError with the command's one-line message.";
   m.attr("__version__") = FORESIGHT_VERSION;
-  py::register_exception<foresight::InputError>(m, "InputError", PyExc_ValueError);
+  // The command line's one-line message, cut as the command line cuts it (common/error.h).
+  static py::exception<foresight::InputError> input_error(m, "InputError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr raised) {
+    try {
+      if (raised) std::rethrow_exception(raised);
+    } catch (const foresight::InputError& e) {
+      PyErr_SetString(input_error.ptr(), foresight::OneLine(e.what()).c_str());
+    } catch (const Interrupted&) {
+      if (PyErr_CheckSignals() == 0) PyErr_SetNone(PyExc_KeyboardInterrupt);
+    }
+  });
+  WatchInterrupts();
   m.def("models_dir", [](const std::optional<std::string>& models) {
     return ModelsDir(models).string();
   }, py::arg("models") = py::none(), "The data folder the functions read (models/).");

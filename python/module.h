@@ -18,6 +18,19 @@ std::filesystem::path ModelsDir(const std::optional<std::string>& models);
 // A keyword argument as the flag's text: "" for None, str(value) otherwise (so 0.1 stays 0.1).
 std::string FlagText(const pybind11::object& value);
 
+// Long work: the GIL released, and Ctrl-C noted while it runs so that the work ends within a
+// progress report and the call raises KeyboardInterrupt (module.cc).
+class ReleasedCall {
+ public:
+  ReleasedCall();
+  ~ReleasedCall();
+  ReleasedCall(const ReleasedCall&) = delete;
+  ReleasedCall& operator=(const ReleasedCall&) = delete;
+
+ private:
+  pybind11::gil_scoped_release release_;
+};
+
 // `simulate`: physics trials as NumPy arrays (module_physics.cc).
 void AddPhysicsFunctions(pybind11::module_& module);
 

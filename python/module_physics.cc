@@ -42,7 +42,7 @@ py::dict Simulate(const std::string& situation, const std::string& kick, const p
   set(options.base, base);
   std::vector<TrialResult> r;
   {
-    py::gil_scoped_release release;
+    const ReleasedCall call;
     const SimulationPlan plan = PlanSimulation(options, ModelsDir(models));
     r = RunKickTrials(*plan.setup->simulator, plan.request);
   }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "common/checks.h"
+#include "common/data_file.h"
 #include "common/error.h"
 #include "common/geometry.h"
 
@@ -148,11 +149,7 @@ KickObservation ObservationOfRow(const Row& row, double deceleration, bool& spee
 
 ObservedKicks ReadObservedKicks(const std::filesystem::path& file,
                                 double assumed_deceleration_mps2) {
-  std::error_code ec;
-  std::ifstream in(file);
-  if (!std::filesystem::is_regular_file(file, ec) || !in) {
-    throw InputError(file.string() + ": cannot read the file");
-  }
+  std::istringstream in(ReadDataFile(file));
   std::string line;
   if (!std::getline(in, line)) throw InputError(file.string() + ": empty file, no header line");
   const std::map<std::string, int> columns = ReadHeader(line, file.string());
