@@ -64,10 +64,11 @@ std::optional<Marker> ReadMarker(const fs::path& dir) {
 
 std::atomic<unsigned> probe_count{0};  // tells the probes of one process's threads apart
 
-// The nearest existing folder at or above `dir` must be a folder in which the missing ones can
+// The nearest existing folder at or above `dir` (the report folder `named`'s parent) must be a
+// folder in which the missing ones can
 // be made: they are made and removed again (a read-only file system, a name too long, a file in
 // the way all show here, also for root, whom access(2) would let pass).
-void CheckCreatable(const fs::path& dir, std::string_view flag) {
+void CheckCreatable(const fs::path& dir, std::string_view flag, const fs::path& named) {
   std::error_code ec;
   std::vector<fs::path> missing;
   fs::path existing = fs::absolute(dir, ec);
@@ -77,7 +78,7 @@ void CheckCreatable(const fs::path& dir, std::string_view flag) {
     existing = existing.parent_path();
   }
   const std::string cannot =
-      std::string(flag) + ": cannot create the folder '" + dir.string() + "': ";
+      std::string(flag) + ": cannot create the folder '" + named.string() + "': ";
   if (!fs::is_directory(existing, ec)) {
     throw InputError(cannot + existing.string() + " is a file, not a folder");
   }
@@ -153,7 +154,7 @@ fs::path NormalReportFolder(const fs::path& dir, std::string_view flag) {
 
 void CheckReportFolder(const fs::path& dir, std::string_view flag) {
   const fs::path normal = NormalReportFolder(dir, flag);
-  CheckCreatable(ParentOf(normal), flag);
+  CheckCreatable(ParentOf(normal), flag, dir);
   RequireOwn(normal, flag);
 }
 
