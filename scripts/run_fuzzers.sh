@@ -52,6 +52,23 @@ mkdir -p "$build/findings"
 # Leaks inside third-party libraries we cannot fix (each explained in the file).
 export LSAN_OPTIONS="suppressions=$root/fuzz/lsan_suppressions.txt${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 failed=0
+# TARGET NAME WHAT ARGS...: the fuzz binary's TARGET with libFuzzer's ARGS, the log in
+# findings/NAME.log, a finding's input as findings/NAME-*.
+run() {
+  local target=$1 name=$2 what=$3
+  shift 3
+  local start
+  start=$(date +%s)
+  if FORESIGHT_FUZZ_TARGET=$target "$build/fuzz/fuzz_readers" -timeout="$timeout" \
+       -rss_limit_mb=2048 -artifact_prefix="$build/findings/$name-" "$@" \
+       >"$build/findings/$name.log" 2>&1; then
+    echo "fuzz $target: $what, no finding ($(( $(date +%s) - start )) s)"
+  else
+    echo "fuzz $target: FINDING ($what), see $build/findings/$name.log"
+    grep -m 3 -E "ERROR|SUMMARY|uncaught|deadly|ALARM|timeout" "$build/findings/$name.log" || true
+    failed=1
+  fi
+}
 targets=${FUZZ_TARGETS:-$(printf '%s\n' "${!seeds[@]}" | sort)}
 for target in $targets; do
   if [ -z "${seeds[$target]+set}" ]; then echo "fuzz: no target '$target'"; exit 2; fi
@@ -59,22 +76,13 @@ for target in $targets; do
   rm -rf "$corpus" && mkdir -p "$corpus"
   # shellcheck disable=SC2086  # the globs are meant to expand
   for f in ${seeds[$target]}; do [ -f "$f" ] && cp "$f" "$corpus/"; done
-  start=$(date +%s)
-  if FORESIGHT_FUZZ_TARGET=$target "$build/fuzz/fuzz_readers" "$corpus" -runs="$runs" -seed="$seed" -timeout="$timeout" \
-       -rss_limit_mb=2048 -max_len=65536 -artifact_prefix="$build/findings/$target-" \
-       >"$build/findings/$target.log" 2>&1; then
-    echo "fuzz $target: $runs inputs, no finding ($(( $(date +%s) - start )) s)"
-  else
-    echo "fuzz $target: FINDING, see $build/findings/$target.log"
-    grep -m 3 -E "ERROR|SUMMARY|uncaught|deadly" "$build/findings/$target.log" || true
-    failed=1
-  fi
+  run "$target" "$target" "$runs inputs" "$corpus" -runs="$runs" -seed="$seed" -max_len=65536
 done
 
-# Large inputs: SHAPE FILE writes about $large_bytes bytes of one shape.
+# Large inputs of one shape each, about $large_bytes bytes.
 large=$build/large
 rm -rf "$large" && mkdir -p "$large"
-repeat() {  # TEXT: TEXT repeated to about $large_bytes bytes
+repeat() {  # TEXT: TEXT repeated to about $large_bytes bytes, ending after a whole TEXT
   yes "$1" | tr -d '\n' | head -c "$large_bytes" | sed "s/,[^,]*\$/,/" || true
 }
 { printf '['; repeat '{},'; printf '{}]'; } >"$large/array_of_objects.json"
@@ -91,15 +99,6 @@ for target in $targets; do
     observed_kicks) inputs=("$large/rows.csv") ;;
     *) inputs=("$large"/*.json) ;;
   esac
-  start=$(date +%s)
-  if FORESIGHT_FUZZ_TARGET=$target "$build/fuzz/fuzz_readers" -timeout="$timeout" \
-       -rss_limit_mb=2048 -artifact_prefix="$build/findings/$target-large-" "${inputs[@]}" \
-       >"$build/findings/$target-large.log" 2>&1; then
-    echo "fuzz $target: ${#inputs[@]} large inputs within ${timeout} s each ($(( $(date +%s) - start )) s)"
-  else
-    echo "fuzz $target: FINDING on a large input, see $build/findings/$target-large.log"
-    grep -m 3 -E "ERROR|SUMMARY|uncaught|deadly|ALARM|timeout" "$build/findings/$target-large.log" || true
-    failed=1
-  fi
+  run "$target" "$target-large" "${#inputs[@]} large inputs within $timeout s each" "${inputs[@]}"
 done
 exit $failed

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "common/error.h"
-#include "tests/support/temp_files.h"
+#include "tests/support/model_test_util.h"
 
 namespace foresight {
 namespace {
@@ -26,18 +26,12 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 std::set<std::string> Names(const fs::path& dir) {
-  std::set<std::string> names;
-  for (const auto& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename());
-  return names;
+  return testing::FolderNames(dir);
 }
 
-std::string ErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+template <typename Action>
+std::string ErrorOf(Action&& action) {
+  return testing::InputErrorMessage(action);
 }
 
 TEST(OutputSetTest, EveryOutputIsCheckedWhenDeclaredBeforeAnyWork) {

@@ -28,9 +28,7 @@ std::string Read(const fs::path& file) {
 }
 
 std::set<std::string> Names(const fs::path& dir) {
-  std::set<std::string> names;
-  for (const auto& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename());
-  return names;
+  return testing::FolderNames(dir);
 }
 
 std::string ErrorOf(const std::function<void()>& f) {
