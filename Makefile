@@ -7,6 +7,7 @@ SITUATION ?= models/situations/near_goal_corner.json
 STRATEGY ?= optimal_all
 
 FUZZ_RUNS ?= 20000
+FUZZ_TIMEOUT ?= 10
 
 .PHONY: setup build test main demo deb experiments experiments-quick bench same-bytes sanitize fuzz clean
 
@@ -89,11 +90,13 @@ sanitize: setup
 
 # libFuzzer targets for every reader (fuzz/), built with clang, AddressSanitizer and UBSan, each
 # run for FUZZ_RUNS inputs from the seed corpus in models/ with a fixed libFuzzer seed (so a run
-# is reproducible); a finding fails and leaves its input in build-fuzz/findings/.
+# is reproducible), then on large inputs of several shapes; every input has FUZZ_TIMEOUT seconds
+# (so a reader that is quadratic in its input fails); a finding fails and leaves its input in
+# build-fuzz/findings/.
 fuzz: setup
 	@CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFORESIGHT_FUZZ=ON -DFORESIGHT_BUILD_TESTS=OFF -DFORESIGHT_BUILD_BENCH=OFF >/dev/null
 	@cmake --build build-fuzz -j $(JOBS)
-	@bash scripts/run_fuzzers.sh build-fuzz $(FUZZ_RUNS)
+	@FUZZ_TIMEOUT=$(FUZZ_TIMEOUT) bash scripts/run_fuzzers.sh build-fuzz $(FUZZ_RUNS)
 
 clean:
 	@rm -rf $(BUILD) $(BUILD)-march-silvermont $(BUILD)-march-native build-asan build-fuzz out

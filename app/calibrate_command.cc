@@ -11,7 +11,9 @@
 #include "app/variation_fit_output.h"
 #include "common/error.h"
 #include "models/model_paths.h"
+#include "models/robot_spec.h"
 #include "report/atomic_file.h"
+#include "report/output_set.h"
 #include "report/provenance.h"
 #include "validation/calibration_html.h"
 #include "validation/calibration_report.h"
@@ -129,29 +131,13 @@ void Fit(CalibrationRun& run) {
   run.fitted = ApplyCalibration(run.base, fits, run.deceleration);
 }
 
-// Whether --out names a file directly in the --report folder.
-bool ModelInsideReport(const CalibrateOptions& options) {
-  if (options.report_dir.empty()) return false;
-  const std::filesystem::path model_dir =
-      std::filesystem::path(options.out_file).parent_path().lexically_normal();
-  const std::filesystem::path report = std::filesystem::path(options.report_dir).lexically_normal();
-  const auto without_slash = [](const std::filesystem::path& p) {
-    return p.has_filename() || !p.has_parent_path() ? p : p.parent_path();
-  };
-  return std::filesystem::weakly_canonical(without_slash(model_dir)) ==
-         std::filesystem::weakly_canonical(without_slash(report));
-}
-
-// The kick model's folder must exist, and the report folder must be one foresight may replace.
-void CheckOutputs(const CalibrateOptions& options) {
-  const std::filesystem::path out_dir = std::filesystem::path(options.out_file).parent_path();
-  std::error_code ec;
-  if (!out_dir.empty() && !ModelInsideReport(options) &&
-      !std::filesystem::is_directory(out_dir, ec)) {
-    throw InputError("--out: " + options.out_file + ": the folder " + out_dir.string() +
-                     " does not exist");
-  }
-  if (!options.report_dir.empty()) CheckReportDir(options.report_dir, "--report");
+// The outputs of a calibration, located and checked (before the work) and written together: the
+// report folder first, so that a model inside it becomes one of its files.
+OutputSet CalibrationOutputs(const CalibrateOptions& options) {
+  OutputSet outputs;
+  outputs.AddFolder("--report", options.report_dir);
+  outputs.AddFile("--out", options.out_file);
+  return outputs;
 }
 
 std::string ModelNotes(const CalibrationRun& run) {
@@ -199,8 +185,8 @@ void AddCalibrateCommand(CLI::App& app, CalibrateOptions& options) {
                 "that calibrate --variation and simulate --variation read")
       ->excludes(variation);
   cmd->add_option("--fit-trials", options.fit_trials,
-                  "Physics trials per kick and run of --fit-variation")
-      ->capture_default_str();
+                  std::string("Physics trials per kick and run of --fit-variation (default: ") +
+                      kDefaultFitTrials + ")");
   cmd->add_option("--confidence", options.confidence, "Interval level")->capture_default_str();
   cmd->add_option("--resamples", options.resamples, "Bootstrap resamples")->capture_default_str();
   cmd->add_option("--shard", options.shard,
@@ -214,7 +200,7 @@ namespace {
 int RunVariationFit(const CalibrateOptions& options, const std::filesystem::path& models) {
   if (options.from_csv.empty()) throw InputError("--fit-variation: needs --from-csv LOG");
   if (!options.report_dir.empty()) throw InputError("--report: not with --fit-variation");
-  CheckOutputs(options);
+  OutputSet outputs = CalibrationOutputs(options);
   const KickModel base = LoadKickModel(options.kicks_file.empty()
                                            ? DataFile(models, DataFolder::kKicks, options.robot)
                                            : std::filesystem::path(options.kicks_file));
@@ -233,7 +219,9 @@ int RunVariationFit(const CalibrateOptions& options, const std::filesystem::path
   }
   VariationFitSettings settings;
   settings.robot = options.robot;
-  settings.trials = ParseCount("--fit-trials", options.fit_trials, 50, kMaxTrials);
+  settings.trials = ParseCount(
+      "--fit-trials", options.fit_trials.empty() ? kDefaultFitTrials : options.fit_trials, 50,
+      kMaxTrials);
   settings.seed = ParseSeed(options.seed);
   settings.threads = ParseCount("--threads", options.threads, 0, kMaxThreads);
   settings.progress = [](const std::string& kick) {
@@ -242,8 +230,8 @@ int RunVariationFit(const CalibrateOptions& options, const std::filesystem::path
   const VariationFit fit = FitVariation(settings, spreads, models);
   const std::string json = VariationFitJson(options.robot, options.from_csv, fit).dump(2) + "\n";
   const std::string text = VariationFitText(fit);
-  CheckOutputs(options);
-  WriteFileAtomically(options.out_file, json);
+  outputs.Put("--out", json);
+  outputs.Commit();
   std::cout << text << "wrote the fitted trial_variation to " << options.out_file
             << " (physics reads it with calibrate --variation " << options.out_file
             << " or simulate --variation " << options.out_file << ")\n"
@@ -280,7 +268,7 @@ CalibrationRun CalibrateInMemory(const CalibrateOptions& options,
                            {"base_kicks", DisplayPath(base_file, models)},
                            {"base_kicks_hash", ContentHash(base_file)},
                            {"out", options.out_file}};
-  CheckOutputs(options);  // before the work, not after
+  CalibrationOutputs(options);  // before the work, not after
   if (options.from_csv.empty()) {
     if (options.kick.empty() && !options.all) throw InputError("--kick or --all: say which kicks");
     CalibrateFromPhysics(options, models, run, parts);
@@ -347,9 +335,12 @@ int WriteCalibration(const CalibrateOptions& options, const CalibrationRun& run)
 int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir) {
   const std::filesystem::path models =
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+  // --robot bogus: the robots there, not a kick model that is missing.
+  WithFile("--robot", [&] { RobotSpecFile(options.robot, models); });
   if (const std::optional<Shard> shard = ParseShardFlag(options.shard))
     return RunCalibrationShard(options, *shard, models);
   if (options.fit_variation) return RunVariationFit(options, models);
+  if (!options.fit_trials.empty()) throw InputError("--fit-trials: only with --fit-variation");
   return WriteCalibration(options, CalibrateInMemory(options, models));
 }
 
@@ -395,15 +386,10 @@ int WriteCalibration(const CalibrateOptions& options, const CalibrationRun& run)
     files.push_back({dir / "calibration.html", CalibrationHtml(run)});
   }
   const std::string text = CalibrationText(run);
-  CheckOutputs(options);
-  if (ModelInsideReport(options)) {
-    // The report folder is replaced whole, so a model inside it is one of its files.
-    files.push_back({options.out_file, model});
-  } else {
-    // The kick model first: if it cannot be written, no report is left behind either.
-    WriteFileAtomically(options.out_file, model);
-  }
-  if (!options.report_dir.empty()) WriteReportFiles(options.report_dir, "--report", files);
+  OutputSet outputs = CalibrationOutputs(options);
+  outputs.Put("--out", model);
+  if (!options.report_dir.empty()) outputs.Put("--report", ReportFolderFiles(files));
+  outputs.Commit();  // the model and the report together, or neither
   std::cout << text << "wrote the calibrated kick model to " << options.out_file << "\n";
   if (!options.report_dir.empty()) {
     std::cout << "report: "

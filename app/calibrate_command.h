@@ -14,6 +14,8 @@
 
 namespace foresight {
 
+inline constexpr char kDefaultFitTrials[] = "400";
+
 struct CalibrateOptions {
   std::string robot;
   std::string kick;  // one kick, or --all
@@ -30,7 +32,8 @@ struct CalibrateOptions {
   std::string variation_file;  // --variation: replaces robot.json's trial_variation
   std::string from_csv;
   bool fit_variation = false;     // with from_csv: fit the physical causes, not the kick model
-  std::string fit_trials = "400";  // physics trials per kick and run of that fit
+  // Physics trials per kick and run of that fit; empty: not given (kDefaultFitTrials).
+  std::string fit_trials;
   // The defaults of the fit are CalibrationSettings' (shown by --help).
   std::string confidence = DefaultText(CalibrationSettings{}.confidence);
   std::string resamples = std::to_string(CalibrationSettings{}.resamples);

@@ -16,9 +16,10 @@
 #include "cbr/retrieval.h"
 #include "cbr/retrieval_params.h"
 #include "common/error.h"
+#include "common/one_line.h"
 #include "experiments/passing.h"
 #include "models/model_paths.h"
-#include "report/atomic_file.h"
+#include "report/output_set.h"
 
 namespace foresight {
 
@@ -49,8 +50,9 @@ fs::path ParamsPath(const CbrOptions& o, const fs::path& models) {
   return o.params_file.empty() ? models / "cbr" / "retrieval.json" : fs::path(o.params_file);
 }
 
+// Names come from the user's case files: their control characters are shown escaped.
 void Print(const std::string& text) {
-  std::cout << text << std::flush;
+  std::cout << PrintableLines(text) << std::flush;
   if (!std::cout) throw InputError("cannot write to standard output");
 }
 
@@ -83,6 +85,8 @@ auto WithRetrieval(const CbrOptions& o, const fs::path& models, Use&& use) {
 }
 
 int RunRetrieve(const CbrOptions& o, const fs::path& models) {
+  OutputSet outputs;  // located and checked before the work
+  outputs.AddFile("--svg", o.svg_file);
   return WithRetrieval(o, models, [&](const CbrRetrieveRun& run, const LoadedCaseBase& base) {
     // Everything is made before anything is written, so a failure leaves no file behind.
     const std::string printed =
@@ -90,13 +94,16 @@ int RunRetrieve(const CbrOptions& o, const fs::path& models) {
                                            nlohmann::ordered_json::error_handler_t::replace) +
                      "\n"
                : CbrRetrieveText(run, o.verbose);
-    if (!o.svg_file.empty()) {
-      WriteFileAtomically(o.svg_file, CbrRetrieveSvg(run, base.rules.field));
-    }
+    if (outputs.Has("--svg")) outputs.Put("--svg", CbrRetrieveSvg(run, base.rules.field));
+    outputs.Commit();
     Print(printed);
     return 0;
   });
 }
+
+// The overlaps `cbr check` lists before it says how many more there are: enough to see what is
+// wrong, short enough to read (a case base of thousands of copies gives one page, not gigabytes).
+constexpr std::size_t kMaxListedOverlaps = 20;
 
 int RunCheck(const CbrOptions& o, const fs::path& models) {
   const fs::path path = CaseBasePath(o, models);
@@ -117,8 +124,13 @@ int RunCheck(const CbrOptions& o, const fs::path& models) {
       100.0 * BallScopeCoverage(base, DefendingGoal::kYellow, -half, 0.9, 0.05));
   // Overlaps are legal (the copy only costs retrieval time, cbr/case_base.h): warnings only.
   const std::vector<std::string> warnings = CheckCaseBase(cases);
-  for (const std::string& w : warnings) s += "warning: " + w + "\n";
-  s += Format("overlapping stored cases: %zu\n", warnings.size());
+  const std::size_t listed = std::min(warnings.size(), kMaxListedOverlaps);
+  for (std::size_t i = 0; i < listed; ++i) s += "warning: " + warnings[i] + "\n";
+  if (listed < warnings.size()) {
+    s += Format("warning: %zu more groups of identical stored cases not listed\n",
+                warnings.size() - listed);
+  }
+  s += Format("groups of identical stored cases: %zu\n", warnings.size());
   // A case whose own opponent is on its own ball path is dead data: it is never retrieved in the
   // situation it was written for. That fails the check.
   const KickModel kicks = CheckKicks(o, models, base);
@@ -135,7 +147,7 @@ int RunCheck(const CbrOptions& o, const fs::path& models) {
           "error: case %s: its own opponent %d at (%.2f, %.2f) is on its ball path "
           "(trajectory %d, mu %.3f > thr_t %.3f): not retrieved where it was written "
           "for\n",
-          c.name.c_str(), opp.id, opp.p_F.x(), opp.p_F.y(), own.trajectory, own.membership,
+          OneLine(c.name).c_str(), opp.id, opp.p_F.x(), opp.p_F.y(), own.trajectory, own.membership,
           params.thr_trajectory);
     }
   }
@@ -150,7 +162,7 @@ int RunCheck(const CbrOptions& o, const fs::path& models) {
       const std::vector<ReachFinding> findings = CheckCaseReach(c, kicks, params);
       unplayable += findings.empty() ? 0 : 1;
       for (const ReachFinding& f : findings) {
-        s += "error: case " + c.name + ": " + DescribeFinding(f, params) + "\n";
+        s += "error: case " + OneLine(c.name) + ": " + DescribeFinding(f, params) + "\n";
       }
     }
     s += Format("cases asking more than their kicks carry (%s, reach at %g sd): %d of %zu\n",
@@ -163,7 +175,7 @@ int RunCheck(const CbrOptions& o, const fs::path& models) {
     const std::vector<HoldingFinding> findings = CheckCaseHolding(c, kicks, params, hold);
     overheld += findings.empty() ? 0 : 1;
     for (const HoldingFinding& f : findings) {
-      s += "error: case " + c.name + ": " + DescribeFinding(f, hold) + "\n";
+      s += "error: case " + OneLine(c.name) + ": " + DescribeFinding(f, hold) + "\n";
     }
   }
   s += Format("cases holding the ball beyond the holding limit (%.2f s): %d of %zu\n",

@@ -6,6 +6,7 @@
 
 #include "app/report_text.h"
 #include "cbr/similarity.h"
+#include "common/one_line.h"
 
 namespace foresight {
 
@@ -97,9 +98,9 @@ std::string CbrRetrieveText(const CbrRetrieveRun& run, bool verbose) {
     s += "retrieved: none (no case fits the problem)\n";
   } else {
     const CaseEvaluation& e = *run.result.Best();
-    s += "retrieved: " + c->name + " (" + std::string(CaseTransformName(c->transform)) + " of " +
-         c->source + ")\n";
-    s += "  notes: " + c->notes + "\n";
+    s += "retrieved: " + OneLine(c->name) + " (" +
+         std::string(CaseTransformName(c->transform)) + " of " + OneLine(c->source) + ")\n";
+    s += "  notes: " + OneLine(c->notes) + "\n";
     s += Format("  cost %.3f m (%s), ball similarity %.3f (band %s), conditions %d of %zu, "
                 "teammates %d\n",
                 e.correspondence.cost.primary, std::string(CostFunctionName(run.params.cost)).c_str(),
@@ -141,7 +142,7 @@ std::string CbrRetrieveText(const CbrRetrieveRun& run, bool verbose) {
   for (std::size_t r = 0; r < run.result.ranking.size(); ++r) {
     const CaseEvaluation& e = run.result.evaluations[static_cast<std::size_t>(run.result.ranking[r])];
     const Case& cc = run.cases[static_cast<std::size_t>(e.case_index)];
-    s += Format("  %4zu  %-28s %4s %5d %5d %8.3f %6.3f\n", r + 1, cc.name.c_str(), BandName(e.band),
+    s += Format("  %4zu  %-28s %4s %5d %5d %8.3f %6.3f\n", r + 1, OneLine(cc.name).c_str(), BandName(e.band),
                 e.conditions, e.teammates, e.correspondence.cost.primary, e.ball_similarity);
   }
   s += "rejected:";

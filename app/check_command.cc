@@ -7,7 +7,7 @@
 #include "app/report_text.h"
 #include "common/error.h"
 #include "models/model_paths.h"
-#include "report/atomic_file.h"
+#include "report/output_set.h"
 #include "report/provenance.h"
 #include "validation/physics_checks.h"
 
@@ -27,6 +27,8 @@ int RunCheckCommand(const CheckOptions& options, const std::string& models_dir) 
   const std::filesystem::path models =
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
   const int threads = ParseCount("--threads", options.threads, 0, 1024);
+  OutputSet outputs;  // located and checked before the checks run
+  outputs.AddFile("--junit", options.junit_file);
   const std::filesystem::path spec_file = options.spec_file.empty()
                                               ? DataFile(models, DataFolder::kCheckSpecs, "default")
                                               : std::filesystem::path(options.spec_file);
@@ -41,15 +43,15 @@ int RunCheckCommand(const CheckOptions& options, const std::string& models_dir) 
                   << static_cast<int>(r.time_s * 10.0 + 0.5) / 10.0 << " s): " << r.detail << "\n"
                   << std::flush;
       });
-  if (!options.junit_file.empty()) {
-    WriteFileAtomically(options.junit_file,
-                        JUnitXml("foresight check " + suite.name, results,
-                                 {{"version", FORESIGHT_VERSION},
-                                  {"spec", DisplayPath(spec_file, models)},
-                                  {"spec_hash", ContentHash(spec_file)},
-                                  {"robot_base", options.base.empty() ? "as the physics files"
-                                                                      : options.base}}));
+  if (outputs.Has("--junit")) {
+    outputs.Put("--junit", JUnitXml("foresight check " + suite.name, results,
+                                    {{"version", FORESIGHT_VERSION},
+                                     {"spec", DisplayPath(spec_file, models)},
+                                     {"spec_hash", ContentHash(spec_file)},
+                                     {"robot_base", options.base.empty() ? "as the physics files"
+                                                                         : options.base}}));
   }
+  outputs.Commit();
   std::cout << results.size() - failed << " of " << results.size() << " checks passed\n"
             << std::flush;
   if (!std::cout) throw InputError("cannot write to standard output");

@@ -1,16 +1,46 @@
 #include "app/cli_main.h"
 
-#include <cstdio>
 #include <iostream>
 #include <new>
 
 #include "common/error.h"
+#include "common/one_line.h"
 #include "models/model_paths.h"
 
 namespace foresight {
 namespace {
 
-constexpr std::size_t kMaxMessageBytes = 2000;
+// An empty value is refused, never read as "flag not given" (`--svg ''` would draw nothing,
+// `check --spec ''` run the default spec for minutes).
+void RefuseEmptyValues(const CLI::App& app) {
+  for (const CLI::Option* option : app.get_options()) {
+    if (option->count() == 0 || option->get_expected_min() == 0) continue;  // a flag
+    for (const std::string& value : option->results()) {
+      if (value.empty()) {
+        throw InputError(option->get_name() + ": empty value (leave the flag out for its default)");
+      }
+    }
+  }
+  for (const CLI::App* sub : app.get_subcommands()) RefuseEmptyValues(*sub);
+}
+
+// CLI11 words a mistyped command "A subcommand is required"; the user gets the word instead.
+std::string UnknownCommand(const CLI::App& app, int argc, char** argv) {
+  std::string names;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word == "--models") {
+      ++i;
+      continue;
+    }
+    if (word.empty() || word[0] == '-') continue;
+    return "unknown command '" + word + "' (one of: " + names + ")";
+  }
+  return "a command is required (one of: " + names + ")";
+}
 
 }  // namespace
 
@@ -20,22 +50,6 @@ void AddTopLevelOptions(CLI::App& app, std::string& models_dir) {
   app.require_subcommand(1);
   app.add_option("--models", models_dir,
                  "Folder of the shipped data (default: " + DefaultModelsDir().string() + ")");
-}
-
-std::string OneLine(const std::string& message) {
-  std::string line;
-  for (const char c : message.substr(0, kMaxMessageBytes)) {
-    if (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f) {
-      line += c;
-    } else {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned char>(c));
-      line += c == '\n' ? std::string("\\n") : std::string(escaped);
-    }
-  }
-  if (message.size() > kMaxMessageBytes)
-    line += "... (" + std::to_string(message.size()) + " bytes)";
-  return line;
 }
 
 int FailBadInput(const std::string& message) {
@@ -53,6 +67,12 @@ std::optional<int> ParseCommandLine(CLI::App& app, int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    if (app.get_subcommands().empty()) return FailBadInput(UnknownCommand(app, argc, argv));
+    return FailBadInput(e.what());
+  }
+  try {
+    RefuseEmptyValues(app);
+  } catch (const InputError& e) {
     return FailBadInput(e.what());
   }
   return std::nullopt;

@@ -17,14 +17,12 @@ inline constexpr int kExitInternal = 3;
 // The `foresight` app with its description, --version and --models (into models_dir).
 void AddTopLevelOptions(CLI::App& app, std::string& models_dir);
 
-// One line: control characters (a name with a newline in it) escaped, cut after 2000 bytes.
-std::string OneLine(const std::string& message);
-
 // Prints "foresight: error: MESSAGE" as one line; returns kExitBadInput.
 int FailBadInput(const std::string& message);
 
 // Parses the command line; returns the exit code when parsing ends the run (help, version, a
-// parse error), nullopt when the command is to run.
+// parse error, an unknown command named as such, an empty value: never read as "flag not
+// given"), nullopt when the command is to run.
 std::optional<int> ParseCommandLine(CLI::App& app, int argc, char** argv);
 
 // Runs a command, mapping what it throws to the policy's line and exit code.

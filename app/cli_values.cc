@@ -66,10 +66,14 @@ std::function<void(int, int)> CommandProgress(const std::string& label, const st
   return LongCallProgress(label, unit, [log](int done, int total) { log->Report(done, total); });
 }
 
-void WriteReportFiles(const std::string& dir, const std::string& flag, const ReportFiles& files) {
+std::vector<ReportFile> ReportFolderFiles(const ReportFiles& files) {
   std::vector<ReportFile> named;
   for (const auto& [file, content] : files) named.push_back({file.filename().string(), content});
-  WriteReportFolder(dir, named, flag);
+  return named;
+}
+
+void WriteReportFiles(const std::string& dir, const std::string& flag, const ReportFiles& files) {
+  WriteReportFolder(dir, ReportFolderFiles(files), flag);
 }
 
 void CheckReportDir(const std::string& dir, const std::string& flag) {

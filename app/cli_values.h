@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "report/report_folder.h"
+
 namespace foresight {
 
 int ParseCount(const std::string& flag, const std::string& text, int lo, int hi);
@@ -34,8 +36,10 @@ std::function<void(int, int)> CommandProgress(const std::string& label, const st
 // `dir`, replace the previous report at once. Call it only once every content is computed.
 using ReportFiles = std::vector<std::pair<std::filesystem::path, std::string>>;
 void WriteReportFiles(const std::string& dir, const std::string& flag, const ReportFiles& files);
+// The same files as an OutputSet's folder content (report/output_set.h).
+std::vector<ReportFile> ReportFolderFiles(const ReportFiles& files);
 
-// Checks, without creating anything, that WriteReportFiles can succeed (CheckReportFolder), so
+// Checks, leaving nothing behind, that WriteReportFiles can succeed (CheckReportFolder), so
 // that a bad flag fails before the work instead of after it.
 void CheckReportDir(const std::string& dir, const std::string& flag);
 

@@ -9,7 +9,7 @@
 #include "common/checks.h"
 #include "common/error.h"
 #include "models/model_paths.h"
-#include "report/atomic_file.h"
+#include "report/output_set.h"
 
 namespace foresight {
 
@@ -67,6 +67,8 @@ nlohmann::ordered_json DecideJson(const DecideOptions& options,
 int RunDecide(const DecideOptions& options, const std::string& models_dir) {
   const std::filesystem::path models =
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+  OutputSet outputs;  // located and checked before the work
+  outputs.AddFile("--svg", options.svg_file);
   return WithDecision(options, models, [&](const DecisionRun& run) {
     // Everything is made before anything is written, so a failure leaves no file behind.
     const std::string printed =
@@ -74,8 +76,8 @@ int RunDecide(const DecideOptions& options, const std::string& models_dir) {
                                               nlohmann::ordered_json::error_handler_t::replace) +
                            "\n"
                      : DecisionText(run);
-    const std::string drawing = options.svg_file.empty() ? "" : DecisionSvg(run);
-    if (!options.svg_file.empty()) WriteFileAtomically(options.svg_file, drawing);
+    if (outputs.Has("--svg")) outputs.Put("--svg", DecisionSvg(run));
+    outputs.Commit();
     std::cout << printed << std::flush;
     if (!std::cout) throw InputError("cannot write to standard output");
     return 0;

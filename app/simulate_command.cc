@@ -8,7 +8,7 @@
 #include "common/error.h"
 #include "models/model_paths.h"
 #include "physics/physics_setup.h"
-#include "report/atomic_file.h"
+#include "report/output_set.h"
 
 namespace foresight {
 
@@ -78,6 +78,9 @@ SimulationPlan PlanSimulation(const SimulateOptions& options, const std::filesys
 int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
   const std::filesystem::path models =
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
+  OutputSet outputs;  // located and checked before the work, written together after it
+  outputs.AddFile("--svg", options.svg_file);
+  outputs.AddFile("--trace", options.trace_file);
   SimulationPlan plan = PlanSimulation(options, models);
   const auto& setup = plan.setup;
   KickTrialsRequest& request = plan.request;
@@ -102,10 +105,9 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
                                               nlohmann::ordered_json::error_handler_t::replace) +
                          "\n"
                    : SimulationText(run);
-  const std::string drawing = options.svg_file.empty() ? "" : SimulationSvg(run);
-  const std::string trace = options.trace_file.empty() ? "" : SimulationTraceCsv(run);
-  if (!options.svg_file.empty()) WriteFileAtomically(options.svg_file, drawing);
-  if (!options.trace_file.empty()) WriteFileAtomically(options.trace_file, trace);
+  if (outputs.Has("--svg")) outputs.Put("--svg", SimulationSvg(run));
+  if (outputs.Has("--trace")) outputs.Put("--trace", SimulationTraceCsv(run));
+  outputs.Commit();
   std::cout << printed << std::flush;
   if (!std::cout) throw InputError("cannot write to standard output");
   return 0;

@@ -194,12 +194,30 @@ std::vector<std::string> CheckCaseBase(const CaseBase& base) {
   std::vector<std::string> warnings;
   for (DefendingGoal goal : {DefendingGoal::kCyan, DefendingGoal::kYellow}) {
     const auto cases = base.Defending(goal);
+    // Grouped by the first case of each group: a case base of n copies of one case gives one
+    // line, not n^2 / 2 (memory and output grow with the cases, not with the pairs).
+    std::vector<bool> grouped(cases.size(), false);
     for (std::size_t i = 0; i < cases.size(); ++i) {
+      if (grouped[i]) continue;
+      std::vector<std::size_t> group = {i};
       for (std::size_t j = i + 1; j < cases.size(); ++j) {
-        if (Same(cases[i], cases[j])) {
-          warnings.push_back(cases[i].name + " and " + cases[j].name + " are identical");
+        if (!grouped[j] && Same(cases[i], cases[j])) {
+          grouped[j] = true;
+          group.push_back(j);
         }
       }
+      if (group.size() < 2) continue;
+      const std::size_t shown = std::min(group.size(), kMaxNamesPerOverlap);
+      std::string names;
+      for (std::size_t k = 0; k < shown; ++k) {
+        const bool last = k + 1 == shown && shown == group.size();
+        names += (k == 0 ? "" : last ? " and " : ", ") + cases[group[k]].name;
+      }
+      if (shown < group.size()) {
+        names += " and " + std::to_string(group.size() - shown) + " more";
+      }
+      warnings.push_back(names + " are identical" +
+                         (group.size() > 2 ? " (" + std::to_string(group.size()) + " cases)" : ""));
     }
   }
   return warnings;

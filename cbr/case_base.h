@@ -70,8 +70,10 @@ double BallScopeCoverage(const LoadedCaseBase& base, DefendingGoal goal, double 
 
 // Two stored cases for the same defending goal that are the same after a transform, e.g. a
 // hand-written case symmetric in y and its mirror_y copy. Not an error: such a case is legal and
-// its copy only costs retrieval time; CheckCaseBase reports them as warnings
-// ("A and B are identical") so the author can see them.
+// its copy only costs retrieval time; CheckCaseBase reports them as warnings, one per group of
+// identical cases ("A and B are identical", "A, B, C, D, E and 7 more are identical (12 cases)"),
+// so the author can see them.
+inline constexpr std::size_t kMaxNamesPerOverlap = 5;
 std::vector<std::string> CheckCaseBase(const CaseBase& base);
 
 }  // namespace foresight

@@ -9,6 +9,7 @@
 
 #include "cbr/gameplay_rules.h"
 #include "common/checks.h"
+#include "common/data_file.h"
 #include "common/error.h"
 #include "common/json_reader.h"
 #include "models/placement.h"
@@ -167,12 +168,9 @@ void ValidateCase(const Case& c, const CaseRules& rules) {
 
 Case LoadCaseFile(const std::filesystem::path& file, const CaseRules& rules) {
   // Read once for the name, then again with the name in every message's prefix.
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string() + ": cannot read the file");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string name = JsonDocument::Parse(text.str(), file.string()).Root().String("name");
-  const JsonDocument doc = JsonDocument::Parse(text.str(), file.string() + ": case " + name);
+  const std::string text = ReadDataFile(file);
+  const std::string name = JsonDocument::Parse(text, file.string()).Root().String("name");
+  const JsonDocument doc = JsonDocument::Parse(text, file.string() + ": case " + name);
   const JsonObject root = doc.Root();
   root.RejectUnknownKeys(
       {"name", "notes", "defending", "ball", "ball_scope", "teammates", "opponents"});

@@ -1,5 +1,7 @@
 #include "common/json_reader.h"
 
+#include "common/data_file.h"
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -171,23 +173,7 @@ JsonDocument JsonDocument::Parse(std::string_view text, std::string origin) {
 }
 
 JsonDocument JsonDocument::Load(const std::filesystem::path& file) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(file, ec);
-  if (std::filesystem::is_directory(status)) throw InputError(file.string() + ": is a directory");
-  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
-    throw InputError(file.string() + ": is not a regular file (a device or a pipe?)");
-  }
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot open file");
-  const std::uintmax_t size = std::filesystem::file_size(file, ec);
-  if (!ec && size > kMaxJsonBytes) {
-    throw InputError(file.string() + ": " + std::to_string(size) + " bytes, more than the " +
-                     std::to_string(kMaxJsonBytes) + " a data file may have");
-  }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw InputError(file.string() + ": cannot read file");
-  return Parse(buffer.str(), file.string());
+  return Parse(ReadDataFile(file, kMaxJsonBytes), file.string());
 }
 
 JsonObject JsonDocument::Root() const {

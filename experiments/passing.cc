@@ -134,10 +134,16 @@ PassingSetup LoadPassingSetup(const PassingRequest& request,
   if (s.scenarios.empty()) {
     for (int i = 1; i <= count; ++i) s.scenarios.push_back(i);
   }
-  for (int n : s.scenarios) {
+  for (std::size_t i = 0; i < s.scenarios.size(); ++i) {
+    const int n = s.scenarios[i];
     if (n < 1 || n > count) {
       throw InputError("--scenarios: scenario " + std::to_string(n) + " does not exist (the " +
                        s.config.name + " configuration has 1-" + std::to_string(count) + ")");
+    }
+    if (std::find(s.scenarios.begin(), s.scenarios.begin() + static_cast<std::ptrdiff_t>(i), n) !=
+        s.scenarios.begin() + static_cast<std::ptrdiff_t>(i)) {
+      throw InputError("--scenarios: scenario " + std::to_string(n) +
+                       " is listed twice (each scenario is played once)");
     }
   }
   s.trials = request.trials > 0 ? request.trials : s.config.default_trials;

@@ -17,6 +17,7 @@
 #include "common/checks.h"
 #include "common/error.h"
 #include "common/json_reader.h"
+#include "models/robot_model.h"
 
 namespace foresight {
 namespace {
@@ -39,8 +40,9 @@ KickStance ReadStance(const JsonObject& object) {
   object.RejectUnknownKeys({"base_height_m", "pose_deg"});
   KickStance stance;
   stance.base_height_m = object.Number("base_height_m");
-  if (!(stance.base_height_m > 0.0)) {
-    object.Fail("base_height_m", "must be > 0, got " + FormatNumber(stance.base_height_m));
+  if (!(stance.base_height_m > 0.0 && stance.base_height_m <= kMaxRobotLengthM)) {
+    object.Fail("base_height_m", "must be in (0, " + FormatNumber(kMaxRobotLengthM) + "], got " +
+                                     FormatNumber(stance.base_height_m));
   }
   const JsonObject pose = object.Object("pose_deg");
   for (const std::string& joint : pose.Keys()) {
@@ -112,10 +114,12 @@ void KickMotion::Validate(const std::string& file) const {
     throw InputError(file + ": " + field + ": " + problem);
   };
   if (name.empty()) fail("name", "must not be empty");
-  if (!std::isfinite(p_R_ball.x()))
-    fail("ball_x_m", "must be finite, got " + FormatNumber(p_R_ball.x()));
-  if (!std::isfinite(p_R_ball.y()))
-    fail("ball_y_m", "must be finite, got " + FormatNumber(p_R_ball.y()));
+  // The ball lies at the robot's foot: farther than a robot may be long is no kick.
+  const std::string within = "must be within " + FormatNumber(kMaxRobotLengthM) + " m of the robot";
+  if (!(std::abs(p_R_ball.x()) <= kMaxRobotLengthM))
+    fail("ball_x_m", within + ", got " + FormatNumber(p_R_ball.x()));
+  if (!(std::abs(p_R_ball.y()) <= kMaxRobotLengthM))
+    fail("ball_y_m", within + ", got " + FormatNumber(p_R_ball.y()));
   if (joints.empty()) fail("joints", "must list at least one joint");
   for (std::size_t j = 0; j < joints.size(); ++j) {
     const std::string field = "joints[" + std::to_string(j) + "]";

@@ -23,6 +23,7 @@
 #include <sstream>
 
 #include "common/checks.h"
+#include "common/data_file.h"
 #include "common/error.h"
 
 namespace foresight {
@@ -77,14 +78,7 @@ void Require(const std::filesystem::path& file, const std::string& element, Chec
 }
 
 std::string ReadText(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) Fail(file, "is a directory");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) Fail(file, "cannot open file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) Fail(file, "cannot read file");
-  return buffer.str();
+  return ReadDataFile(file);
 }
 
 // One line out of urdfdom's messages. Its message for a revolute joint without <limit> is
@@ -165,7 +159,8 @@ std::vector<Eigen::Vector3d> ReadMeshVertices(const std::filesystem::path& path,
                                               const std::filesystem::path& file,
                                               const std::string& element) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) Fail(file, element + ": file not found");
+  if (!std::filesystem::exists(path, ec)) Fail(file, element + ": file not found");
+  Require(file, element, [&] { RequireDataFile(path); });
   Assimp::Importer importer;
   const aiScene* scene = nullptr;
   try {
@@ -199,17 +194,24 @@ RobotShape ReadMeshShape(const urdf::Mesh& mesh, const std::filesystem::path& fi
     Fail(file, element + ": only paths relative to the URDF's folder are supported");
   }
   const Eigen::Vector3d scale(mesh.scale.x, mesh.scale.y, mesh.scale.z);
+  // A mirrored mesh (a negative factor) turns its faces inside out: mirror the file instead.
   for (int i = 0; i < 3; ++i) {
-    if (!std::isfinite(scale[i]) || scale[i] == 0.0) {
+    if (!(std::isfinite(scale[i]) && scale[i] > 0.0)) {
       Fail(file, element + ": scale " + std::string(1, "xyz"[i]) +
-                     ": must be finite and non-zero, got " + FormatNumber(scale[i]));
+                     ": must be finite and positive, got " + FormatNumber(scale[i]));
     }
   }
   RobotShape shape;
   shape.kind = RobotShape::Kind::kMesh;
   shape.mesh_file = (file.parent_path() / mesh.filename).lexically_normal();
   shape.mesh_vertices_S_m = ReadMeshVertices(shape.mesh_file, file, element);
-  for (Eigen::Vector3d& v : shape.mesh_vertices_S_m) v = v.cwiseProduct(scale);
+  for (Eigen::Vector3d& v : shape.mesh_vertices_S_m) {
+    v = v.cwiseProduct(scale);
+    if (!(v.cwiseAbs().maxCoeff() <= kMaxRobotLengthM)) {
+      Fail(file, element + ": scale: the scaled mesh reaches farther than " +
+                     FormatNumber(kMaxRobotLengthM) + " m from its origin (a unit error?)");
+    }
+  }
   return shape;
 }
 

@@ -164,6 +164,14 @@ void TrialVariation::Validate(const std::string& file) const {
     RequireNonNegative("trial_variation.placement_sigma_theta_deg",
                        placement_sigma_theta_rad * kRadToDeg);
     RequireNonNegative("trial_variation.motion_speed_sigma_rel", motion_speed_sigma_rel);
+    // A placement error larger than a robot, or a heading error beyond a half turn, is no error
+    // of walking up to a ball.
+    RequireInRange("trial_variation.placement_sigma_x_m", placement_sigma_x_m, 0.0,
+                   kMaxRobotLengthM);
+    RequireInRange("trial_variation.placement_sigma_y_m", placement_sigma_y_m, 0.0,
+                   kMaxRobotLengthM);
+    RequireInRange("trial_variation.placement_sigma_theta_deg",
+                   placement_sigma_theta_rad * kRadToDeg, 0.0, 180.0);
   });
   if (!(motion_speed_sigma_rel < 0.5)) {
     throw InputError(file + ": trial_variation.motion_speed_sigma_rel: must be < 0.5, got " +
@@ -186,7 +194,10 @@ RobotSpec LoadRobotSpec(const std::filesystem::path& file) {
   if (urdf.empty()) root.Fail("urdf", "must name the robot's URDF file");
   spec.urdf_file = Resolve(dir, urdf);
   spec.base_height_m = root.Number("base_height_m");
-  WithFile(where, [&] { RequirePositive("base_height_m", spec.base_height_m); });
+  WithFile(where, [&] {
+    RequirePositive("base_height_m", spec.base_height_m);
+    RequireInRange("base_height_m", spec.base_height_m, 0.0, kMaxRobotLengthM);
+  });
 
   const JsonObject pose = root.Object("standing_pose_deg");
   for (const std::string& joint : pose.Keys()) {
@@ -261,7 +272,8 @@ double Robot::BaseHeightM(const KickMotion& motion) const {
   return motion.stance.IsOwn() ? motion.stance.base_height_m : spec.base_height_m;
 }
 
-Robot LoadRobot(const std::string& name, const std::filesystem::path& models_dir) {
+std::filesystem::path RobotSpecFile(const std::string& name,
+                                    const std::filesystem::path& models_dir) {
   const std::filesystem::path robots_dir = DataFolderPath(models_dir, DataFolder::kRobots);
   const std::filesystem::path spec_file = robots_dir / name / "robot.json";
   std::error_code ec;
@@ -279,6 +291,11 @@ Robot LoadRobot(const std::string& name, const std::filesystem::path& models_dir
     throw InputError("no robot '" + name + "' in " + robots_dir.string() +
                      " (available: " + (available.empty() ? "none" : available) + ")");
   }
+  return spec_file;
+}
+
+Robot LoadRobot(const std::string& name, const std::filesystem::path& models_dir) {
+  const std::filesystem::path spec_file = RobotSpecFile(name, models_dir);
   Robot robot;
   robot.spec = LoadRobotSpec(spec_file);
   if (robot.spec.name != name) {

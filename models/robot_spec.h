@@ -89,4 +89,8 @@ struct Robot {
 // Loads models_dir/robots/<name>/robot.json and everything it names.
 Robot LoadRobot(const std::string& name, const std::filesystem::path& models_dir);
 
+// MODELS_DIR/robots/NAME/robot.json; InputError listing the robots there when NAME is none.
+std::filesystem::path RobotSpecFile(const std::string& name,
+                                    const std::filesystem::path& models_dir);
+
 }  // namespace foresight

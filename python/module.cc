@@ -6,8 +6,10 @@
 #include "app/calibrate_command.h"
 #include "app/cbr_command.h"
 #include "app/decide_command.h"
+#include "app/cli_values.h"
 #include "app/fidelity_command.h"
 #include "common/error.h"
+#include "common/one_line.h"
 #include "common/json_reader.h"
 #include "models/model_paths.h"
 #include "models/situation.h"
@@ -155,7 +157,15 @@ PYBIND11_MODULE(_foresight, m) {
             "Bullet physics, and case-based coordinated action selection. Each function returns what the command of the same name writes as "
             "JSON; bad input raises foresight.InputError with the command's one-line message.";
   m.attr("__version__") = FORESIGHT_VERSION;
-  py::register_exception<foresight::InputError>(m, "InputError", PyExc_ValueError);
+  // The command line's one-line message, cut as the command line cuts it (common/one_line.h).
+  static py::exception<foresight::InputError> input_error(m, "InputError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr raised) {
+    try {
+      if (raised) std::rethrow_exception(raised);
+    } catch (const foresight::InputError& e) {
+      PyErr_SetString(input_error.ptr(), foresight::OneLine(e.what()).c_str());
+    }
+  });
   m.def("models_dir", [](const std::optional<std::filesystem::path>& models) {
     return ModelsDir(models).string();
   }, py::arg("models") = py::none(), "The data folder the functions read (models/).");

@@ -1,8 +1,10 @@
 #include "report/atomic_file.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
@@ -12,23 +14,18 @@
 #include <string>
 
 #include "common/error.h"
-#include "report/signal_guard.h"
+#include "report/output_set.h"
 
 namespace foresight {
 namespace {
 
-// Devices, pipes and "-" take the content as a stream: there is nothing to rename into place,
-// and renaming over them would replace /dev/null or a FIFO with a regular file.
-void WriteStream(std::ostream& out, const std::string& name, std::string_view content) {
+void WriteToDevice(const std::filesystem::path& file, std::string_view content,
+                   const std::string& shown) {
+  std::ofstream out(file, std::ios::binary);
+  if (!out) throw InputError(shown + ": cannot write");
   out.write(content.data(), static_cast<std::streamsize>(content.size()));
   out.flush();
-  if (!out) throw InputError(name + ": write failed");
-}
-
-void WriteToDevice(const std::filesystem::path& file, std::string_view content) {
-  std::ofstream out(file, std::ios::binary);
-  if (!out) throw InputError(file.string() + ": cannot write");
-  WriteStream(out, file.string(), content);
+  if (!out) throw InputError(shown + ": write failed");
 }
 
 // /dev/stdout, /dev/stderr, /dev/fd/N and /proc/self/fd/N name a descriptor this process has
@@ -63,69 +60,105 @@ std::optional<int> OwnDescriptor(const std::filesystem::path& file) {
   return std::nullopt;
 }
 
-void WriteToDescriptor(int fd, const std::filesystem::path& file, std::string_view content) {
+void WriteToDescriptor(int fd, std::string_view content, const std::string& shown) {
   if (fd == 1) std::cout.flush();  // what was printed comes first
   if (fd == 2) std::cerr.flush();
   while (!content.empty()) {
     const ssize_t written = ::write(fd, content.data(), content.size());
     if (written < 0 && errno == EINTR) continue;
-    if (written <= 0) {
-      throw InputError(file.string() + ": write failed: " + std::strerror(errno));
-    }
+    if (written <= 0) throw InputError(shown + ": write failed: " + std::strerror(errno));
     content.remove_prefix(static_cast<std::size_t>(written));
   }
 }
 
-void WriteRegularFile(const std::filesystem::path& shown, const std::filesystem::path& file,
-                      std::string_view content) {
-  const SignalGuard hold_signals;  // a temporary file never outlives an interrupted run
-  const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : ".";
+// The folder of a regular output must exist and take a new file: a probe file is made and
+// removed (a read-only file system or a full inode table shows here, also for root).
+void CheckFolderTakesFiles(const std::filesystem::path& dir, const std::string& shown) {
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec)) {
-    throw InputError(shown.string() + ": cannot write: directory " + dir.string() +
-                     " does not exist");
+    throw InputError(shown + ": cannot write: directory " + dir.string() + " does not exist");
   }
-  std::filesystem::path temp = file;
-  temp += ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(shown.string() + ": cannot write file");
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.close();  // checked: a failed close can mean lost data
-    if (!out) {
-      std::filesystem::remove(temp, ec);
-      throw InputError(shown.string() + ": write failed");
-    }
+  static std::atomic<unsigned> probe_count{0};  // tells the probes of one process's threads apart
+  const std::filesystem::path probe =
+      dir / (".foresight-probe-file." + std::to_string(::getpid()) + "." + std::to_string(++probe_count));
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0 && errno != EEXIST) {
+    throw InputError(shown + ": cannot write in the folder " + dir.string() + ": " +
+                     std::strerror(errno));
   }
-  std::filesystem::rename(temp, file, ec);
-  if (ec) {
-    std::filesystem::remove(temp, ec);
-    throw InputError(shown.string() + ": cannot move the finished file into place");
+  if (fd >= 0) {
+    ::close(fd);
+    ::unlink(probe.c_str());
   }
 }
 
 }  // namespace
 
-void WriteFileAtomically(const std::filesystem::path& file, std::string_view content) {
-  // Streams leave no temporary file, so signals are held only around the regular file's write:
-  // opening a FIFO blocks until a reader comes, and Ctrl-C must still end the run then.
-  if (file == kStandardOutput) return WriteStream(std::cout, "standard output", content);
+FileTarget LocateOutputFile(const std::filesystem::path& file, const std::string& shown) {
+  FileTarget target;
+  if (file == kStandardOutput) {
+    target.kind = FileTarget::Kind::kDescriptor;
+    target.fd = 1;
+    return target;
+  }
   if (const std::optional<int> fd = OwnDescriptor(file)) {
-    return WriteToDescriptor(*fd, file, content);
+    target.kind = FileTarget::Kind::kDescriptor;
+    target.fd = *fd;
+    return target;
   }
   std::error_code ec;
   // A symbolic link stays a link: the file it points to is replaced, atomically.
-  std::filesystem::path target = file;
+  target.target = file;
   if (std::filesystem::is_symlink(std::filesystem::symlink_status(file, ec))) {
-    target = std::filesystem::weakly_canonical(file, ec);
-    if (ec) throw InputError(file.string() + ": cannot follow the symbolic link");
+    target.target = std::filesystem::weakly_canonical(file, ec);
+    if (ec) throw InputError(shown + ": cannot follow the symbolic link");
   }
-  const std::filesystem::file_status status = std::filesystem::status(target, ec);
-  if (std::filesystem::is_directory(status)) throw InputError(file.string() + ": is a directory");
+  const std::filesystem::file_status status = std::filesystem::status(target.target, ec);
+  if (std::filesystem::is_directory(status)) throw InputError(shown + ": is a directory");
   if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
-    return WriteToDevice(target, content);
+    target.kind = FileTarget::Kind::kStream;  // opened only when written: a FIFO waits
+    return target;
   }
-  WriteRegularFile(file, target, content);
+  CheckFolderTakesFiles(
+      target.target.has_parent_path() ? target.target.parent_path() : ".", shown);
+  return target;
+}
+
+void WriteNewFile(const std::filesystem::path& file, std::string_view content,
+                  const std::string& shown) {
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) throw InputError(shown + ": cannot write: " + std::strerror(errno));
+  std::string failure;
+  while (!content.empty()) {
+    const ssize_t written = ::write(fd, content.data(), content.size());
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) {
+      failure = written < 0 ? std::strerror(errno) : "nothing written";
+      break;
+    }
+    content.remove_prefix(static_cast<std::size_t>(written));
+  }
+  // A failed close can mean lost data (NFS reports a full disk there).
+  if (::close(fd) != 0 && failure.empty()) failure = std::strerror(errno);
+  if (!failure.empty()) {
+    ::unlink(file.c_str());
+    throw InputError(shown + ": write failed: " + failure);
+  }
+}
+
+void WriteStreamTarget(const FileTarget& target, std::string_view content,
+                       const std::string& shown) {
+  if (target.kind == FileTarget::Kind::kDescriptor) {
+    return WriteToDescriptor(target.fd, content, shown);
+  }
+  WriteToDevice(target.target, content, shown);
+}
+
+void WriteFileAtomically(const std::filesystem::path& file, std::string_view content) {
+  OutputSet outputs;
+  outputs.AddFile("", file);
+  outputs.Put("", std::string(content));
+  outputs.Commit();
 }
 
 }  // namespace foresight

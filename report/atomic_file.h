@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace foresight {
@@ -18,6 +19,26 @@ inline constexpr std::string_view kStandardOutput = "-";
 // /dev/stdout, /dev/stderr, /dev/fd/N and /proc/self/fd/N to that open descriptor, after what
 // was printed. Throws InputError naming the file when it cannot be written, or when it is a
 // directory.
+// (An OutputSet of this one file, report/output_set.h.)
 void WriteFileAtomically(const std::filesystem::path& file, std::string_view content);
+
+// The pieces OutputSet is made of.
+struct FileTarget {
+  enum class Kind { kRegular, kStream, kDescriptor };
+  Kind kind = Kind::kRegular;
+  std::filesystem::path target;  // a regular file: the file replaced (a link's target)
+  int fd = -1;                   // kDescriptor: 1 for "-" and /dev/stdout, ...
+};
+// Where `file` is written and how; `shown` starts the messages ("--svg: out/a.svg"). Throws
+// InputError for a directory and for a regular file whose folder does not exist or takes no
+// new file (found by making and removing a probe file). Opens nothing that could block.
+FileTarget LocateOutputFile(const std::filesystem::path& file, const std::string& shown);
+// Creates `file` (it must not exist) with `content`, checking every write and the close; on
+// failure removes it and throws InputError "SHOWN: write failed: REASON".
+void WriteNewFile(const std::filesystem::path& file, std::string_view content,
+                  const std::string& shown);
+// Writes a stream target (a device, a FIFO, an open descriptor).
+void WriteStreamTarget(const FileTarget& target, std::string_view content,
+                       const std::string& shown);
 
 }  // namespace foresight

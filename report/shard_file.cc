@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "common/checks.h"
+#include "common/data_file.h"
 #include "common/error.h"
 #include "common/json_reader.h"
 
@@ -23,16 +24,7 @@ std::string ReadShardText(const std::filesystem::path& dir, const std::filesyste
     throw InputError(dir.string() + ": no " + std::string(kShardFileName) +
                      " (not the --out of a run with --shard)");
   }
-  const auto size = std::filesystem::file_size(file, ec);
-  if (!ec && size > kMaxShardBytes) {
-    throw InputError(file.string() + ": " + std::to_string(size) + " bytes, more than the " +
-                     std::to_string(kMaxShardBytes) + " a shard file may have");
-  }
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (!in || in.bad()) throw InputError(file.string() + ": cannot read file");
-  return buffer.str();
+  return ReadDataFile(file, kMaxShardBytes);
 }
 
 ShardPart ParsePart(const std::filesystem::path& dir) {

@@ -191,7 +191,7 @@ CheckResult Run(const KickDirectionCheck& c, const CheckSpec& spec,
   PhysicsCalibrationSettings settings =
       CalibrationSettingsOf(c.robot, c.kicks, c.trials, spec, models, threads);
   settings.kick = c.kick;
-  settings.kick_field = spec.where + ": kick";
+  settings.kick_field = "kick";
   const PhysicsCalibration physics = RunPhysicsCalibration(settings, models);
   const PhysicsKickTrials& kick = physics.kicks.front();
   const int touched = static_cast<int>(kick.observations.size());
@@ -237,13 +237,26 @@ CheckResult Run(const CalibrationBandCheck& c, const CheckSpec& spec,
   return Result(ok, "fitted/committed: " + detail);
 }
 
+// A situation set's name as it is, a file relative to the spec's folder (as every file a spec
+// names).
+std::string SituationsOf(const FidelityFloorCheck& c, const CheckSpec& spec,
+                         const std::filesystem::path& models) {
+  const std::filesystem::path named(c.situations);
+  if (named.is_absolute() || !named.has_parent_path()) {
+    return std::filesystem::exists(DataFile(models, DataFolder::kFidelity, c.situations))
+               ? c.situations
+               : (spec.dir / named).string();
+  }
+  return (spec.dir / named).string();
+}
+
 CheckResult Run(const FidelityFloorCheck& c, const CheckSpec& spec,
                 const std::filesystem::path& models, int threads) {
   const std::filesystem::path kicks =
       ResolveModelFile(c.kicks, DataFolder::kKicks, spec.dir, models);
   SituationOverrides overrides;
   overrides.kicks_file = kicks;
-  const FidelitySet set = LoadFidelitySet(c.situations, models, overrides);
+  const FidelitySet set = LoadFidelitySet(SituationsOf(c, spec, models), models, overrides);
   FidelitySettings settings;
   settings.base = spec.base;
   settings.physics_trials = c.trials;
@@ -258,10 +271,53 @@ CheckResult Run(const FidelityFloorCheck& c, const CheckSpec& spec,
                         Fixed(c.max_regret, 4) + ")");
 }
 
+// Loading what a check reads, without running it: every check of a spec is prepared before the
+// first runs, so a bad file or name fails at once, not after minutes of other checks.
+void Prepare(const FreeRollCheck& c, const CheckSpec& spec, const std::filesystem::path& models) {
+  LoadUniformWorld(c.field, spec, models);
+}
+void Prepare(const NoTunnellingCheck& c, const CheckSpec& spec,
+             const std::filesystem::path& models) {
+  LoadUniformWorld(c.field, spec, models);
+}
+void Prepare(const ReboundCheck& c, const CheckSpec& spec, const std::filesystem::path& models) {
+  LoadUniformWorld(c.field, spec, models);
+}
+void Prepare(const RobotReboundCheck& c, const CheckSpec& spec,
+             const std::filesystem::path& models) {
+  LoadUniformWorld(c.field, spec, models);
+  const Robot robot = LoadRobot(c.robot, models);
+  if (!robot.model.FindLink(c.link)) {
+    throw InputError("link: " + robot.spec.name + " has no link '" + c.link + "'");
+  }
+}
+void Prepare(const KickDirectionCheck& c, const CheckSpec& spec,
+             const std::filesystem::path& models) {
+  PhysicsCalibrationSettings settings =
+      CalibrationSettingsOf(c.robot, c.kicks, c.trials, spec, models, 1);
+  settings.kick = c.kick;
+  settings.kick_field = "kick";
+  PlanPhysicsCalibration(settings, models);
+}
+void Prepare(const CalibrationBandCheck& c, const CheckSpec& spec,
+             const std::filesystem::path& models) {
+  PlanPhysicsCalibration(CalibrationSettingsOf(c.robot, c.kicks, c.trials, spec, models, 1),
+                         models);
+}
+void Prepare(const FidelityFloorCheck& c, const CheckSpec& spec,
+             const std::filesystem::path& models) {
+  SituationOverrides overrides;
+  overrides.kicks_file = ResolveModelFile(c.kicks, DataFolder::kKicks, spec.dir, models);
+  LoadFidelitySet(SituationsOf(c, spec, models), models, overrides);
+}
+
 }  // namespace
 
 void FreeRollCheck::Validate() const {
-  RequirePositive("speed_mps", speed_mps);
+  RequireInRange("speed_mps", speed_mps, 0.05, kMaxCheckSpeedMps);
+  RequireInRange("heading_deg", heading_deg, -360.0, 360.0);
+  RequireInRange("max_error_rel", max_error_rel, 0.0, 1.0);
+  RequireInRange("max_lateral_m", max_lateral_m, 0.0, kMaxCheckLateralM);
 }
 
 void NoTunnellingCheck::Validate() const {
@@ -286,19 +342,28 @@ void RobotReboundCheck::Validate() const {
 
 void KickDirectionCheck::Validate() const {
   RequireInRange("trials", trials, kMinCheckTrials, kMaxCheckTrials);
+  RequireInRange("max_error_deg", max_error_deg, 0.0, 180.0);
 }
 
 void CalibrationBandCheck::Validate() const {
   RequireInRange("trials", trials, kMinCheckTrials, kMaxCheckTrials);
   RequireInRange("seed", static_cast<double>(seed), 0.0, kMaxCheckSeed);
+  RequireInRange("band_rel", band_rel, 0.0, 1.0);
+  RequireInRange("band_deg", band_deg, 0.0, 180.0);
 }
 
 void FidelityFloorCheck::Validate() const {
   RequireInRange("trials", trials, kMinCheckTrials, kMaxCheckTrials);
+  RequireInRange("min_tau_b", min_tau_b, -1.0, 1.0);
+  RequireInRange("max_regret", max_regret, 0.0, 1.0);
 }
 
 std::string_view KindName(const CheckKind& kind) {
   return std::visit([](const auto& check) { return check.kKind; }, kind);
+}
+
+void PrepareCheck(const CheckSpec& spec, const std::filesystem::path& models_dir) {
+  std::visit([&](const auto& check) { Prepare(check, spec, models_dir); }, spec.kind);
 }
 
 CheckResult RunCheck(const CheckSpec& spec, const std::filesystem::path& models_dir, int threads) {

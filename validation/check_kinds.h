@@ -31,6 +31,10 @@ inline constexpr int kMinCheckTrials = 2;
 inline constexpr int kMaxCheckTrials = 100000;
 inline constexpr int kMaxCheckPhases = 1000;
 inline constexpr double kMaxCheckSeed = 9007199254740992.0;  // 2^53: a JSON number holds it exactly
+// Limits of meaning, not of the physics: a free roll faster than any kick of the shipped robots
+// (the rebound checks' own limit) and a line error larger than the field.
+inline constexpr double kMaxCheckSpeedMps = 20.0;
+inline constexpr double kMaxCheckLateralM = 100.0;
 
 // A ball set rolling on a uniform carpet without edges (the field's physics file, its variation
 // switched off) stops at v^2 / 2a within max_error_rel and within max_lateral_m of its line.
@@ -140,6 +144,10 @@ struct CheckSpec {
   std::filesystem::path dir;  // the spec file's folder (file references are relative to it)
   std::optional<RobotBase> base;  // `check --base`: the kicking robot's base in every check
 };
+
+// Loads every file the check reads and checks every name it gives, without running it;
+// InputError on files that do not load.
+void PrepareCheck(const CheckSpec& spec, const std::filesystem::path& models_dir);
 
 // Runs one check (threads: for the physics trials); InputError on files that do not load.
 CheckResult RunCheck(const CheckSpec& spec, const std::filesystem::path& models_dir, int threads);

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "common/checks.h"
+#include "common/data_file.h"
 #include "common/error.h"
 #include "common/geometry.h"
 
@@ -219,14 +220,7 @@ KickObservation ObservationOfRow(const Row& row, double deceleration, ObservedRo
 
 ObservedKicks ReadObservedKicks(const std::filesystem::path& file,
                                 double assumed_deceleration_mps2) {
-  std::error_code ec;
-  std::ifstream in(file, std::ios::binary);
-  if (!std::filesystem::is_regular_file(file, ec) || !in) {
-    throw InputError(file.string() + ": cannot read the file");
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  std::vector<CsvRecord> records = SplitCsv(text.str(), file.string());
+  std::vector<CsvRecord> records = SplitCsv(ReadDataFile(file), file.string());
   if (records.empty() || records.front().line != 1) {
     throw InputError(file.string() + ": empty file, no header line");
   }

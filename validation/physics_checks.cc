@@ -232,10 +232,23 @@ CheckSuite LoadCheckSuite(const std::filesystem::path& file) {
 std::vector<CheckResult> RunChecks(const CheckSuite& suite, const std::filesystem::path& models_dir,
                                    int threads,
                                    const std::function<void(const CheckResult&)>& on_result) {
+  // Every check's files and names before the first check runs.
+  for (const CheckSpec& spec : suite.checks) {
+    try {
+      PrepareCheck(spec, models_dir);
+    } catch (const InputError& e) {
+      throw InputError(spec.where + " (check '" + spec.name + "'): " + e.what());
+    }
+  }
   std::vector<CheckResult> results;
   for (const CheckSpec& spec : suite.checks) {
     const auto start = std::chrono::steady_clock::now();
-    CheckResult result = RunCheck(spec, models_dir, threads);
+    CheckResult result;
+    try {
+      result = RunCheck(spec, models_dir, threads);
+    } catch (const InputError& e) {
+      throw InputError(spec.where + " (check '" + spec.name + "'): " + e.what());
+    }
     result.name = spec.name;
     result.kind = std::string(KindName(spec.kind));
     result.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

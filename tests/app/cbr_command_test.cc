@@ -162,7 +162,7 @@ TEST_F(CbrCommandTest, CheckOnTheShippedBaseCountsAndPasses) {
   EXPECT_EQ(r.err, "");
   EXPECT_THAT(r.out, HasSubstr("hand-written cases: 36\n"));
   EXPECT_THAT(r.out, HasSubstr("stored cases: 144 (72 defending cyan, 72 defending yellow)\n"));
-  EXPECT_THAT(r.out, HasSubstr("overlapping stored cases: 0\n"));
+  EXPECT_THAT(r.out, HasSubstr("groups of identical stored cases: 0\n"));
   EXPECT_THAT(r.out, HasSubstr("cases blocked by their own opponents: 0 of 36\n"));
   EXPECT_THAT(r.out, HasSubstr("cases asking more than their kicks carry (aibo_ers7, reach at 2 "
                                "sd): 0 of 36\n"));
@@ -301,7 +301,57 @@ TEST_F(CbrCommandTest, CheckPassesOnCasesThatAreFreeAndWarnsOfOverlaps) {
   const RunResult warn = Cbr({"check", "--case-base", (work() / "sym_base.json").string()});
   EXPECT_EQ(warn.exit_code, 0) << warn.out << warn.err;
   EXPECT_THAT(warn.out, HasSubstr("warning: "));
-  EXPECT_THAT(warn.out, Not(HasSubstr("overlapping stored cases: 0")));
+  EXPECT_THAT(warn.out, Not(HasSubstr("groups of identical stored cases: 0")));
+}
+
+// Many copies of one case: one line per group of identical cases, at most 20 groups, and how
+// many more there are (the check printed every pair: 2,034 copies gave 8 M lines).
+TEST_F(CbrCommandTest, CheckGroupsIdenticalCasesAndCapsItsOutput) {
+  const nlohmann::json c = nlohmann::json::parse(ReadFile(ShippedCase("center_individual")));
+  nlohmann::json base = nlohmann::json::parse(ReadFile(SmallBase({})));
+  base["cases"] = nlohmann::json::array();
+  for (int i = 0; i < 60; ++i) {  // 60 copies of one case
+    nlohmann::json copy = c;
+    copy["name"] = "copy" + std::to_string(i);
+    Write("copy" + std::to_string(i) + ".json", copy.dump());
+    base["cases"].push_back((work() / ("copy" + std::to_string(i) + ".json")).string());
+  }
+  Write("copies.json", base.dump());
+  const RunResult copies = Cbr({"check", "--case-base", (work() / "copies.json").string()});
+  EXPECT_THAT(copies.out, HasSubstr("copy0, copy1, copy2, copy3, copy4 and 55 more are "
+                                    "identical (60 cases)\n"));
+  EXPECT_LE(CountOf(copies.out, "warning: "), 8) << copies.out;
+  base["cases"] = nlohmann::json::array();
+  for (int i = 0; i < 30; ++i) {  // 30 pairs of twins, each pair elsewhere
+    for (const std::string twin : {"a", "b"}) {
+      nlohmann::json copy = c;
+      copy["name"] = twin + std::to_string(i);
+      copy["ball"]["y_m"] = copy["ball"]["y_m"].get<double>() + 0.01 * i;
+      Write(twin + std::to_string(i) + ".json", copy.dump());
+      base["cases"].push_back((work() / (twin + std::to_string(i) + ".json")).string());
+    }
+  }
+  Write("twins.json", base.dump());
+  const RunResult twins = Cbr({"check", "--case-base", (work() / "twins.json").string()});
+  EXPECT_EQ(CountOf(twins.out, " are identical"), 20) << twins.out;
+  EXPECT_THAT(twins.out, HasSubstr("more groups of identical stored cases not listed\n"));
+}
+
+TEST_F(CbrCommandTest, ControlCharactersInCaseNamesArePrintedEscaped) {
+  const nlohmann::json c = nlohmann::json::parse(ReadFile(ShippedCase("center_individual")));
+  nlohmann::json base = nlohmann::json::parse(ReadFile(SmallBase({})));
+  base["cases"] = nlohmann::json::array();
+  for (const std::string name : {std::string("evil\x1b[2J"), std::string("twin")}) {
+    nlohmann::json copy = c;
+    copy["name"] = name;
+    const std::string file = name == "twin" ? "twin.json" : "evil.json";
+    Write(file, copy.dump());
+    base["cases"].push_back((work() / file).string());
+  }
+  Write("evil_base.json", base.dump());
+  const RunResult r = Cbr({"check", "--case-base", (work() / "evil_base.json").string()});
+  EXPECT_THAT(r.out, HasSubstr("evil\\x1b[2J"));
+  EXPECT_EQ(r.out.find('\x1b'), std::string::npos) << "a raw escape sequence was printed";
 }
 
 TEST_F(CbrCommandTest, CheckOfABrokenCaseBaseIsOneLineExitTwo) {

@@ -175,6 +175,8 @@ TEST_F(ExperimentCommandTest, PassingBadScenarioOrParameterFileIsOneLineExitTwoA
                  "bad_scenario.json: ball.x_m: must be a number");
   ExpectBadInput({"passing", "--config", "dg", "--scenarios", "5", "--out", "out"},
                  "--scenarios: scenario 5 does not exist");
+  ExpectBadInput({"passing", "--config", "dg", "--scenarios", "1,1", "--out", "out"},
+                 "--scenarios: scenario 1 is listed twice");
   ExpectBadInput({"passing", "--config", "dg", "--team", "robots", "--out", "out"},
                  "--team: unknown team 'robots'");
   ExpectBadInput({"passing", "--config", "3d", "--out", "out"}, "3d.json");

@@ -211,11 +211,24 @@ TEST(KickMotionTest, LoadsItsOwnStance) {
 TEST(KickMotionTest, AStanceNeedsAPositiveHeightAndOnlyItsFields) {
   const auto low = MotionFile("stance_height", R"("ball_x_m": 0.17,)",
                               R"("stance": {"base_height_m": 0, "pose_deg": {}}, "ball_x_m": 0.17,)");
-  EXPECT_EQ(LoadError(low), low.string() + ": stance.base_height_m: must be > 0, got 0");
+  EXPECT_EQ(LoadError(low), low.string() + ": stance.base_height_m: must be in (0, 10], got 0");
+  const auto high = MotionFile(
+      "stance_too_high", R"("ball_x_m": 0.17,)",
+      R"("stance": {"base_height_m": 1e308, "pose_deg": {}}, "ball_x_m": 0.17,)");
+  EXPECT_THAT(LoadError(high), HasSubstr("stance.base_height_m: must be in (0, 10], got 1e+308"));
   const auto extra =
       MotionFile("stance_extra", R"("ball_x_m": 0.17,)",
                  R"("stance": {"base_height_m": 0.1, "pose_deg": {}, "tilt": 1}, "ball_x_m": 0.17,)");
   EXPECT_THAT(LoadError(extra), StartsWith(extra.string() + ": stance.tilt: "));
+}
+
+TEST(KickMotionTest, TheBallLiesWithinARobotsLengthOfIt) {
+  for (const std::string& value : {"1e308", "-11", "10.5"}) {
+    const auto file = MotionFile("far_ball", R"("ball_x_m": 0.17,)", "\"ball_x_m\": " + value + ",");
+    EXPECT_THAT(LoadError(file), HasSubstr(file.string() + ": ball_x_m: must be within 10 m of "
+                                           "the robot, got "))
+        << value;
+  }
 }
 
 TEST(KickMotionTest, LoadsItsBalanceAndRampsItSmoothly) {
@@ -333,7 +346,7 @@ TEST(KickMotionTest, ValidateRejectsNonFiniteValuesMadeInCode) {
   motion.keyframes[1].positions_rad[0] = 1.0;
   motion.p_R_ball.y() = std::numeric_limits<double>::infinity();
   EXPECT_EQ(InputErrorMessage([&] { motion.Validate("code"); }),
-            "code: ball_y_m: must be finite, got inf");
+            "code: ball_y_m: must be within 10 m of the robot, got inf");
 }
 
 TEST(KickMotionTest, MissingFileIsNamed) {

@@ -432,7 +432,26 @@ TEST(RobotModelTest, ZeroMeshScaleIsRejected) {
   EXPECT_EQ(LoadError(file), file.string() +
                                  ": link foot: collision mesh robot_model_zero_scale_cube.obj: "
                                  "scale z: must "
-                                 "be finite and non-zero, got 0");
+                                 "be finite and positive, got 0");
+}
+
+// A mirrored, absurd or huge scale: refused with the mesh named, never played.
+TEST(RobotModelTest, MeshScaleHasARange) {
+  const struct {
+    const char* name;
+    const char* scale;
+    const char* message;
+  } cases[] = {
+      {"mirrored", R"(scale="-1 1 1")", "scale x: must be finite and positive, got -1"},
+      {"huge", R"(scale="1e308 1 1")", "the scaled mesh reaches farther than 10 m"},
+      {"hundredfold", R"(scale="100 100 100")", "the scaled mesh reaches farther than 10 m"},
+  };
+  for (const auto& c : cases) {
+    const auto file = TesterUrdf(std::string("scale_") + c.name, R"(scale="0.5 1 2")", c.scale);
+    EXPECT_THAT(LoadError(file), ::testing::HasSubstr(c.message)) << c.name;
+    EXPECT_THAT(LoadError(file), ::testing::StartsWith(file.string() + ": link foot: collision mesh"))
+        << c.name;
+  }
 }
 
 TEST(RobotModelTest, TwoRootsAreRejected) {

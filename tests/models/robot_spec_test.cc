@@ -2,6 +2,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -148,6 +149,27 @@ TEST(RobotSpecTest, BaseHeightMustBePositive) {
   const std::string message =
       SpecError("zero_height", "\"base_height_m\": 0.3", "\"base_height_m\": 0", &file);
   EXPECT_EQ(message, file.string() + ": base_height_m: must be > 0, got 0");
+}
+
+TEST(RobotSpecTest, BaseHeightHasARange) {
+  std::filesystem::path file;
+  const std::string message =
+      SpecError("huge_height", "\"base_height_m\": 0.3", "\"base_height_m\": 1e308", &file);
+  EXPECT_EQ(message, file.string() + ": base_height_m: must be in [0, 10], got 1e+308");
+}
+
+// A URDF that is a device or a FIFO: one line, before anything is opened (a FIFO would block,
+// /dev/zero would be read until memory runs out).
+TEST(RobotSpecTest, AUrdfThatIsNotARegularFileIsRefused) {
+  const std::filesystem::path fifo_models = TesterModels("urdf_fifo");
+  const std::filesystem::path fifo = fifo_models / "robots" / "tester" / "pipe.urdf";
+  std::filesystem::remove(fifo);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  for (const std::string& urdf : {std::string("/dev/zero"), fifo.string()}) {
+    const std::filesystem::path models = TesterModels(
+        "urdf_device", {"robot.json", "\"urdf\": \"tester.urdf\"", "\"urdf\": \"" + urdf + "\""});
+    EXPECT_EQ(RobotError(models), urdf + ": is not a regular file (a device or a pipe?)");
+  }
 }
 
 TEST(RobotSpecTest, NegativePlacementSigmaIsRejected) {

@@ -28,9 +28,7 @@ std::string Read(const fs::path& file) {
 }
 
 std::set<std::string> Names(const fs::path& dir) {
-  std::set<std::string> names;
-  for (const auto& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename());
-  return names;
+  return testing::FolderNames(dir);
 }
 
 std::string ErrorOf(const std::function<void()>& f) {
@@ -94,6 +92,79 @@ TEST(ReportFolderTest, ConcurrentWritersNeverMix) {
   EXPECT_EQ(Read(dir / "b.txt"), a);
   EXPECT_EQ(Read(dir / "c.txt"), a);
   EXPECT_EQ(Names(dir.parent_path()), (std::set<std::string>{"report"}));
+}
+
+// The marker lists what foresight wrote; everything else in the folder is the user's and stays.
+TEST(ReportFolderTest, TheMarkerListsTheReportsFilesAndTheUsersFilesAreKept) {
+  const fs::path dir = FreshDir("kept") / "report";
+  const std::vector<ReportFile> first = {{"a.json", "1"}, {"old.csv", "x"}};
+  WriteReportFolder(dir, first, "--out");
+  EXPECT_EQ(Read(dir / kReportMarker), std::string(kMarkerHeader) + "\na.json\nold.csv\n");
+  std::ofstream(dir / "my_notes.txt") << "precious";
+  fs::create_directory(dir / "my_plots");
+  std::ofstream(dir / "my_plots" / "p.svg") << "<svg/>";
+  const std::vector<ReportFile> second = {{"a.json", "2"}};
+  WriteReportFolder(dir, second, "--out");
+  EXPECT_EQ(Names(dir), (std::set<std::string>{"a.json", "my_notes.txt", "my_plots",
+                                               std::string(kReportMarker)}));
+  EXPECT_EQ(Read(dir / "a.json"), "2");
+  EXPECT_EQ(Read(dir / "my_notes.txt"), "precious");
+  EXPECT_EQ(Read(dir / "my_plots" / "p.svg"), "<svg/>");
+  EXPECT_EQ(Read(dir / kReportMarker), std::string(kMarkerHeader) + "\na.json\n");
+  EXPECT_EQ(Names(dir.parent_path()), (std::set<std::string>{"report"}));
+}
+
+TEST(ReportFolderTest, AnEmptyOrForeignMarkerDoesNotMakeAFolderForesights) {
+  for (const std::string& marker : {std::string(), std::string("mine, not foresight's\n")}) {
+    const fs::path dir = FreshDir("foreign_marker");
+    std::ofstream(dir / kReportMarker) << marker;
+    std::ofstream(dir / "thesis.tex") << "precious";
+    const std::vector<ReportFile> files = {{"thesis.tex", "overwritten"}};
+    EXPECT_THAT(ErrorOf([&] { CheckReportFolder(dir, "--out"); }),
+                ::testing::HasSubstr("holds files that no foresight report wrote"));
+    EXPECT_NE(ErrorOf([&] { WriteReportFolder(dir, files, "--out"); }), "");
+    EXPECT_EQ(Read(dir / "thesis.tex"), "precious");
+    EXPECT_EQ(Read(dir / kReportMarker), marker);
+  }
+}
+
+TEST(ReportFolderTest, AUsersFileWithTheNameOfAReportFileIsRefusedNotReplaced) {
+  const fs::path dir = FreshDir("clash") / "report";
+  const std::vector<ReportFile> first = {{"a.json", "1"}};
+  WriteReportFolder(dir, first, "--out");
+  std::ofstream(dir / "b.json") << "the user's";
+  const std::vector<ReportFile> second = {{"a.json", "2"}, {"b.json", "report"}};
+  EXPECT_THAT(ErrorOf([&] { WriteReportFolder(dir, second, "--out"); }),
+              ::testing::HasSubstr("'b.json', which foresight did not write"));
+  EXPECT_EQ(Read(dir / "b.json"), "the user's");
+  EXPECT_EQ(Read(dir / "a.json"), "1");
+  EXPECT_EQ(Names(dir.parent_path()), (std::set<std::string>{"report"}));
+}
+
+// A report of the earlier marker ("the folder is replaced whole") is foresight's; of its files
+// those the new report writes are replaced, the others kept (nothing says whose they are).
+TEST(ReportFolderTest, AFolderWithTheEarlierMarkerIsReplacedKeepingWhatTheReportDoesNotWrite) {
+  const fs::path dir = FreshDir("legacy") / "report";
+  fs::create_directories(dir);
+  std::ofstream(dir / kReportMarker) << "written by foresight; the folder is replaced whole\n";
+  std::ofstream(dir / "a.json") << "old";
+  std::ofstream(dir / "notes.txt") << "kept";
+  const std::vector<ReportFile> files = {{"a.json", "new"}};
+  WriteReportFolder(dir, files, "--out");
+  EXPECT_EQ(Read(dir / "a.json"), "new");
+  EXPECT_EQ(Read(dir / "notes.txt"), "kept");
+}
+
+TEST(ReportFolderTest, AParentThatCannotBeCreatedIsFoundBeforeTheWorkAndNothingIsLeft) {
+  const fs::path parent = FreshDir("uncreatable");
+  std::ofstream(parent / "a_file") << "x";
+  EXPECT_THAT(ErrorOf([&] { CheckReportFolder(parent / "a_file" / "sub" / "report", "--out"); }),
+              ::testing::HasSubstr("is a file, not a folder"));
+  const std::string long_name(300, 'n');  // longer than NAME_MAX: mkdir refuses it
+  EXPECT_THAT(ErrorOf([&] { CheckReportFolder(parent / long_name / "report", "--out"); }),
+              ::testing::HasSubstr("cannot create the folder"));
+  CheckReportFolder(parent / "new" / "deeper" / "report", "--out");  // creatable: made, removed
+  EXPECT_EQ(Names(parent), (std::set<std::string>{"a_file"}));
 }
 
 }  // namespace

@@ -40,7 +40,10 @@ TEST(CheckKindsTest, KindNamesAreTheSpecsWords) {
 TEST(CheckKindsTest, ValidateNamesTheFieldAndTheValue) {
   FreeRollCheck roll;
   roll.speed_mps = -1.0;
-  EXPECT_EQ(ValidateError(roll), "speed_mps: must be > 0, got -1");
+  EXPECT_EQ(ValidateError(roll), "speed_mps: must be in [0.05, 20], got -1");
+  roll.speed_mps = 1.0;
+  roll.heading_deg = 1e308;
+  EXPECT_EQ(ValidateError(roll), "heading_deg: must be in [-360, 360], got 1e+308");
   KickDirectionCheck direction;
   direction.trials = 1;
   EXPECT_EQ(ValidateError(direction), "trials: must be in [2, 100000], got 1");

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <fstream>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include "common/error.h"
@@ -101,6 +103,12 @@ TEST(PhysicsChecksTest, BadSpecsNameFileAndField) {
       {"speeds.json",
        R"({"name": "a", "kind": "rebound", "field": "spl", "target": "post", "speeds_mps": [], "phases": 3, "max_error_rel": 0.05, "min_error_mps": 0.005})",
        "checks[0].speeds_mps: must list at least one speed"},
+      {"heading.json",
+       R"({"name": "a", "kind": "free_roll", "field": "spl", "speed_mps": 1.0, "heading_deg": 1e308, "max_error_rel": 0.02, "max_lateral_m": 0.01})",
+       "checks[0].heading_deg: must be in [-360, 360], got 1e+308"},
+      {"band.json",
+       R"({"name": "a", "kind": "calibration_band", "robot": "nao", "kicks": "nao", "trials": 20, "seed": 1, "band_rel": -1, "band_deg": 2})",
+       "checks[0].band_rel"},
   };
   for (const auto& c : cases) {
     const auto file = Spec(c.name, c.checks);
@@ -169,6 +177,46 @@ TEST(PhysicsChecksTest, RobotReboundPassesWithTheMaterialsAndFailsWithoutATolera
   const std::string bad_link = R"({"name": "paw", "kind": "robot_rebound", "field": "four_legged", "robot": "aibo_ers7", "link": "tail", "speeds_mps": [1], "max_error_rel": 0.1})";
   EXPECT_THROW(RunChecks(LoadCheckSuite(Spec("tail.json", bad_link)), testing::ModelsDir(), 1, {}),
                InputError);
+}
+
+// Every check's files and names are read before the first check runs: a spec whose second check
+// names a field that does not exist fails at once, naming the file and the check, and runs none.
+TEST(PhysicsChecksTest, EveryCheckIsPreparedBeforeAnyRuns) {
+  const std::string bad_field =
+      R"({"name": "bad_field", "kind": "free_roll", "field": "no_such_field", "speed_mps": 1.0, "heading_deg": 0, "max_error_rel": 0.02, "max_lateral_m": 0.01})";
+  const std::string bad_link =
+      R"({"name": "bad_link", "kind": "robot_rebound", "field": "spl", "robot": "nao", "link": "tail", "speeds_mps": [1.0], "max_error_rel": 0.1})";
+  const std::string bad_kick =
+      R"({"name": "bad_kick", "kind": "kick_direction", "robot": "nao", "kick": "bicycle", "kicks": "nao", "trials": 2, "max_error_deg": 5})";
+  for (const auto& [name, second] : {std::pair{"field", bad_field}, std::pair{"link", bad_link},
+                                     std::pair{"kick", bad_kick}}) {
+    const auto file = Spec(std::string("prepared_") + name + ".json", Roll("0.02") + "," + second);
+    const CheckSuite suite = LoadCheckSuite(file);
+    int ran = 0;
+    std::string message = "no error";
+    try {
+      RunChecks(suite, testing::ModelsDir(), 1, [&](const CheckResult&) { ++ran; });
+    } catch (const InputError& e) {
+      message = e.what();
+    }
+    EXPECT_EQ(ran, 0) << name << ": a check ran before the spec was whole";
+    EXPECT_THAT(message, HasSubstr(file.string() + ": checks[1] (check 'bad_")) << name;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << name;
+  }
+}
+
+// A file a spec names is found beside the spec, wherever the command runs.
+TEST(PhysicsChecksTest, SpecPathsAreRelativeToTheSpecsFolder) {
+  const std::filesystem::path dir = testing::FreshTempDir("spec_paths");
+  std::ofstream(dir / "my_set.json")
+      << R"({"name": "mine", "rotations_deg": [0], "situations": [{"class": "open_field", "file": ")"
+      << (testing::ModelsDir() / "situations" / "open_goal.json").string() << R"("}]})";
+  std::filesystem::copy_file(testing::ModelsDir() / "kicks" / "nao.json", dir / "my_kicks.json");
+  std::ofstream(dir / "spec.json")
+      << R"({"checks": [{"name": "floor", "kind": "fidelity_floor", "situations": "my_set.json", "kicks": "my_kicks.json", "trials": 2, "min_tau_b": 0, "max_regret": 1}]})";
+  const CheckSuite suite = LoadCheckSuite(dir / "spec.json");
+  ASSERT_NE(std::filesystem::current_path(), dir);
+  EXPECT_NO_THROW(PrepareCheck(suite.checks.front(), testing::ModelsDir()));
 }
 
 TEST(PhysicsChecksTest, JUnitXmlCountsFailuresAndEscapes) {
