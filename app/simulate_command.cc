@@ -16,6 +16,10 @@ namespace {
 
 constexpr int kMaxTrials = 1000000;
 constexpr int kMaxThreads = 1024;
+// --view-rate: a frame per second at least (a slower replay shows nothing of a kick); at most
+// one per kick step of any physics file in models/physics (1 ms), beyond which frames repeat.
+constexpr double kMinViewRateHz = 1.0;
+constexpr double kMaxViewRateHz = 1000.0;
 
 }  // namespace
 
@@ -37,6 +41,11 @@ void AddSimulateCommand(CLI::App& app, SimulateOptions& options) {
   cmd->add_flag("--json", options.json, "Print every trial and the summary as JSON");
   cmd->add_option("--svg", options.svg_file, "Draw the rest positions on the field");
   cmd->add_option("--trace", options.trace_file, "Write the balls' trajectories as CSV");
+  cmd->add_option("--view", options.view_file,
+                  "Write a 3D viewer page (HTML) replaying every trial (docs/VIEWER.md)");
+  cmd->add_option("--view-rate", options.view_rate_hz,
+                  "Frames per simulated second recorded for --view")
+      ->capture_default_str();
 }
 
 SimulationPlan PlanSimulation(const SimulateOptions& options, const std::filesystem::path& models) {
@@ -64,6 +73,9 @@ SimulationPlan PlanSimulation(const SimulateOptions& options, const std::filesys
   }
   request.state = plan.setup->state;  // physics plays the world as it is: the mean state
   request.record_trace = !options.trace_file.empty();
+  const double rate_hz = ParseNumber("--view-rate", options.view_rate_hz, kMinViewRateHz,
+                                     kMaxViewRateHz);
+  if (!options.view_file.empty()) request.scene_rate_hz = rate_hz;
   return plan;
 }
 
@@ -71,6 +83,7 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
   const std::filesystem::path models =
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
   SimulationPlan plan = PlanSimulation(options, models);
+  if (!options.view_file.empty()) CheckOutputFile(options.view_file, "--view");
   const auto& setup = plan.setup;
   KickTrialsRequest& request = plan.request;
   SimulationRun run;
@@ -96,8 +109,10 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
                    : SimulationText(run);
   const std::string drawing = options.svg_file.empty() ? "" : SimulationSvg(run);
   const std::string trace = options.trace_file.empty() ? "" : SimulationTraceCsv(run);
+  const std::string view = options.view_file.empty() ? "" : SimulationViewHtml(run);
   if (!options.svg_file.empty()) WriteFileAtomically(options.svg_file, drawing);
   if (!options.trace_file.empty()) WriteFileAtomically(options.trace_file, trace);
+  if (!options.view_file.empty()) WriteFileAtomically(options.view_file, view);
   std::cout << printed << std::flush;
   if (!std::cout) throw InputError("cannot write to standard output");
   return 0;

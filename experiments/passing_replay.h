@@ -8,6 +8,8 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "experiments/passing_report.h"
 
@@ -15,5 +17,14 @@ namespace foresight {
 
 // The replay of the example trial of run.result.scenarios[index] (the one with a trace).
 std::string PassingReplayHtml(const PassingRun& run, std::size_t index);
+
+// The scenario's traced example trial; null when it has none (a shard that did not play it).
+const MatchTrialResult* ExampleTrial(const ScenarioTrials& st);
+// Robot r of a trial's trace: the attackers "A" and "B", then the opponents by name.
+std::string RobotName(const PassingSetup& setup, std::size_t robot);
+// The trial's events as the replay lists them (time, "WHO KIND DETAIL"); of the messages only
+// the CBR team's decisions.
+std::vector<std::pair<double, std::string>> ReplayEvents(const PassingSetup& setup,
+                                                         const MatchTrialResult& t);
 
 }  // namespace foresight

@@ -128,4 +128,24 @@ void WriteFileAtomically(const std::filesystem::path& file, std::string_view con
   WriteRegularFile(file, target, content);
 }
 
+void CheckOutputFile(const std::filesystem::path& file, const std::string& flag) {
+  if (file == kStandardOutput || OwnDescriptor(file)) return;
+  const std::string shown = flag + ": " + file.string();
+  std::error_code ec;
+  const std::filesystem::path target =
+      std::filesystem::is_symlink(std::filesystem::symlink_status(file, ec))
+          ? std::filesystem::weakly_canonical(file, ec)
+          : file;
+  const std::filesystem::file_status status = std::filesystem::status(target, ec);
+  if (std::filesystem::is_directory(status)) throw InputError(shown + ": is a directory");
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) return;
+  const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
+  if (!std::filesystem::is_directory(dir, ec)) {
+    throw InputError(shown + ": cannot write: directory " + dir.string() + " does not exist");
+  }
+  if (::access(dir.c_str(), W_OK) != 0) {
+    throw InputError(shown + ": cannot write: directory " + dir.string() + " is not writable");
+  }
+}
+
 }  // namespace foresight

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace foresight {
@@ -19,5 +20,10 @@ inline constexpr std::string_view kStandardOutput = "-";
 // was printed. Throws InputError naming the file when it cannot be written, or when it is a
 // directory.
 void WriteFileAtomically(const std::filesystem::path& file, std::string_view content);
+
+// Checks, before a long run and without creating anything, that WriteFileAtomically can write
+// `file`: not a directory, its folder exists and may be written in. Throws InputError
+// "FLAG: FILE: problem". Streams ("-", devices, FIFOs) pass.
+void CheckOutputFile(const std::filesystem::path& file, const std::string& flag);
 
 }  // namespace foresight

@@ -181,5 +181,31 @@ TEST(AtomicFileTest, ADirectoryIsRefused) {
   EXPECT_TRUE(fs::is_directory(dir));
 }
 
+TEST(AtomicFileTest, CheckOutputFileRefusesBeforeTheWorkWhatCannotBeWritten) {
+  const fs::path dir = FreshDir("check");
+  EXPECT_NO_THROW(CheckOutputFile(dir / "new.html", "--view"));
+  EXPECT_NO_THROW(CheckOutputFile("-", "--view"));
+  EXPECT_NO_THROW(CheckOutputFile("/dev/null", "--view"));
+  const auto message = [](const fs::path& file) {
+    try {
+      CheckOutputFile(file, "--view");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message(dir), "--view: " + dir.string() + ": is a directory");
+  EXPECT_EQ(message(dir / "missing" / "v.html"),
+            "--view: " + (dir / "missing" / "v.html").string() + ": cannot write: directory " +
+                (dir / "missing").string() + " does not exist");
+  EXPECT_FALSE(fs::exists(dir / "new.html"));  // checking creates nothing
+  if (::geteuid() != 0) {  // root writes anywhere
+    fs::create_directory(dir / "locked");
+    fs::permissions(dir / "locked", fs::perms::owner_read | fs::perms::owner_exec);
+    EXPECT_NE(message(dir / "locked" / "v.html").find("is not writable"), std::string::npos);
+    fs::permissions(dir / "locked", fs::perms::owner_all);
+  }
+}
+
 }  // namespace
 }  // namespace foresight
