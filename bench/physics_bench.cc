@@ -51,6 +51,25 @@ void BM_NaoKickTrial(benchmark::State& state) {
 }
 BENCHMARK(BM_NaoKickTrial)->Unit(benchmark::kMillisecond)->Threads(1)->Threads(2)->UseRealTime();
 
+// The same kick recorded for the 3D viewer at 100 frames per second (physics/scene_recorder.h):
+// every link's pose per frame, the contacts per step. BM_NaoKickTrial is the same trial with
+// recording off.
+void BM_NaoKickTrialRecorded(benchmark::State& state) {
+  static const auto data = testing::LoadPhysicsFixture("spl", false, "nao");
+  static const KickModel kicks = LoadKickModel(testing::ModelsDir() / "kicks" / "nao.json");
+  const DrawnState drawn{Pose2{Vec2(-1.0, 0.0), 0.0}, Vec2(-0.8, 0.0)};
+  const PhysicsSimulator simulator(testing::SceneOf(*data, {}, drawn.p_F_ball), kicks);
+  std::uint64_t i = 0;
+  for (auto _ : state) {
+    ConcreteAction action;
+    action.kick_index = 0;
+    action.stream = StreamKey(2, i++);
+    benchmark::DoNotOptimize(simulator.Run(drawn, action, false, 100.0));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_NaoKickTrialRecorded)->Unit(benchmark::kMillisecond)->Threads(1)->UseRealTime();
+
 // The same kick by a NAO standing on its own feet (floating base): the weight shift is settled
 // once when the scene is made (not timed), each trial restores it, kicks, stands through the
 // rest of the motion and its settle time, and the ball rolls to rest.
