@@ -237,7 +237,9 @@ const bodyMeshes = [];
 const flashes = [];
 
 // ---- state ----
-const state = {trial: 0, t: 0, playing: false, speed: 1, overlay: true, target: null};
+// Overlaid by default when every trial is a kick; a match with its kicks shows one at a time.
+const state = {trial: 0, t: 0, playing: false, speed: 1, target: null,
+               overlay: !data.trials.some(t => t.trace.bodies.length > 0)};
 const duration = () => state.overlay
     ? Math.max(...trials.map(tr => tr.frames[tr.frames.length - 1].t))
     : trials[state.trial].frames[trials[state.trial].frames.length - 1].t;
