@@ -2,8 +2,9 @@
 // regions and the attacked penalty area, every robot's and the ball's whole path faintly, and the
 // robots and the ball at the time a slider selects (with play/pause and the events up to that
 // time listed beside). Everything is inline (SVG, the frames as JSON, a small script for the
-// slider): it opens from disk without a network. The script is the only one in the project's
-// reports; a time slider cannot be made without one.
+// slider): it opens from disk without a network. Besides the 3D viewer pages
+// (report/viewer_page.h) it is the only report with a script; a time slider cannot be made
+// without one. The same trial in 3D: experiments/passing_view.h.
 #pragma once
 
 #include <cstddef>

@@ -98,8 +98,7 @@ void SceneRecorder::AddLinks(const KickingRobot& robot, std::vector<ScenePose>& 
   for (const Eigen::Isometry3d& p : poses_scratch_) links.push_back(PoseOf(p));
 }
 
-void SceneRecorder::AddContacts(double t_s, btDispatcher& dispatcher, const KickingRobot* robot) {
-  (void)t_s;
+void SceneRecorder::AddContacts(btDispatcher& dispatcher, const KickingRobot* robot) {
   const int manifolds = dispatcher.getNumManifolds();
   for (int i = 0; i < manifolds; ++i) {
     const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(i);
@@ -144,7 +143,7 @@ void SceneRecorder::FlushContacts(double t_s) {
 
 void SceneRecorder::ObserveKick(double t_s, double motion_t_s, const KickingRobot& robot,
                                 const btRigidBody* ball, btDispatcher& dispatcher) {
-  AddContacts(t_s, dispatcher, &robot);
+  AddContacts(dispatcher, &robot);
   if (ball != nullptr) {
     TakeFrame(t_s, KickPhase(motion_t_s), ball, &robot);
     return;
@@ -159,7 +158,7 @@ void SceneRecorder::ObserveKick(double t_s, double motion_t_s, const KickingRobo
 }
 
 void SceneRecorder::ObserveRoll(double t_s, const btRigidBody& ball, btDispatcher& dispatcher) {
-  AddContacts(t_s, dispatcher, nullptr);
+  AddContacts(dispatcher, nullptr);
   TakeFrame(t_s, roll_phase_, &ball, nullptr);
 }
 

@@ -40,7 +40,7 @@ class SceneRecorder {
   SceneTrace Finish();
 
  private:
-  void AddContacts(double t_s, btDispatcher& dispatcher, const KickingRobot* robot);
+  void AddContacts(btDispatcher& dispatcher, const KickingRobot* robot);
   bool FrameDue(double t_s) const;
   void TakeFrame(double t_s, int phase, const btRigidBody* ball, const KickingRobot* robot);
   void FlushContacts(double t_s);

@@ -297,7 +297,7 @@ function showTrial(k) {
   $('events-box').hidden = tr.events.length === 0;
   $('trial').value = String(k);
   // A kick's scene is looked at from where the camera stands, moved to its ball.
-  if (tr.frames[0].links && state.trial !== undefined) {
+  if (tr.frames[0].links) {
     const offset = camera.position.clone().sub(controls.target);
     if (tr.bodies.length === 0 && trials[0].bodies.length > 0) offset.set(-1.1, -1.3, 0.85);
     controls.target.copy(tr.frames[0].ball);
