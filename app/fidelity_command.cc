@@ -14,6 +14,7 @@
 #include "validation/fidelity_html.h"
 #include "validation/fidelity_report.h"
 #include "validation/fidelity_shard.h"
+#include "validation/fidelity_views.h"
 
 namespace foresight {
 
@@ -112,12 +113,17 @@ FidelityPlan PlanFidelity(const FidelityOptions& options, const std::filesystem:
   return plan;
 }
 
-int WriteFidelityReport(const std::string& out_dir, const FidelityRun& run) {
+int WriteFidelityReport(const std::string& out_dir, const FidelityRun& run,
+                        const std::filesystem::path& models) {
   const std::filesystem::path dir(out_dir);
-  const ReportFiles files = {{dir / "fidelity.json", FidelityJson(run).dump(2) + "\n"},
-                             {dir / "fidelity_candidates.csv", FidelityCandidatesCsv(run)},
-                             {dir / "fidelity_situations.csv", FidelitySituationsCsv(run)},
-                             {dir / "fidelity.html", FidelityHtml(run)}};
+  ReportFiles files = {{dir / "fidelity.json", FidelityJson(run).dump(2) + "\n"},
+                       {dir / "fidelity_candidates.csv", FidelityCandidatesCsv(run)},
+                       {dir / "fidelity_situations.csv", FidelitySituationsCsv(run)},
+                       {dir / "fidelity.html", FidelityHtml(run)}};
+  // The worst situations in 3D, linked from fidelity.html (their trials play again, recorded).
+  for (auto& [name, page] : FidelityViewPages(run.result, run.settings, models)) {
+    files.push_back({dir / name, std::move(page)});
+  }
   const std::string text = FidelityText(run);
   WriteReportFiles(out_dir, "--out", files);
   std::cout << text << "report: " << (dir / "fidelity.html").string() << "\n" << std::flush;
@@ -145,7 +151,7 @@ int RunFidelityCommand(const FidelityOptions& options, const std::string& models
   run.result = RunFidelity(plan.set, models, run.settings);
   run.provenance.run_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return WriteFidelityReport(options.out_dir, run);
+  return WriteFidelityReport(options.out_dir, run, models);
 }
 
 FidelityRun RunFidelityInMemory(const FidelityOptions& options,
@@ -177,7 +183,7 @@ int MergeFidelityCommand(const std::vector<ShardPart>& parts, const std::string&
   RequireShardItems(first, static_cast<int>(plan.set.cases.size()), "situations");
   plan.run.result = MergeFidelityShards(plan.set, plan.run.settings, parts);
   plan.run.provenance.run_time_s = ShardsRunTime(parts);
-  return WriteFidelityReport(out_dir, plan.run);
+  return WriteFidelityReport(out_dir, plan.run, models);
 }
 
 }  // namespace foresight

@@ -6,6 +6,7 @@
 #include "app/cli_values.h"
 #include "app/experiment_output.h"
 #include "app/report_text.h"
+#include "app/passing_view.h"
 #include "app/shard_output.h"
 #include "experiments/passing_comparison.h"
 #include "experiments/passing_example.h"
@@ -22,7 +23,8 @@ namespace {
 
 // One team's report files, named PREFIX.json, PREFIX_trials.csv, ...
 void AddPassingFiles(const std::filesystem::path& dir, const std::string& prefix,
-                     const PassingRun& run, ReportFiles& files) {
+                     const PassingRun& run, const PassingOptions& o,
+                     const std::filesystem::path& models, ReportFiles& files) {
   files.push_back({dir / (prefix + ".json"), PassingJson(run).dump(2) + "\n"});
   files.push_back({dir / (prefix + "_trials.csv"), PassingTrialsCsv(run)});
   files.push_back({dir / (prefix + "_events.csv"), PassingEventsCsv(run)});
@@ -33,6 +35,8 @@ void AddPassingFiles(const std::filesystem::path& dir, const std::string& prefix
     const std::string& name = run.result.scenarios[i].name;
     files.push_back({dir / (prefix + "_example_" + name + ".svg"), PassingExampleSvg(run, i)});
     files.push_back({dir / (prefix + "_replay_" + name + ".html"), PassingReplayHtml(run, i)});
+    files.push_back(
+        {dir / (prefix + "_view_" + name + ".html"), PassingViewHtml(run, i, o, models)});
   }
 }
 
@@ -93,7 +97,7 @@ void WritePassingReport(const PassingOptions& o, const PassingInputs& in, Passin
     run.result = std::move(trials.results[t]);
     run.summaries = SummarisePassing(run.result, setup.params.confidence);
     run.provenance.run_time_s = trials.run_times_s[t];
-    AddPassingFiles(dir, both ? "passing_" + team : "passing", run, files);
+    AddPassingFiles(dir, both ? "passing_" + team : "passing", run, o, models, files);
     text += PassingText(run);
     runs.push_back(std::move(run));
   }

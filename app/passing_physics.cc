@@ -36,7 +36,10 @@ Outcome PhysicsKickExecutor::Execute(std::span<const Obstacle> robots, const Dra
   const std::vector<Obstacle> obstacles(robots.begin(), robots.end());
   const PhysicsSimulator simulator(
       MakePhysicsScene(*field_, params_, &robot_, obstacles, state.p_F_ball, &settled_), *kicks_);
-  return simulator.Simulate(state, action);
+  if (record_rate_hz_ <= 0.0) return simulator.Simulate(state, action);
+  // Recording leaves the trial as it is (physics/scene_recorder.h): the same outcome.
+  recorded_.push_back(simulator.Run(state, action, false, record_rate_hz_));
+  return recorded_.back().outcome;
 }
 
 }  // namespace foresight

@@ -12,12 +12,14 @@
 
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 #include "match/kick_executor.h"
 #include "models/kick_model.h"
 #include "models/physics_params.h"
 #include "models/robot_spec.h"
 #include "physics/settled_stance.h"
+#include "physics/trial.h"
 
 namespace foresight {
 
@@ -32,6 +34,13 @@ class PhysicsKickExecutor final : public KickExecutor {
   Outcome Execute(std::span<const Obstacle> robots, const DrawnState& state,
                   const ConcreteAction& action) const override;
   const std::filesystem::path& physics_file() const { return physics_file_; }
+  const Robot& robot() const { return robot_; }
+
+  // From now on every kick's whole trial is kept, its scene recorded at rate_hz, in the order
+  // of the calls (recorded()): for the 3D viewer of one trial played again. An executor that
+  // records must not be shared between threads.
+  void Record(double rate_hz) { record_rate_hz_ = rate_hz; }
+  const std::vector<TrialResult>& recorded() const { return recorded_; }
 
  private:
   const FieldSpec* field_;
@@ -40,6 +49,8 @@ class PhysicsKickExecutor final : public KickExecutor {
   std::filesystem::path physics_file_;
   PhysicsParams params_;
   SettledStances settled_;  // settled once for every kick's scene (floating base)
+  double record_rate_hz_ = 0.0;
+  mutable std::vector<TrialResult> recorded_;  // only while recording (single-threaded)
 };
 
 }  // namespace foresight

@@ -16,6 +16,10 @@ namespace {
 
 constexpr int kMaxTrials = 1000000;
 constexpr int kMaxThreads = 1024;
+// --view-rate: a frame per second at least (a slower replay shows nothing of a kick); at most
+// one per kick step of any physics file in models/physics (1 ms), beyond which frames repeat.
+constexpr double kMinViewRateHz = 1.0;
+constexpr double kMaxViewRateHz = 1000.0;
 
 }  // namespace
 
@@ -39,6 +43,11 @@ void AddSimulateCommand(CLI::App& app, SimulateOptions& options) {
   cmd->add_flag("--json", options.json, "Print every trial and the summary as JSON");
   cmd->add_option("--svg", options.svg_file, "Draw the rest positions on the field");
   cmd->add_option("--trace", options.trace_file, "Write the balls' trajectories as CSV");
+  cmd->add_option("--view", options.view_file,
+                  "Write a 3D viewer page (HTML) replaying every trial (docs/VIEWER.md)");
+  cmd->add_option("--view-rate", options.view_rate_hz,
+                  "Frames per simulated second recorded for --view")
+      ->capture_default_str();
 }
 
 SimulationPlan PlanSimulation(const SimulateOptions& options, const std::filesystem::path& models) {
@@ -72,6 +81,9 @@ SimulationPlan PlanSimulation(const SimulateOptions& options, const std::filesys
   request.state = plan.setup->state;  // physics plays the world as it is: the mean state
   request.record_trace = !options.trace_file.empty();
   request.progress = CommandProgress("simulate", "trials");
+  const double rate_hz = ParseNumber("--view-rate", options.view_rate_hz, kMinViewRateHz,
+                                     kMaxViewRateHz);
+  if (!options.view_file.empty()) request.scene_rate_hz = rate_hz;
   return plan;
 }
 
@@ -81,6 +93,7 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
   OutputSet outputs;  // located and checked before the work, written together after it
   outputs.AddFile("--svg", options.svg_file);
   outputs.AddFile("--trace", options.trace_file);
+  outputs.AddFile("--view", options.view_file);
   SimulationPlan plan = PlanSimulation(options, models);
   const auto& setup = plan.setup;
   KickTrialsRequest& request = plan.request;
@@ -107,6 +120,7 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
                    : SimulationText(run);
   if (outputs.Has("--svg")) outputs.Put("--svg", SimulationSvg(run));
   if (outputs.Has("--trace")) outputs.Put("--trace", SimulationTraceCsv(run));
+  if (outputs.Has("--view")) outputs.Put("--view", SimulationViewHtml(run));
   outputs.Commit();
   std::cout << printed << std::flush;
   if (!std::cout) throw InputError("cannot write to standard output");

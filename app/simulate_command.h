@@ -25,6 +25,8 @@ struct SimulateOptions {
   bool json = false;
   std::string svg_file;
   std::string trace_file;
+  std::string view_file;          // --view: the 3D viewer page
+  std::string view_rate_hz = "100";  // --view-rate: its frames per simulated second
 };
 
 void AddSimulateCommand(CLI::App& app, SimulateOptions& options);

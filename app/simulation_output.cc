@@ -6,6 +6,8 @@
 #include "common/geometry.h"
 #include "report/field_svg.h"
 #include "report/provenance.h"
+#include "report/viewer_page.h"
+#include "validation/trial_view.h"
 
 namespace foresight {
 
@@ -210,6 +212,26 @@ std::string SimulationTraceCsv(const SimulationRun& run) {
     }
   }
   return out.str();
+}
+
+std::string SimulationViewHtml(const SimulationRun& run) {
+  ViewerScene scene;
+  scene.title = Format("%s kicks '%s' in %s: %d trials", run.robot->spec.name.c_str(),
+                       run.kick.c_str(), run.situation->name.c_str(), run.summary.trials);
+  scene.about = {
+      {"command", "foresight simulate"},
+      {"situation", run.situation_file.string()},
+      {"physics", DisplayPath(run.physics_file, run.models_dir)},
+      {"base", std::string(RobotBaseName(run.base))},
+      {"turn", Format("%+.1f deg", run.rotation_rad * kRadToDeg)},
+      {"seed", std::to_string(run.seed)},
+      {"version", FORESIGHT_VERSION},
+      {"drawn with", ViewerLibraryVersion()},
+  };
+  scene.field = &run.situation->field;
+  scene.robot = &run.robot->model;
+  AddTrialViews(run.results, scene);
+  return ViewerHtml(scene);
 }
 
 }  // namespace foresight

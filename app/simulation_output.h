@@ -36,5 +36,7 @@ std::string SimulationSvg(const SimulationRun& run);
 // Columns: trial, t_s, x_m, y_m, z_m, vx_mps, vy_mps, vz_mps (F frame, time since the motion
 // started).
 std::string SimulationTraceCsv(const SimulationRun& run);
+// The 3D viewer page of every trial (their scenes must have been recorded).
+std::string SimulationViewHtml(const SimulationRun& run);
 
 }  // namespace foresight

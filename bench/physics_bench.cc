@@ -34,8 +34,10 @@ void BM_FreeRoll5m(benchmark::State& state) {
 }
 BENCHMARK(BM_FreeRoll5m)->Unit(benchmark::kMillisecond)->Threads(1)->Threads(2)->UseRealTime();
 
-// A whole NAO forward kick from midfield: the robot kicks, the ball launches and rolls to rest.
-void BM_NaoKickTrial(benchmark::State& state) {
+// A whole NAO forward kick from midfield: the robot kicks, the ball launches and rolls to rest;
+// with scene_rate_hz > 0 the trial is also recorded for the 3D viewer (physics/scene_recorder.h:
+// every link's pose per frame, the contacts per step).
+void NaoKickTrials(benchmark::State& state, double scene_rate_hz) {
   static const auto data = testing::LoadPhysicsFixture("spl", false, "nao");
   static const KickModel kicks = LoadKickModel(testing::ModelsDir() / "kicks" / "nao.json");
   const DrawnState drawn{Pose2{Vec2(-1.0, 0.0), 0.0}, Vec2(-0.8, 0.0)};
@@ -45,11 +47,21 @@ void BM_NaoKickTrial(benchmark::State& state) {
     ConcreteAction action;
     action.kick_index = 0;
     action.stream = StreamKey(2, i++);
-    benchmark::DoNotOptimize(simulator.Simulate(drawn, action));
+    if (scene_rate_hz > 0.0) {
+      benchmark::DoNotOptimize(simulator.Run(drawn, action, false, scene_rate_hz));
+    } else {
+      benchmark::DoNotOptimize(simulator.Simulate(drawn, action));
+    }
   }
   state.SetItemsProcessed(state.iterations());
 }
+
+void BM_NaoKickTrial(benchmark::State& state) { NaoKickTrials(state, 0.0); }
 BENCHMARK(BM_NaoKickTrial)->Unit(benchmark::kMillisecond)->Threads(1)->Threads(2)->UseRealTime();
+
+// The same trials recorded at 100 frames per second (`simulate --view`'s default).
+void BM_NaoKickTrialRecorded(benchmark::State& state) { NaoKickTrials(state, 100.0); }
+BENCHMARK(BM_NaoKickTrialRecorded)->Unit(benchmark::kMillisecond)->Threads(1)->UseRealTime();
 
 // The same kick by a NAO standing on its own feet (floating base): the weight shift is settled
 // once when the scene is made (not timed), each trial restores it, kicks, stands through the

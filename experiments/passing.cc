@@ -185,9 +185,9 @@ PassingResult EmptyPassingResult(const PassingSetup& setup) {
   return result;
 }
 
-PassingResult RunPassing(const PassingSetup& setup, const std::string& team,
-                         const KickExecutor& executor, std::uint64_t seed, int threads,
-                         const std::function<void(int, int)>& progress, const Shard& shard) {
+namespace {
+
+MatchSetup MatchSetupOf(const PassingSetup& setup, const KickExecutor& executor) {
   MatchSetup match;
   match.field = &setup.field;
   match.kicks = &setup.kicks;
@@ -197,6 +197,42 @@ PassingResult RunPassing(const PassingSetup& setup, const std::string& team,
   match.executor = &executor;
   match.attack_sign = setup.mirrored ? -1.0 : 1.0;
   match.robot_restitution = setup.robot_restitution;
+  return match;
+}
+
+// Trial `trial` of `scenario` with `team` attacking, on `match` (traced or not).
+MatchTrialResult PlayTrial(const PassingSetup& setup, const std::string& team,
+                           const MatchSetup& match, std::uint64_t seed, int scenario_number,
+                           int trial) {
+  const Scenario& scenario = setup.config.scenarios[static_cast<std::size_t>(scenario_number - 1)];
+  const int n = static_cast<int>(scenario.attackers.size());
+  ReactiveTeam reactive(setup.reactive, setup.field, setup.kicks, setup.robot, setup.sim, n);
+  std::optional<CbrTeam> cbr;
+  if (team == "cbr") cbr.emplace(CbrSetup(setup), reactive, n);
+  TeamPolicy& attackers = cbr ? static_cast<TeamPolicy&>(*cbr) : reactive;
+  OpponentTeam opponents(setup.config, setup.field, setup.kicks, setup.robot, setup.sim);
+  return RunTrial(match, scenario, attackers, opponents,
+                  PassingTrialKey(seed, scenario_number, trial));
+}
+
+}  // namespace
+
+int ExampleTrialIndex(const PassingSetup& setup) {
+  return std::min(setup.params.example_trial, setup.trials - 1);
+}
+
+MatchTrialResult PlayExampleTrial(const PassingSetup& setup, const std::string& team,
+                                  const KickExecutor& executor, std::uint64_t seed,
+                                  int scenario_number) {
+  MatchSetup example = MatchSetupOf(setup, executor);
+  example.trace_period_s = setup.params.trace_period_s;
+  return PlayTrial(setup, team, example, seed, scenario_number, ExampleTrialIndex(setup));
+}
+
+PassingResult RunPassing(const PassingSetup& setup, const std::string& team,
+                         const KickExecutor& executor, std::uint64_t seed, int threads,
+                         const std::function<void(int, int)>& progress, const Shard& shard) {
+  const MatchSetup match = MatchSetupOf(setup, executor);
   MatchSetup example = match;
   example.trace_period_s = setup.params.trace_period_s;
 
@@ -209,19 +245,9 @@ PassingResult RunPassing(const PassingSetup& setup, const std::string& team,
         const int job = shard.Item(owned);
         ScenarioTrials& st = result.scenarios[static_cast<std::size_t>(job / per)];
         const int trial = job % per;
-        const Scenario& scenario =
-            setup.config.scenarios[static_cast<std::size_t>(st.scenario - 1)];
-        const int n = static_cast<int>(scenario.attackers.size());
-        ReactiveTeam reactive(setup.reactive, setup.field, setup.kicks, setup.robot, setup.sim, n);
-        std::optional<CbrTeam> cbr;
-        if (team == "cbr") cbr.emplace(CbrSetup(setup), reactive, n);
-        TeamPolicy& attackers = cbr ? static_cast<TeamPolicy&>(*cbr) : reactive;
-        OpponentTeam opponents(setup.config, setup.field, setup.kicks, setup.robot,
-                               setup.sim);
-        const bool is_example = trial == std::min(setup.params.example_trial, per - 1);
+        const bool is_example = trial == ExampleTrialIndex(setup);
         st.trials[static_cast<std::size_t>(trial)] =
-            RunTrial(is_example ? example : match, scenario, attackers, opponents,
-                     PassingTrialKey(seed, st.scenario, trial));
+            PlayTrial(setup, team, is_example ? example : match, seed, st.scenario, trial);
       },
       progress);
   return result;

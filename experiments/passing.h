@@ -123,4 +123,13 @@ PassingResult RunPassing(const PassingSetup& setup, const std::string& team,
                          const std::function<void(int, int)>& progress = {},
                          const Shard& shard = {});
 
+// Which trial of every scenario is the traced example (the parameters' example_trial).
+int ExampleTrialIndex(const PassingSetup& setup);
+// Plays the example trial of the scenario numbered `scenario_number` again, traced, exactly as
+// RunPassing played it (the same random numbers): its kicks go to `executor`, one at a time in
+// the match's order (the 3D viewer records them through it, app/passing_view.h).
+MatchTrialResult PlayExampleTrial(const PassingSetup& setup, const std::string& team,
+                                  const KickExecutor& executor, std::uint64_t seed,
+                                  int scenario_number);
+
 }  // namespace foresight

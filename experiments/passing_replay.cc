@@ -11,17 +11,6 @@ constexpr double kPixelsPerM = 130.0;
 constexpr const char* kAttackerColour = "#0072b2";
 constexpr const char* kOpponentColour = "#d55e00";
 
-const MatchTrialResult* ExampleTrial(const ScenarioTrials& st) {
-  for (const MatchTrialResult& t : st.trials) {
-    if (!t.trace.empty()) return &t;
-  }
-  return nullptr;
-}
-
-std::string RobotName(const PassingSetup& setup, std::size_t robot) {
-  return robot < 2 ? (robot == 0 ? "A" : "B") : setup.config.opponents[robot - 2].name;
-}
-
 // The field, faint paths and one group per robot (id r<i>) and the ball (id ball), drawn at the
 // origin; the script moves them.
 std::string FieldSvg(const PassingSetup& setup, const MatchTrialResult& t) {
@@ -92,16 +81,8 @@ bool IsTeamDecision(const std::string& detail) {
 std::string EventsJson(const PassingSetup& setup, const MatchTrialResult& t) {
   std::string json = "[";
   bool first = true;
-  for (const MatchEvent& e : t.events) {
-    // Messages come twice a second per robot: only the CBR team's decisions get a line (the
-    // coordinator, the case, no case, aborts and ends; not beliefs, arrivals, passes, dones).
-    if (e.kind == EventKind::kMessage && !IsTeamDecision(e.detail)) continue;
-    const std::size_t robot = e.side == Side::kAttackers ? static_cast<std::size_t>(e.robot)
-                                                         : 2 + static_cast<std::size_t>(e.robot);
-    const std::string who = e.kind == EventKind::kEnd ? "" : RobotName(setup, robot) + " ";
-    const std::string kind = e.kind == EventKind::kMessage ? "" : std::string(EventKindName(e.kind));
-    json += Format("%s[%.2f,\"%s%s%s%s\"]", first ? "" : ",", e.time_s, who.c_str(),
-                   kind.c_str(), e.detail.empty() || kind.empty() ? "" : " ", e.detail.c_str());
+  for (const auto& [time_s, text] : ReplayEvents(setup, t)) {
+    json += Format("%s[%.2f,\"%s\"]", first ? "" : ",", time_s, text.c_str());
     first = false;
   }
   return json + "]";
@@ -141,6 +122,34 @@ show(+slider.value);
 )JS";
 
 }  // namespace
+
+const MatchTrialResult* ExampleTrial(const ScenarioTrials& st) {
+  for (const MatchTrialResult& t : st.trials) {
+    if (!t.trace.empty()) return &t;
+  }
+  return nullptr;
+}
+
+std::string RobotName(const PassingSetup& setup, std::size_t robot) {
+  return robot < 2 ? (robot == 0 ? "A" : "B") : setup.config.opponents[robot - 2].name;
+}
+
+std::vector<std::pair<double, std::string>> ReplayEvents(const PassingSetup& setup,
+                                                         const MatchTrialResult& t) {
+  std::vector<std::pair<double, std::string>> events;
+  for (const MatchEvent& e : t.events) {
+    // Messages come twice a second per robot: only the CBR team's decisions get a line (the
+    // coordinator, the case, no case, aborts and ends; not beliefs, arrivals, passes, dones).
+    if (e.kind == EventKind::kMessage && !IsTeamDecision(e.detail)) continue;
+    const std::size_t robot = e.side == Side::kAttackers ? static_cast<std::size_t>(e.robot)
+                                                         : 2 + static_cast<std::size_t>(e.robot);
+    const std::string who = e.kind == EventKind::kEnd ? "" : RobotName(setup, robot) + " ";
+    const std::string kind = e.kind == EventKind::kMessage ? "" : std::string(EventKindName(e.kind));
+    events.emplace_back(e.time_s, who + kind + (e.detail.empty() || kind.empty() ? "" : " ") +
+                                      e.detail);
+  }
+  return events;
+}
 
 std::string PassingReplayHtml(const PassingRun& run, std::size_t index) {
   const PassingSetup& setup = *run.setup;

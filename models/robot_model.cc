@@ -139,17 +139,28 @@ Eigen::Isometry3d ToIsometry(const urdf::Pose& pose, const std::filesystem::path
 }
 
 void AppendVertices(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent,
-                    std::vector<Eigen::Vector3d>* vertices) {
+                    std::vector<Eigen::Vector3d>* vertices,
+                    std::vector<std::array<int, 3>>* triangles) {
   const aiMatrix4x4 transform = parent * node.mTransformation;
   for (unsigned i = 0; i < node.mNumMeshes; ++i) {
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[i]];
+    const int offset = static_cast<int>(vertices->size());
+    // Triangles only (aiProcess_Triangulate; points and lines have fewer indices): the viewer
+    // draws them, physics uses the vertices' hull.
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices != 3) continue;
+      triangles->push_back({offset + static_cast<int>(face.mIndices[0]),
+                            offset + static_cast<int>(face.mIndices[1]),
+                            offset + static_cast<int>(face.mIndices[2])});
+    }
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
       const aiVector3D p = transform * mesh.mVertices[v];
       vertices->emplace_back(p.x, p.y, p.z);
     }
   }
   for (unsigned i = 0; i < node.mNumChildren; ++i) {
-    AppendVertices(scene, *node.mChildren[i], transform, vertices);
+    AppendVertices(scene, *node.mChildren[i], transform, vertices, triangles);
   }
 }
 
@@ -157,7 +168,8 @@ void AppendVertices(const aiScene& scene, const aiNode& node, const aiMatrix4x4&
 // "FILE: ELEMENT: problem" when the file is missing, unreadable or empty.
 std::vector<Eigen::Vector3d> ReadMeshVertices(const std::filesystem::path& path,
                                               const std::filesystem::path& file,
-                                              const std::string& element) {
+                                              const std::string& element,
+                                              std::vector<std::array<int, 3>>* triangles) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) Fail(file, element + ": file not found");
   Require(file, element, [&] { RequireDataFile(path); });
@@ -175,7 +187,7 @@ std::vector<Eigen::Vector3d> ReadMeshVertices(const std::filesystem::path& path,
     Fail(file, element + ": cannot read mesh: " + problem);
   }
   std::vector<Eigen::Vector3d> vertices;
-  AppendVertices(*scene, *scene->mRootNode, aiMatrix4x4(), &vertices);
+  AppendVertices(*scene, *scene->mRootNode, aiMatrix4x4(), &vertices, triangles);
   if (vertices.empty()) Fail(file, element + ": mesh has no vertices");
   for (const Eigen::Vector3d& v : vertices) {
     if (!v.allFinite()) Fail(file, element + ": mesh has a vertex that is not finite");
@@ -204,7 +216,7 @@ RobotShape ReadMeshShape(const urdf::Mesh& mesh, const std::filesystem::path& fi
   RobotShape shape;
   shape.kind = RobotShape::Kind::kMesh;
   shape.mesh_file = (file.parent_path() / mesh.filename).lexically_normal();
-  shape.mesh_vertices_S_m = ReadMeshVertices(shape.mesh_file, file, element);
+  shape.mesh_vertices_S_m = ReadMeshVertices(shape.mesh_file, file, element, &shape.mesh_triangles);
   for (Eigen::Vector3d& v : shape.mesh_vertices_S_m) {
     v = v.cwiseProduct(scale);
     if (!(v.cwiseAbs().maxCoeff() <= kMaxRobotLengthM)) {

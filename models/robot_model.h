@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -22,6 +23,7 @@ struct RobotShape {
   double length_m = 0.0;                                       // kCylinder, along S's z
   std::filesystem::path mesh_file;                             // kMesh: resolved path
   std::vector<Eigen::Vector3d> mesh_vertices_S_m;              // kMesh: scaled, in S
+  std::vector<std::array<int, 3>> mesh_triangles;              // kMesh: vertex indices
 };
 
 struct RobotLink {

@@ -236,6 +236,29 @@ double KickingRobot::TiltRad() const {
   return std::acos(std::clamp(pose_F_root.linear()(2, 2), -1.0, 1.0));
 }
 
+void KickingRobot::LinkPoses(std::vector<Eigen::Isometry3d>& pose_F_link) const {
+  pose_F_link.resize(robot_.model.links.size());
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    // Every group has a collider (AddColliders), placed at the group's inertial frame C.
+    const btCollisionObject* collider =
+        g == 0 ? body_->getBaseCollider() : body_->getLink(static_cast<int>(g) - 1).m_collider;
+    const Eigen::Isometry3d pose_F_L =
+        ToEigen(collider->getWorldTransform()) * groups_[g].inertia.pose_L_C.inverse();
+    for (const auto& [link, pose_L_member] : groups_[g].members) {
+      pose_F_link[link] = pose_F_L * pose_L_member;
+    }
+  }
+}
+
+const std::string& KickingRobot::ContactLinkName(int index) const {
+  const RigidGroup& group = groups_.at(static_cast<std::size_t>(index + 1));
+  int named = group.link;
+  for (const auto& member : group.members) {
+    if (!robot_.model.links[member.first].collisions.empty()) named = member.first;
+  }
+  return robot_.model.links[named].name;
+}
+
 std::vector<double> KickingRobot::JointPositions() const {
   std::vector<double> q = standing_q_;
   for (std::size_t g = 1; g < groups_.size(); ++g) {

@@ -63,6 +63,12 @@ class KickingRobot {
   // The angle between the root link's z axis and the vertical.
   double TiltRad() const;
 
+  // Every model link's pose in F (model.links order), from the multibody's current state.
+  void LinkPoses(std::vector<Eigen::Isometry3d>& pose_F_link) const;
+  // The name of the link a contact with multibody link `index` (-1: the base) touched: the
+  // deepest member of its rigid group with collision geometry (the foot rather than the ankle).
+  const std::string& ContactLinkName(int index) const;
+
   // Current joint positions (model.joints order; welded joints read their standing position).
   std::vector<double> JointPositions() const;
   btMultiBody& body() { return *body_; }

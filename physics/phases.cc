@@ -42,7 +42,7 @@ bool RollsFreely(const BallState& ball, double radius_m) {
 PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const KickMotion& motion,
                       const Eigen::Isometry3d& pose_F_root, double speed_factor,
                       const BallState& ball_start, BallMonitor& monitor,
-                      const SettledStance* settled) {
+                      const SettledStance* settled, SceneRecorder* recorder) {
   const StepParams& steps = scene.params.steps;
   const double dt = steps.kick_time_step_s;
   const double radius = scene.field->ball.radius_m;
@@ -72,6 +72,10 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
     if (!end.launched) carpet.ApplyRollingResistance(*ball, radius, dt);
     world.world().stepSimulation(dt, 0, dt);
     t += dt;
+    if (recorder != nullptr) {
+      recorder->ObserveKick(t, t * speed_factor, robot, end.launched ? nullptr : ball,
+                            *world.world().getDispatcher());
+    }
     if (floating) {
       end.max_tilt_rad = std::max(end.max_tilt_rad, robot.TiltRad());
       if (end.max_tilt_rad > scene.params.robot.fall_tilt_rad) {
@@ -115,7 +119,8 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
 }
 
 PhaseEnd RunRollPhase(const PhysicsScene& scene, const Carpet& carpet, const BallState& start,
-                      double t_start_s, BallMonitor& monitor, const RollStepObserver& observer) {
+                      double t_start_s, BallMonitor& monitor, const RollStepObserver& observer,
+                      SceneRecorder* recorder) {
   const StepParams& steps = scene.params.steps;
   const double radius = scene.field->ball.radius_m;
   BulletWorld world(BulletWorld::Kind::kRigid, SolverOf(steps));
@@ -140,6 +145,7 @@ PhaseEnd RunRollPhase(const PhysicsScene& scene, const Carpet& carpet, const Bal
     end.ball = ReadBall(*ball);
     monitor.Observe(end.t_s, end.ball, ContactsOf(*world.world().getDispatcher(), *ball));
     if (observer) observer(*world.world().getDispatcher(), *ball);
+    if (recorder != nullptr) recorder->ObserveRoll(end.t_s, *ball, *world.world().getDispatcher());
   }
   return end;
 }

@@ -23,6 +23,7 @@
 #include "physics/ball_state.h"
 #include "physics/carpet.h"
 #include "physics/physics_scene.h"
+#include "physics/scene_recorder.h"
 
 namespace foresight {
 
@@ -42,7 +43,7 @@ struct PhaseEnd {
 PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const KickMotion& motion,
                       const Eigen::Isometry3d& pose_F_root, double speed_factor,
                       const BallState& ball, BallMonitor& monitor,
-                      const SettledStance* settled = nullptr);
+                      const SettledStance* settled = nullptr, SceneRecorder* recorder = nullptr);
 
 // Called after every roll step with the world's dispatcher (its contact manifolds) and the ball's
 // collision object: probes that need more than the ball's state (robot_impact.h).
@@ -51,6 +52,7 @@ using RollStepObserver =
 
 PhaseEnd RunRollPhase(const PhysicsScene& scene, const Carpet& carpet, const BallState& ball,
                       double t_start_s, BallMonitor& monitor,
-                      const RollStepObserver& observer = {});
+                      const RollStepObserver& observer = {},
+                      SceneRecorder* recorder = nullptr);
 
 }  // namespace foresight

@@ -21,7 +21,8 @@ std::vector<TrialResult> RunKickTrials(const PhysicsSimulator& simulator,
         action.kick_index = request.kick_index;
         action.rotation_rad = request.rotation_rad;
         action.stream = StreamKey(request.seed, static_cast<std::uint64_t>(i), kPhysicsTrialDomain);
-        results[k] = simulator.Run(request.state, action, request.record_trace);
+        results[k] = simulator.Run(request.state, action, request.record_trace,
+                                      request.scene_rate_hz);
       },
       request.progress);
   return results;

@@ -23,7 +23,7 @@ Outcome PhysicsSimulator::Simulate(const DrawnState& state, const ConcreteAction
 }
 
 TrialResult PhysicsSimulator::Run(const DrawnState& state, const ConcreteAction& action,
-                                  bool record_trace) const {
+                                  bool record_trace, double scene_rate_hz) const {
   if (action.kick_index == kNoKick) {
     TrialResult result;
     result.outcome.p_F_rest = state.p_F_ball;
@@ -38,6 +38,7 @@ TrialResult PhysicsSimulator::Run(const DrawnState& state, const ConcreteAction&
   request.rotation_rad = action.rotation_rad;
   request.stream = action.stream;
   request.record_trace = record_trace;
+  request.scene_rate_hz = scene_rate_hz;
   return RunKickTrial(scene_, request);
 }
 

@@ -26,7 +26,9 @@ class PhysicsSimulator final : public OutcomeSimulator {
   bool HasMotion(int kick_index) const;
 
   Outcome Simulate(const DrawnState& state, const ConcreteAction& action) const override;
-  TrialResult Run(const DrawnState& state, const ConcreteAction& action, bool record_trace) const;
+  // scene_rate_hz > 0 also records the whole scene (TrialResult::scene) at that rate.
+  TrialResult Run(const DrawnState& state, const ConcreteAction& action, bool record_trace,
+                  double scene_rate_hz = 0.0) const;
 
   const PhysicsScene& scene() const { return scene_; }
 

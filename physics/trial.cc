@@ -92,8 +92,11 @@ TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request) 
   BallMonitor monitor(scene.lines, p_F_ball, request.record_trace);
   const BallState ball = RollingBall(p_F_ball, radius, 0.0, 0.0);
   const std::optional<SettledStance>& settled = scene.settled_stances[request.motion_index];
+  std::optional<SceneRecorder> recorder;
+  if (request.scene_rate_hz > 0.0) recorder.emplace(scene, motion, request.scene_rate_hz);
+  SceneRecorder* recording = recorder ? &*recorder : nullptr;
   const PhaseEnd kick = RunKickPhase(scene, carpet, motion, pose_F_root, d.speed_factor, ball,
-                                     monitor, settled ? &*settled : nullptr);
+                                     monitor, settled ? &*settled : nullptr, recording);
   result.touched = kick.touched;
   result.launched = kick.launched;
   result.fell = kick.fell;
@@ -107,9 +110,10 @@ TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request) 
     result.p_F_launch = kick.ball.Planar();
     result.t_launch_s = kick.t_s - t_zero;
   }
-  const PhaseEnd roll = RunRollPhase(scene, carpet, kick.ball, kick.t_s, monitor);
+  const PhaseEnd roll = RunRollPhase(scene, carpet, kick.ball, kick.t_s, monitor, {}, recording);
   result.settled = roll.settled;
   result.outcome = Finish(monitor, roll, t_zero);
+  if (recorder) result.scene = recorder->Finish();
   result.outcome.status = StatusOf(result.fell, result.touched, result.settled);
   result.trace = std::move(monitor.trace());
   return result;

@@ -10,9 +10,11 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "models/outcome.h"
+#include "models/scene_trace.h"
 #include "physics/ball_state.h"
 #include "physics/physics_scene.h"
 
@@ -58,6 +60,7 @@ struct TrialResult {
   double t_launch_s = 0.0;        // since the first touch
   double t_first_touch_s = 0.0;   // since the motion's start (the trace's clock)
   std::vector<TracePoint> trace;  // filled on request; times since the motion's start
+  std::optional<SceneTrace> scene;  // the whole scene for the viewer, on request
 };
 
 struct KickRequest {
@@ -66,6 +69,7 @@ struct KickRequest {
   double rotation_rad = 0.0;  // turn around the ball before the kick
   std::uint64_t stream = 0;
   bool record_trace = false;
+  double scene_rate_hz = 0.0;  // > 0: record the scene (physics/scene_recorder.h) at this rate
 };
 
 // A kick trial's start: its draw and where the robot's root frame stands in F (the ball lies at

@@ -108,6 +108,10 @@ void HtmlReport::Heading(int level, std::string_view text) {
   body_ += "<" + tag + ">" + Escape(text) + "</" + tag + ">\n";
 }
 
+void HtmlReport::Link(std::string_view href, std::string_view text) {
+  body_ += "<p><a href=\"" + Escape(href) + "\">" + Escape(text) + "</a></p>\n";
+}
+
 void HtmlReport::Paragraph(std::string_view text) {
   body_ += "<p>" + Escape(text) + "</p>\n";
 }

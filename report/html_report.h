@@ -16,6 +16,8 @@ class HtmlReport {
 
   void Heading(int level, std::string_view text);  // level 2..4 (the title is the h1)
   void Paragraph(std::string_view text);
+  // A paragraph that is one link to `href` (a file beside the page).
+  void Link(std::string_view href, std::string_view text);
   // A highlighted box for what the reader must not miss (e.g. "the normal model does not fit").
   void Warning(std::string_view text);
   void KeyValues(const std::vector<std::pair<std::string, std::string>>& rows);

@@ -3,11 +3,14 @@
 // tau and regret, and the worst ten situations drawn on the field.
 #include "validation/fidelity_html.h"
 
+#include <algorithm>
+
 #include "common/geometry.h"
 #include "report/charts.h"
 #include "report/field_svg.h"
 #include "report/html_report.h"
 #include "report/report_format.h"
+#include "validation/fidelity_views.h"
 
 namespace foresight {
 
@@ -19,7 +22,7 @@ std::string MeanText(const MeanWithInterval& m, int decimals) {
 }
 
 std::string ActionText(const Situation& s, int kick, double rotation_rad) {
-  return s.kicks.NameOf(kick) + " " + Fixed(rotation_rad * kRadToDeg, 0) + " deg";
+  return FidelityActionText(s, kick, rotation_rad);
 }
 
 void SummaryTables(HtmlReport& html, const FidelityResult& r) {
@@ -113,6 +116,7 @@ void WorstSituations(HtmlReport& html, const FidelityResult& r) {
       "chosen action; orange rings: where physics put the ball for the same action; "
       "arrow: the robot's heading after its turn.");
   const std::vector<int> order = WorstFirst(r);
+  const std::vector<int> viewed = FidelityViewSituations(r);
   for (std::size_t i = 0; i < order.size() && i < 10; ++i) {
     const SituationFidelity& s = r.situations[order[i]];
     const CandidateScore& choice = s.candidates[s.coarse.choice];
@@ -126,6 +130,12 @@ void WorstSituations(HtmlReport& html, const FidelityResult& r) {
                     Fixed(best.physics.utility, 3) + " [" + Fixed(best.physics_ci.low, 3) + ", " +
                     Fixed(best.physics_ci.high, 3) + "]); tau-b " + Fixed(s.coarse.tau_b, 3) +
                     ", regret " + Fixed(s.coarse.regret, 3));
+    const auto view = std::find(viewed.begin(), viewed.end(), order[i]);
+    if (view != viewed.end()) {
+      html.Link(FidelityViewFile(static_cast<int>(view - viewed.begin())),
+                "See it in 3D: the coarse choice's and physics's best candidate's first " +
+                    std::to_string(kFidelityViewTrials) + " physics trials");
+    }
   }
 }
 

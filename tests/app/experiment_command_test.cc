@@ -214,6 +214,12 @@ TEST_F(ExperimentCommandTest, PassingWithPhysicsExecutesTheKicksInBullet) {
   EXPECT_EQ(json["params"]["executor"], "physics");
   EXPECT_EQ(json["params"]["physics"], "physics/four_legged.json");
   EXPECT_TRUE(json["scenarios"][0].contains("kicks_missed"));
+  // The example trial in 3D: the match, then each of its kicks as a recorded physics trial of
+  // the AIBO (one per kick event of the trial).
+  const std::string view = ReadFile(work() / "out" / "passing_view_dg_4.html");
+  EXPECT_THAT(view, HasSubstr("\"label\":\"the match (example trial 0)\""));
+  EXPECT_GE(CountOf(view, "\"label\":\"kick "), 1);
+  EXPECT_THAT(view, HasSubstr("\"name\":\"aibo_ers7\""));
 }
 
 // A bad --out fails before the work: a file in the way of the folder.

@@ -71,6 +71,15 @@ TEST_F(FidelityCommandTest, OneSituationWritesJsonCsvAndHtml) {
   EXPECT_THAT(html, HasSubstr("kicks/nao.json (" + j["kick_model_hash"].get<std::string>() + ")"));
   EXPECT_THAT(html, HasSubstr("physics/spl.json"));
   EXPECT_THAT(html, ::testing::Not(HasSubstr("&lt;field&gt;")));
+  // The worst (here: the only) situation links its 3D viewer: the coarse choice's and physics's
+  // best candidate's first trials (one candidate when they agree), with their recorded scenes.
+  EXPECT_THAT(html, HasSubstr("<a href=\"worst_1_view.html\">"));
+  EXPECT_FALSE(fs::exists(dir / "worst_2_view.html"));
+  const std::string view = ReadFile(dir / "worst_1_view.html");
+  const int shown = CountOf(view, "\"label\":\"coarse choice: ") +
+                    CountOf(view, "\"label\":\"physics best: ");
+  EXPECT_TRUE(shown == 3 || shown == 6) << shown;
+  EXPECT_THAT(view, HasSubstr("\"links_pose\":[["));
 }
 
 TEST_F(FidelityCommandTest, KicksFlagIsTheKickModelTheReportNames) {

@@ -10,6 +10,7 @@
 
 namespace {
 
+namespace fs = std::filesystem;
 using foresight::testing::CountOf;
 using foresight::testing::ReadFile;
 using foresight::testing::RunResult;
@@ -48,20 +49,40 @@ TEST_F(SimulateCommandTest, JsonHasEveryTrialAndSharesThatAddUp) {
 
 TEST_F(SimulateCommandTest, SameSeedSameBytesWithOneThreadOrTwo) {
   std::vector<std::string> args = OpenGoal("side_kick_left", 4);
-  args.insert(args.end(), {"--json", "--seed", "17", "--svg", "rest.svg", "--trace", "trace.csv"});
+  args.insert(args.end(), {"--json", "--seed", "17", "--svg", "rest.svg", "--trace", "trace.csv",
+                           "--view", "view.html"});
   std::vector<std::string> one = args, two = args;
   one.insert(one.end(), {"--threads", "1"});
   two.insert(two.end(), {"--threads", "2"});
   const RunResult a = Simulate(one);
   const std::string svg_a = ReadFile(work() / "rest.svg"), csv_a = ReadFile(work() / "trace.csv");
+  const std::string view_a = ReadFile(work() / "view.html");
   const RunResult b = Simulate(two);
   ASSERT_EQ(a.exit_code, 0) << a.err;
   EXPECT_EQ(a.out, b.out);
   EXPECT_EQ(svg_a, ReadFile(work() / "rest.svg"));
   EXPECT_EQ(csv_a, ReadFile(work() / "trace.csv"));
+  EXPECT_EQ(view_a, ReadFile(work() / "view.html"));
+  EXPECT_THAT(view_a, HasSubstr("foresight scene trace 1"));
   EXPECT_THAT(svg_a, HasSubstr("<svg"));
   EXPECT_THAT(csv_a, StartsWith("trial,t_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps\n"));
   EXPECT_GT(CountOf(csv_a, "\n3,"), 10);  // the fourth trial has a trajectory
+}
+
+// --view is checked before the trials run: a missing folder is one line, exit 2, no file.
+TEST_F(SimulateCommandTest, ViewIntoAMissingFolderFailsBeforeTheTrials) {
+  std::vector<std::string> args = OpenGoal("forward", 2);
+  args.insert(args.end(), {"--svg", "rest.svg", "--view", "missing/v.html"});
+  const RunResult r = Simulate(args);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "foresight: error: --view: missing/v.html: cannot write: directory missing "
+                   "does not exist\n");
+  EXPECT_FALSE(fs::exists(work() / "rest.svg"));  // nothing written: the run never started
+  EXPECT_EQ(r.out, "");
+  const RunResult rate = Simulate({"--situation", ShippedSituation("open_goal").string(), "--kick",
+                                   "forward", "--view", "v.html", "--view-rate", "0"});
+  EXPECT_EQ(rate.exit_code, 2);
+  EXPECT_THAT(rate.err, HasSubstr("--view-rate"));
 }
 
 // On a floating base the robot stands on its feet: the JSON names the base and says per trial

@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 #include <filesystem>
+#include <algorithm>
+#include <map>
 #include <set>
 #include <string>
 #include <thread>
@@ -266,6 +268,22 @@ TEST(RobotModelTest, MeshVerticesAreReadAndScaledPerAxis) {
     }
   }
   EXPECT_EQ(corners, expected);
+}
+
+TEST(RobotModelTest, MeshTrianglesIndexItsVerticesAndCloseTheCube) {
+  const RobotModel model = LoadRobotModel(TesterUrdf("mesh"));
+  const RobotShape& mesh = model.links[*model.FindLink("foot")].collisions[0];
+  // A cube: 6 faces of 2 triangles, every edge shared by exactly two triangles (closed).
+  ASSERT_EQ(mesh.mesh_triangles.size(), 12u);
+  std::map<std::pair<int, int>, int> edges;
+  for (const auto& t : mesh.mesh_triangles) {
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_GE(t[k], 0);
+      ASSERT_LT(t[k], static_cast<int>(mesh.mesh_vertices_S_m.size()));
+      ++edges[std::minmax(t[k], t[(k + 1) % 3])];
+    }
+  }
+  for (const auto& [edge, count] : edges) EXPECT_EQ(count, 2);
 }
 
 TEST(RobotModelTest, RevoluteJointWithoutLimitNamesFileAndJoint) {
