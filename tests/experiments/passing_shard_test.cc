@@ -142,22 +142,32 @@ TEST(PassingShardTest, ATrialReadBackIsTheSameTrialBitForBit) {
   ExpectSameTrial(back, odd);
 }
 
-TEST(PassingShardTest, AMalformedTrialIsRefusedWithItsPlace) {
-  const auto error = [](const std::string& text) {
-    const nlohmann::json j = nlohmann::json::parse(text);
-    try {
-      ReadShardTrial(ShardValue(j, "s/shard.json", "results[4].result"), {2, 2, 60.5});
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(no error)");
-  };
+// What reading `j` as the shard trial at `place` says: its error, or "(no error)".
+std::string ShardTrialError(const nlohmann::json& j, const std::string& place) {
+  try {
+    ReadShardTrial(ShardValue(j, "s/shard.json", place), {2, 2, 60.5});
+  } catch (const InputError& e) {
+    return std::string(e.what());
+  }
+  return std::string("(no error)");
+}
+
+// The smallest trial a run could write: one event, two trace frames of the four robots.
+MatchTrialResult MinimalTrial() {
   MatchTrialResult trial;
   trial.counters.opponent_touches = trial.counters.opponent_kicks = {0, 0};
   trial.counters.attacker_backups = trial.counters.attacker_kicks = {0, 0};
   trial.events.push_back({});
   trial.trace.push_back({0.0, {0.0, 0.0}, std::vector<Pose2>(4)});
   trial.trace.push_back({0.5, {0.1, 0.0}, std::vector<Pose2>(4)});
+  return trial;
+}
+
+TEST(PassingShardTest, AMalformedTrialIsRefusedWithItsPlace) {
+  const auto error = [](const std::string& text) {
+    return ShardTrialError(nlohmann::json::parse(text), "results[4].result");
+  };
+  const MatchTrialResult trial = MinimalTrial();
   ASSERT_EQ(error(TrialShardJson(trial).dump()), "(no error)");
   nlohmann::json good = TrialShardJson(trial);
   nlohmann::json j = good;
@@ -180,21 +190,8 @@ TEST(PassingShardTest, AMalformedTrialIsRefusedWithItsPlace) {
 }
 
 TEST(PassingShardTest, ATrialUnlikeAnyPlayedTrialIsRefusedWithItsPlace) {
-  const auto error = [](const nlohmann::json& j) {
-    try {
-      ReadShardTrial(ShardValue(j, "s/shard.json", "r"), {2, 2, 60.5});
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(no error)");
-  };
-  MatchTrialResult trial;
-  trial.counters.opponent_touches = trial.counters.opponent_kicks = {0, 0};
-  trial.counters.attacker_backups = trial.counters.attacker_kicks = {0, 0};
-  trial.events.push_back({});
-  trial.trace.push_back({0.0, {0.0, 0.0}, std::vector<Pose2>(4)});
-  trial.trace.push_back({0.5, {0.1, 0.0}, std::vector<Pose2>(4)});
-  const nlohmann::json good = TrialShardJson(trial);
+  const auto error = [](const nlohmann::json& j) { return ShardTrialError(j, "r"); };
+  const nlohmann::json good = TrialShardJson(MinimalTrial());
   ASSERT_EQ(error(good), "(no error)");
   // A later trace frame without robots made `foresight merge` crash; 1 or 3 robots passed.
   for (const int robots : {0, 1, 3, 5}) {
