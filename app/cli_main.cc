@@ -30,19 +30,24 @@ std::string UnknownCommand(const CLI::App& app, int argc, char** argv) {
   for (const CLI::App* sub : app.get_subcommands({})) {
     names += (names.empty() ? "" : ", ") + sub->get_name();
   }
-  for (int i = 1; i < argc; ++i) {
-    const std::string word = argv[i];
-    if (word == "--models") {
-      ++i;
-      continue;
-    }
-    if (word.empty() || word[0] == '-') continue;
-    return "unknown command '" + word + "' (one of: " + names + ")";
-  }
-  return "a command is required (one of: " + names + ")";
+  const std::string_view word = FirstCommandWord(argc, argv);
+  if (word.empty()) return "a command is required (one of: " + names + ")";
+  return "unknown command '" + std::string(word) + "' (one of: " + names + ")";
 }
 
 }  // namespace
+
+std::string_view FirstCommandWord(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view word = argv[i];
+    if (word == "--models") {
+      ++i;
+    } else if (!word.empty() && word[0] != '-') {
+      return word;
+    }
+  }
+  return {};
+}
 
 void AddTopLevelOptions(CLI::App& app, std::string& models_dir) {
   app.description("foresight: robot-soccer kick selection by forward simulation");

@@ -8,6 +8,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace foresight {
 
@@ -16,6 +17,10 @@ inline constexpr int kExitInternal = 3;
 
 // The `foresight` app with its description, --version and --models (into models_dir).
 void AddTopLevelOptions(CLI::App& app, std::string& models_dir);
+
+// The command named on the command line: the first argument that is not a top-level option
+// (only --models takes a value); empty when there is none (`foresight --help`).
+std::string_view FirstCommandWord(int argc, char** argv);
 
 // Prints "foresight: error: MESSAGE" as one line; returns kExitBadInput.
 int FailBadInput(const std::string& message);

@@ -10,26 +10,11 @@
 #include <filesystem>
 #include <iostream>
 #include <string>
-#include <string_view>
 
 #include "app/cli_main.h"
 #include "app/decide_command.h"
 
 namespace {
-
-// The subcommand named on the command line: the first argument that is not a top-level option
-// (only --models takes a value); empty when there is none (`foresight --help`).
-std::string_view SubcommandOf(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view arg = argv[i];
-    if (arg == "--models") {
-      ++i;
-    } else if (!arg.starts_with("-")) {
-      return arg;
-    }
-  }
-  return {};
-}
 
 int RunDecideOnly(int argc, char** argv) {
   CLI::App app;
@@ -56,7 +41,7 @@ std::filesystem::path FullExecutable() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (SubcommandOf(argc, argv) == "decide") return RunDecideOnly(argc, argv);
+  if (foresight::FirstCommandWord(argc, argv) == "decide") return RunDecideOnly(argc, argv);
   const std::filesystem::path full = FullExecutable();
   execv(full.c_str(), argv);
   std::cerr << "foresight: internal error: cannot run " << full.string() << ": "

@@ -18,6 +18,13 @@ namespace py = pybind11;
 
 namespace foresight::python {
 
+std::unique_lock<std::mutex> LockPlanner(PlannerCore& core) {
+  std::unique_lock<std::mutex> lock(core.mutex, std::defer_lock);
+  const pybind11::gil_scoped_release release;
+  lock.lock();
+  return lock;
+}
+
 std::uint64_t SeedFrom(const py::handle& value) {
   if (PyLong_Check(value.ptr()) ||
       (py::hasattr(value, "__index__") && !py::isinstance<py::bool_>(value))) {
@@ -206,7 +213,7 @@ void AddPlannerObjects(py::module_& m) {
             r.samples = SamplesFrom(samples, core->samples);
             const Strategy s = StrategyFrom(strategy, core->strategy);
             {
-              std::lock_guard<std::mutex> lock(core->mutex);
+              const std::unique_lock<std::mutex> lock = LockPlanner(*core);
               DecideLocked(*core, r.state, s, r.samples, r.seed);
               r.decision = core->scratch;
             }

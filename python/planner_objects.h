@@ -58,6 +58,11 @@ struct PlannerCore {
   std::mutex mutex;
 };
 
+// Takes core.mutex with the GIL released while it waits: a long call (decide_many) holds the
+// mutex without the GIL and takes the GIL to poll for Ctrl-C, so a thread that waited for the
+// mutex holding the GIL would deadlock with it.
+std::unique_lock<std::mutex> LockPlanner(PlannerCore& core);
+
 // Builds the core from a situation (path or dict) with an optional kick model (path, dict or
 // KickModel) replacing the situation's.
 std::shared_ptr<PlannerCore> MakePlannerCore(const pybind11::object& situation,
