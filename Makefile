@@ -83,7 +83,7 @@ same-bytes: setup
 sanitize: setup
 	@cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DFORESIGHT_SANITIZE=ON -DFORESIGHT_BUILD_BENCH=OFF -DFORESIGHT_BUILD_PYTHON=OFF >/dev/null
 	@cmake --build build-asan -j $(JOBS)
-	@ctest --test-dir build-asan --output-on-failure -j $(JOBS)
+	@LSAN_OPTIONS=suppressions=$(CURDIR)/scripts/lsan_suppressions.txt ctest --test-dir build-asan --output-on-failure -j $(JOBS)
 	@build-asan/app/foresight fidelity --situations quick --trials 4 --converged 200 --out build-asan/sanitize-fidelity >/dev/null
 	@build-asan/app/foresight experiment strategies --starts 50 --out build-asan/sanitize-strategies >/dev/null
 	@echo "sanitize: tests, fidelity --situations quick and experiment strategies ran clean"

@@ -59,7 +59,7 @@ MotionClearance LowestOver(const Robot& robot, const KickMotion& motion, double 
   std::vector<double> target(motion.joints.size()), speed(motion.joints.size());
   const Eigen::Isometry3d pose_F_root(
       Eigen::Translation3d(0.0, 0.0, robot.BaseHeightM(motion)));
-  MotionClearance clearance{std::numeric_limits<double>::infinity(), 0.0, -1};
+  MotionClearance clearance{std::numeric_limits<double>::infinity(), 0.0, -1, {}};
   const int steps = static_cast<int>(std::ceil((t_end_s - t_begin_s) / step_s));
   for (int i = 0; i <= steps; ++i) {
     const double t_s = std::min(t_begin_s + i * step_s, t_end_s);

@@ -50,7 +50,7 @@ declare -A seeds=(
 )
 mkdir -p "$build/findings"
 # Leaks inside third-party libraries we cannot fix (each explained in the file).
-export LSAN_OPTIONS="suppressions=$root/fuzz/lsan_suppressions.txt${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+export LSAN_OPTIONS="suppressions=$root/scripts/lsan_suppressions.txt${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 failed=0
 # TARGET NAME WHAT ARGS...: the fuzz binary's TARGET with libFuzzer's ARGS, the log in
 # findings/NAME.log, a finding's input as findings/NAME-*.
