@@ -123,4 +123,14 @@ TEST_F(MergeCommandTest, AMergedCalibrationNamesOnlyItsOwnFlag) {
   EXPECT_TRUE(fs::exists(work() / "merged" / "calibration.html"));
 }
 
+// --out is checked before a shard is read: an --out that cannot be made is the error, not the
+// shards (here missing).
+TEST_F(MergeCommandTest, OutIsCheckedBeforeTheShardsAreRead) {
+  Write("a_file", "x");
+  const RunResult r = Run({"merge", "--out", "a_file/report", "missing_shard"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, StartsWith("foresight: error: --out: cannot create the folder "
+                                "'a_file/report': "));
+}
+
 }  // namespace
