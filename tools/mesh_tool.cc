@@ -210,9 +210,15 @@ int main(int argc, char** argv) {
   const std::vector<SuperellipsoidParams> parts = {NaoFoot(true), NaoFoot(false), AiboPaw(true),
                                                    AiboPaw(false), AiboHead()};
   try {
-    // Every mesh is made first, then all are written as one set (report/output_set.h): each
-    // file replaced whole, none if one cannot be written.
+    // Every mesh file is declared (and its folder made and checked) first, then every mesh is
+    // made, then all are written as one set (report/output_set.h): each file replaced whole,
+    // none if one cannot be written.
     foresight::OutputSet outputs;
+    for (const SuperellipsoidParams& part : parts) {
+      const std::filesystem::path file = out_dir / part.file;
+      std::filesystem::create_directories(file.parent_path());
+      outputs.AddFile(part.file, file);
+    }
     std::vector<std::string> lines;
     for (const SuperellipsoidParams& part : parts) {
       const Mesh mesh = Superellipsoid(part);
@@ -220,12 +226,9 @@ int main(int argc, char** argv) {
         std::cerr << "foresight_mesh_tool: " << part.file << ": a face points inwards\n";
         return 1;
       }
-      const std::filesystem::path file = out_dir / part.file;
-      std::filesystem::create_directories(file.parent_path());
-      outputs.AddFile(part.file, file);
       outputs.Put(part.file, ObjText(Header(part, mesh), mesh));
-      lines.push_back(file.string() + ": " + std::to_string(mesh.vertices.size()) + " vertices, " +
-                      std::to_string(mesh.faces.size()) + " triangles\n");
+      lines.push_back((out_dir / part.file).string() + ": " + std::to_string(mesh.vertices.size()) +
+                      " vertices, " + std::to_string(mesh.faces.size()) + " triangles\n");
     }
     outputs.Commit();
     for (const std::string& line : lines) std::cout << line;
