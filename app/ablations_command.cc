@@ -23,11 +23,10 @@ struct AblationsInputs {
 AblationsInputs LoadAblationsInputs(const PassingOptions& o, const std::filesystem::path& models) {
   AblationsInputs a{LoadPassingInputs(o, "both", models), LoadPassingVariants(o.variants, models)};
   for (const PassingVariant& v : a.variants) v.Apply(a.in.setup);  // every variant valid
-  CheckReportDir(o.out_dir, "--out");
   return a;
 }
 
-void WriteAblationsReport(const PassingOptions& o, const AblationsInputs& a,
+void WriteAblationsReport(OutputSet& outputs, const PassingOptions& o, const AblationsInputs& a,
                           const std::vector<PassingResult>& results, double run_time_s,
                           const std::filesystem::path& models) {
   const std::uint64_t seed = ParseSeed(o.seed);
@@ -42,7 +41,7 @@ void WriteAblationsReport(const PassingOptions& o, const AblationsInputs& a,
   const ReportFiles files = {{dir / "ablations.json", AblationsJson(run).dump(2) + "\n"},
                              {dir / "ablations.csv", AblationsCsv(run)},
                              {dir / "ablations.svg", AblationsSvg(run)}};
-  WriteReport(o.out_dir, files, AblationsText(run), "ablations.svg");
+  WriteReport(outputs, o.out_dir, files, AblationsText(run), "ablations.svg");
 }
 
 // The flags that decide an ablations run's results, as a shard records them.
@@ -68,6 +67,7 @@ int RunAblationsCommand(const PassingOptions& o, const std::filesystem::path& mo
   const int threads = ParseCount("--threads", o.threads, 0, 1024);
   const std::optional<Shard> shard = ParseShardFlag(o.shard);
   const AblationsInputs a = LoadAblationsInputs(o, models);
+  OutputSet outputs = ReportFolderOutput(o.out_dir);  // before the work, not after
   const std::vector<PassingResult> results =
       PlayAblations(a.in.setup, a.variants, *a.in.executor, seed, threads,
                     CommandProgress("ablations", "trials"), shard.value_or(Shard{}));
@@ -75,24 +75,24 @@ int RunAblationsCommand(const PassingOptions& o, const std::filesystem::path& mo
     const std::vector<std::string> teams = AblationTeams(a.variants);
     const ShardHeader header{kAblationsCommand, FORESIGHT_VERSION, *shard, Settings(o),
                              PassingItems(a.in.setup, static_cast<int>(teams.size()))};
-    WriteShardFolder(o.out_dir, header, PassingShardResults(a.in.setup, teams, results, *shard),
-                     start, "trials");
+    WriteShardFolder(outputs, o.out_dir, header,
+                     PassingShardResults(a.in.setup, teams, results, *shard), start, "trials");
     return 0;
   }
-  WriteAblationsReport(o, a, results, SecondsSince(start), models);
+  WriteAblationsReport(outputs, o, a, results, SecondsSince(start), models);
   return 0;
 }
 
-int MergeAblationsCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
-                          const std::filesystem::path& models) {
+int MergeAblationsCommand(const std::vector<ShardPart>& parts, OutputSet& outputs,
+                          const std::string& out_dir, const std::filesystem::path& models) {
   PassingOptions o = PassingOptionsOf(parts.front(), out_dir);
   o.variants = SettingString(parts.front(), "--variants");
   const AblationsInputs a = LoadAblationsInputs(o, models);
   const std::vector<std::string> teams = AblationTeams(a.variants);
   RequireShardItems(parts.front(), PassingItems(a.in.setup, static_cast<int>(teams.size())),
                     "trials");
-  WriteAblationsReport(o, a, MergePassingShards(a.in.setup, teams, parts), ShardsRunTime(parts),
-                       models);
+  WriteAblationsReport(outputs, o, a, MergePassingShards(a.in.setup, teams, parts),
+                       ShardsRunTime(parts), models);
   return 0;
 }
 

@@ -132,9 +132,15 @@ void Fit(CalibrationRun& run) {
 }
 
 // The outputs of a calibration, located and checked (before the work) and written together: the
-// report folder first, so that a model inside it becomes one of its files.
+// report folder first, so that a model inside it becomes one of its files. They may not replace
+// the log, the variation, the situation or the physics file the run reads; --kicks may be --out
+// (a model recalibrated on itself, docs/PHYSICS.md).
 OutputSet CalibrationOutputs(const CalibrateOptions& options) {
   OutputSet outputs;
+  outputs.AddInput("the input --from-csv", options.from_csv);
+  outputs.AddInput("the input --variation", options.variation_file);
+  outputs.AddInput("the input --situation", options.situation_file);
+  outputs.AddInput("the input --physics", options.physics_file);
   outputs.AddFolder("--report", options.report_dir);
   outputs.AddFile("--out", options.out_file);
   return outputs;
@@ -268,7 +274,6 @@ CalibrationRun CalibrateInMemory(const CalibrateOptions& options,
                            {"base_kicks", DisplayPath(base_file, models)},
                            {"base_kicks_hash", ContentHash(base_file)},
                            {"out", options.out_file}};
-  CalibrationOutputs(options);  // before the work, not after
   if (options.from_csv.empty()) {
     if (options.kick.empty() && !options.all) throw InputError("--kick or --all: say which kicks");
     CalibrateFromPhysics(options, models, run, parts);
@@ -304,7 +309,7 @@ int RunCalibrationShard(const CalibrateOptions& options, const Shard& shard,
   if (!options.from_csv.empty() || options.fit_variation || !options.report_dir.empty())
     throw InputError("--shard: only for physics calibration, with --out DIR and no --report");
   if (options.kick.empty() && !options.all) throw InputError("--kick or --all: say which kicks");
-  CheckReportDir(options.out_file, "--out");
+  OutputSet outputs = ReportFolderOutput(options.out_file);  // before the work, not after
   PhysicsCalibrationSettings settings;
   settings.robot = options.robot;
   settings.kick = options.all ? "" : options.kick;
@@ -323,14 +328,17 @@ int RunCalibrationShard(const CalibrateOptions& options, const Shard& shard,
   const PhysicsCalibration part = RunPhysicsCalibration(settings, models);
   const ShardHeader header{kCalibrateCommand, FORESIGHT_VERSION, shard, CalibrateSettings(options),
                            trials};
-  WriteShardFolder(options.out_file, header, CalibrationShardResults(part, shard, trials), start,
-                   "trials per kick");
+  WriteShardFolder(outputs, options.out_file, header, CalibrationShardResults(part, shard, trials),
+                   start, "trials per kick");
   return 0;
 }
 
 }  // namespace
 
-int WriteCalibration(const CalibrateOptions& options, const CalibrationRun& run);
+// Writes the model and the report into `outputs`: --out and --report of calibrate, or merge's
+// one folder --out holding both (`model_in_report`).
+int WriteCalibration(const CalibrateOptions& options, const CalibrationRun& run, OutputSet& outputs,
+                     bool model_in_report);
 
 int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir) {
   const std::filesystem::path models =
@@ -341,11 +349,12 @@ int RunCalibrate(const CalibrateOptions& options, const std::string& models_dir)
     return RunCalibrationShard(options, *shard, models);
   if (options.fit_variation) return RunVariationFit(options, models);
   if (!options.fit_trials.empty()) throw InputError("--fit-trials: only with --fit-variation");
-  return WriteCalibration(options, CalibrateInMemory(options, models));
+  OutputSet outputs = CalibrationOutputs(options);  // before the work, not after
+  return WriteCalibration(options, CalibrateInMemory(options, models), outputs, false);
 }
 
-int MergeCalibrationCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
-                            const std::filesystem::path& models) {
+int MergeCalibrationCommand(const std::vector<ShardPart>& parts, OutputSet& outputs,
+                            const std::string& out_dir, const std::filesystem::path& models) {
   const ShardPart& first = parts.front();
   CalibrateOptions options;
   options.robot = SettingString(first, "--robot");
@@ -360,7 +369,8 @@ int MergeCalibrationCommand(const std::vector<ShardPart>& parts, const std::stri
   options.variation_file = SettingString(first, "--variation");
   options.confidence = SettingString(first, "--confidence");
   options.resamples = SettingString(first, "--resamples");
-  // What `calibrate --report DIR --out DIR/ROBOT_calibrated.json` writes.
+  // What `calibrate --report DIR --out DIR/ROBOT_calibrated.json` writes, as merge's one folder
+  // --out (declared by RunMergeCommand).
   options.report_dir = out_dir;
   options.out_file = (std::filesystem::path(out_dir) / (options.robot + "_calibrated.json")).string();
   if (first.header.items != ParseCount("--trials", options.trials, 8, kMaxTrials)) {
@@ -369,10 +379,11 @@ int MergeCalibrationCommand(const std::vector<ShardPart>& parts, const std::stri
   }
   CalibrationRun run = CalibrateInMemory(options, models, &parts);
   run.provenance.run_time_s = ShardsRunTime(parts);
-  return WriteCalibration(options, run);
+  return WriteCalibration(options, run, outputs, true);
 }
 
-int WriteCalibration(const CalibrateOptions& options, const CalibrationRun& run) {
+int WriteCalibration(const CalibrateOptions& options, const CalibrationRun& run, OutputSet& outputs,
+                     bool model_in_report) {
   // Everything is made before anything is written, and the model is read back through the
   // kick-model reader first: a fit from damaged data (a merged shard's) is refused, not written.
   const std::string model = KickModelJson(run.fitted, ModelNotes(run));
@@ -386,9 +397,13 @@ int WriteCalibration(const CalibrateOptions& options, const CalibrationRun& run)
     files.push_back({dir / "calibration.html", CalibrationHtml(run)});
   }
   const std::string text = CalibrationText(run);
-  OutputSet outputs = CalibrationOutputs(options);
-  outputs.Put("--out", model);
-  if (!options.report_dir.empty()) outputs.Put("--report", ReportFolderFiles(files));
+  if (model_in_report) {
+    files.push_back({options.out_file, model});
+    outputs.Put("--out", ReportFolderFiles(files));
+  } else {
+    outputs.Put("--out", model);
+    if (!options.report_dir.empty()) outputs.Put("--report", ReportFolderFiles(files));
+  }
   outputs.Commit();  // the model and the report together, or neither
   std::cout << text << "wrote the calibrated kick model to " << options.out_file << "\n";
   if (!options.report_dir.empty()) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/cli_values.h"
+#include "report/output_set.h"
 #include "report/shard_file.h"
 #include "validation/calibration.h"
 #include "validation/calibration_report.h"
@@ -51,7 +52,7 @@ CalibrationRun CalibrateInMemory(const CalibrateOptions& options,
 
 // `foresight merge` of a sharded physics calibration into `out_dir`: what
 // `calibrate --report DIR --out DIR/ROBOT_calibrated.json` writes.
-int MergeCalibrationCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
-                            const std::filesystem::path& models);
+int MergeCalibrationCommand(const std::vector<ShardPart>& parts, OutputSet& outputs,
+                            const std::string& out_dir, const std::filesystem::path& models);
 
 }  // namespace foresight

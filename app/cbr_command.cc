@@ -85,7 +85,9 @@ auto WithRetrieval(const CbrOptions& o, const fs::path& models, Use&& use) {
 }
 
 int RunRetrieve(const CbrOptions& o, const fs::path& models) {
-  OutputSet outputs;  // located and checked before the work
+  OutputSet outputs;  // located and checked before the work; no output replaces an input
+  outputs.AddInput("the input --problem", o.problem_file);
+  outputs.AddInput("the input --params", o.params_file);
   outputs.AddFile("--svg", o.svg_file);
   return WithRetrieval(o, models, [&](const CbrRetrieveRun& run, const LoadedCaseBase& base) {
     // Everything is made before anything is written, so a failure leaves no file behind.
@@ -187,7 +189,7 @@ int RunCheck(const CbrOptions& o, const fs::path& models) {
 }
 
 int RunAtlas(const CbrOptions& o, const fs::path& models) {
-  CheckReportDir(o.out_dir, "--out");  // before the work, not after
+  OutputSet outputs = ReportFolderOutput(o.out_dir);  // before the work, not after
   CbrAtlasInput input;
   input.case_base_path = CaseBasePath(o, models);
   input.params_file = ParamsPath(o, models);
@@ -197,7 +199,8 @@ int RunAtlas(const CbrOptions& o, const fs::path& models) {
   input.params = ParamsFor(o, models, base.rules.field, base.rules.kicks);
   const std::string html = CbrAtlasHtml(input);
   const fs::path page = fs::path(o.out_dir) / "atlas.html";
-  WriteReportFiles(o.out_dir, "--out", {{page, html}});
+  outputs.Put("--out", std::vector<ReportFile>{{page.filename().string(), html}});
+  outputs.Commit();
   Print(Format("atlas of %zu hand-written cases (%zu stored): ", base.cases.HandWrittenCount(),
                base.cases.size()) +
         page.string() + "\n");

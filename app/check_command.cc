@@ -28,6 +28,7 @@ int RunCheckCommand(const CheckOptions& options, const std::string& models_dir) 
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
   const int threads = ParseCount("--threads", options.threads, 0, 1024);
   OutputSet outputs;  // located and checked before the checks run
+  outputs.AddInput("the input --spec", options.spec_file);
   outputs.AddFile("--junit", options.junit_file);
   const std::filesystem::path spec_file = options.spec_file.empty()
                                               ? DataFile(models, DataFolder::kCheckSpecs, "default")

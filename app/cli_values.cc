@@ -10,8 +10,7 @@
 #include "common/error.h"
 #include "common/long_call.h"
 #include "common/progress_log.h"
-#include "report/atomic_file.h"
-#include "report/report_folder.h"
+#include "report/output_set.h"
 
 namespace foresight {
 
@@ -72,12 +71,10 @@ std::vector<ReportFile> ReportFolderFiles(const ReportFiles& files) {
   return named;
 }
 
-void WriteReportFiles(const std::string& dir, const std::string& flag, const ReportFiles& files) {
-  WriteReportFolder(dir, ReportFolderFiles(files), flag);
-}
-
-void CheckReportDir(const std::string& dir, const std::string& flag) {
-  CheckReportFolder(dir, flag);
+OutputSet ReportFolderOutput(const std::string& dir) {
+  OutputSet outputs;
+  outputs.AddFolder("--out", dir);
+  return outputs;
 }
 
 std::string DefaultText(double value) {

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "report/report_folder.h"
+#include "report/output_set.h"
 
 namespace foresight {
 
@@ -32,15 +32,13 @@ std::string DefaultText(double value);
 // the loop.
 std::function<void(int, int)> CommandProgress(const std::string& label, const std::string& unit);
 
-// Writes the report folder `dir` whole (report/report_folder.h): the files, given as paths in
-// `dir`, replace the previous report at once. Call it only once every content is computed.
+// A command's report folder: the files, given as paths in the folder, as an OutputSet's folder
+// content (report/output_set.h).
 using ReportFiles = std::vector<std::pair<std::filesystem::path, std::string>>;
-void WriteReportFiles(const std::string& dir, const std::string& flag, const ReportFiles& files);
-// The same files as an OutputSet's folder content (report/output_set.h).
 std::vector<ReportFile> ReportFolderFiles(const ReportFiles& files);
 
-// Checks, leaving nothing behind, that WriteReportFiles can succeed (CheckReportFolder), so
-// that a bad flag fails before the work instead of after it.
-void CheckReportDir(const std::string& dir, const std::string& flag);
+// An OutputSet holding the report folder `dir` of the flag --out, declared and so checked now:
+// call it before the work, put the files in and commit them after it.
+OutputSet ReportFolderOutput(const std::string& dir);
 
 }  // namespace foresight

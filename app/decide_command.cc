@@ -67,7 +67,9 @@ nlohmann::ordered_json DecideJson(const DecideOptions& options,
 int RunDecide(const DecideOptions& options, const std::string& models_dir) {
   const std::filesystem::path models =
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
-  OutputSet outputs;  // located and checked before the work
+  OutputSet outputs;  // located and checked before the work; no output replaces an input
+  outputs.AddInput("the input --situation", options.situation_file);
+  outputs.AddInput("the input --kicks", options.kicks_file);
   outputs.AddFile("--svg", options.svg_file);
   return WithDecision(options, models, [&](const DecisionRun& run) {
     // Everything is made before anything is written, so a failure leaves no file behind.

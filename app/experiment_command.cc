@@ -31,13 +31,13 @@ bool IsExperimentShardCommand(const std::string& command) {
          command == kPassingCommand || command == kAblationsCommand;
 }
 
-int MergeExperimentShards(const std::vector<ShardPart>& parts, const std::string& out_dir,
-                          const std::filesystem::path& models) {
+int MergeExperimentShards(const std::vector<ShardPart>& parts, OutputSet& outputs,
+                          const std::string& out_dir, const std::filesystem::path& models) {
   const std::string& command = parts.front().header.command;
-  if (command == kStrategiesCommand) return MergeStrategiesCommand(parts, out_dir, models);
-  if (command == kPassingCommand) return MergePassingCommand(parts, out_dir, models);
-  if (command == kAblationsCommand) return MergeAblationsCommand(parts, out_dir, models);
-  return MergeStabilityCommand(parts, out_dir, models);
+  if (command == kStrategiesCommand) return MergeStrategiesCommand(parts, outputs, out_dir, models);
+  if (command == kPassingCommand) return MergePassingCommand(parts, outputs, out_dir, models);
+  if (command == kAblationsCommand) return MergeAblationsCommand(parts, outputs, out_dir, models);
+  return MergeStabilityCommand(parts, outputs, out_dir, models);
 }
 
 }  // namespace foresight

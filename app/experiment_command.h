@@ -13,6 +13,7 @@
 #include "app/passing_command.h"
 #include "app/stability_command.h"
 #include "app/strategies_command.h"
+#include "report/output_set.h"
 #include "report/shard_file.h"
 
 namespace foresight {
@@ -30,9 +31,10 @@ int RunExperimentCommand(const CLI::App& app, const ExperimentOptions& options,
                          const std::string& models_dir);
 
 // `foresight merge` of the shards of an experiment (any of the four) into the report folder
-// `out_dir`: the same files as the unsharded run.
+// `out_dir`, the --out that `outputs` declared before the shards were read: the same files as
+// the unsharded run.
 bool IsExperimentShardCommand(const std::string& command);
-int MergeExperimentShards(const std::vector<ShardPart>& parts, const std::string& out_dir,
-                          const std::filesystem::path& models);
+int MergeExperimentShards(const std::vector<ShardPart>& parts, OutputSet& outputs,
+                          const std::string& out_dir, const std::filesystem::path& models);
 
 }  // namespace foresight

@@ -28,9 +28,10 @@ RunProvenance ExperimentProvenance(const std::filesystem::path& params_file, con
   return provenance;
 }
 
-void WriteReport(const std::string& out_dir, const ReportFiles& files, const std::string& text,
-                 const std::string& main_file) {
-  WriteReportFiles(out_dir, "--out", files);
+void WriteReport(OutputSet& outputs, const std::string& out_dir, const ReportFiles& files,
+                 const std::string& text, const std::string& main_file) {
+  outputs.Put("--out", ReportFolderFiles(files));
+  outputs.Commit();
   std::cout << text << "figures and data: " << (std::filesystem::path(out_dir) / main_file).string()
             << " and the other files in " << out_dir << "\n"
             << std::flush;

@@ -23,9 +23,10 @@ double SecondsSince(std::chrono::steady_clock::time_point start);
 RunProvenance ExperimentProvenance(const std::filesystem::path& params_file, const Situation& scene,
                                    std::uint64_t seed, const std::filesystem::path& models);
 
-// Writes the report folder (every output computed before the first is written; each file
-// replaced atomically) and prints `text` and where the figures are (`main_file`).
-void WriteReport(const std::string& out_dir, const ReportFiles& files, const std::string& text,
-                 const std::string& main_file);
+// Commits `files` as the report folder --out that `outputs` declared before the work (every
+// file computed before the first is written, the folder replaced whole) and prints `text` and
+// where the figures are (`main_file`).
+void WriteReport(OutputSet& outputs, const std::string& out_dir, const ReportFiles& files,
+                 const std::string& text, const std::string& main_file);
 
 }  // namespace foresight

@@ -9,7 +9,6 @@
 #include "app/shard_output.h"
 #include "common/error.h"
 #include "models/model_paths.h"
-#include "report/atomic_file.h"
 #include "report/provenance.h"
 #include "validation/fidelity_html.h"
 #include "validation/fidelity_report.h"
@@ -57,7 +56,7 @@ nlohmann::ordered_json FidelitySettingsOf(const FidelityOptions& o) {
           {"--coarse-rebounds", o.coarse_rebounds}, {"--base", o.base}};
 }
 
-// The run's settings, its set and its provenance (run time aside), the report folder checked.
+// The run's settings, its set and its provenance (run time aside).
 struct FidelityPlan {
   FidelityRun run;
   FidelitySet set;
@@ -75,7 +74,6 @@ FidelityPlan PlanFidelity(const FidelityOptions& options, const std::filesystem:
   run.settings.physics_file = options.physics_file;
   run.settings.base = ParseBaseFlag(options.base);
   run.settings.progress = CommandProgress("fidelity", "situations");
-  if (!options.out_dir.empty()) CheckReportDir(options.out_dir, "--out");  // before the work
   SituationOverrides overrides;
   overrides.kicks_file = options.kicks_file;
   overrides.coarse_rebounds = ParseSwitch("--coarse-rebounds", options.coarse_rebounds);
@@ -113,7 +111,7 @@ FidelityPlan PlanFidelity(const FidelityOptions& options, const std::filesystem:
   return plan;
 }
 
-int WriteFidelityReport(const std::string& out_dir, const FidelityRun& run,
+int WriteFidelityReport(OutputSet& outputs, const std::string& out_dir, const FidelityRun& run,
                         const std::filesystem::path& models) {
   const std::filesystem::path dir(out_dir);
   ReportFiles files = {{dir / "fidelity.json", FidelityJson(run).dump(2) + "\n"},
@@ -125,7 +123,8 @@ int WriteFidelityReport(const std::string& out_dir, const FidelityRun& run,
     files.push_back({dir / name, std::move(page)});
   }
   const std::string text = FidelityText(run);
-  WriteReportFiles(out_dir, "--out", files);
+  outputs.Put("--out", ReportFolderFiles(files));
+  outputs.Commit();
   std::cout << text << "report: " << (dir / "fidelity.html").string() << "\n" << std::flush;
   if (!std::cout) throw InputError("cannot write to standard output");
   return 0;
@@ -139,19 +138,21 @@ int RunFidelityCommand(const FidelityOptions& options, const std::string& models
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
   const std::optional<Shard> shard = ParseShardFlag(options.shard);
   FidelityPlan plan = PlanFidelity(options, models);
+  OutputSet outputs = ReportFolderOutput(options.out_dir);  // before the work, not after
   FidelityRun& run = plan.run;
   if (shard) {
     run.settings.shard = *shard;
     const FidelityResult part = RunFidelity(plan.set, models, run.settings);
     const ShardHeader header{kFidelityCommand, FORESIGHT_VERSION, *shard,
                              FidelitySettingsOf(options), static_cast<int>(plan.set.cases.size())};
-    WriteShardFolder(options.out_dir, header, FidelityShardResults(part), start, "situations");
+    WriteShardFolder(outputs, options.out_dir, header, FidelityShardResults(part), start,
+                     "situations");
     return 0;
   }
   run.result = RunFidelity(plan.set, models, run.settings);
   run.provenance.run_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return WriteFidelityReport(options.out_dir, run, models);
+  return WriteFidelityReport(outputs, options.out_dir, run, models);
 }
 
 FidelityRun RunFidelityInMemory(const FidelityOptions& options,
@@ -164,8 +165,8 @@ FidelityRun RunFidelityInMemory(const FidelityOptions& options,
   return std::move(plan.run);
 }
 
-int MergeFidelityCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
-                        const std::filesystem::path& models) {
+int MergeFidelityCommand(const std::vector<ShardPart>& parts, OutputSet& outputs,
+                         const std::string& out_dir, const std::filesystem::path& models) {
   const ShardPart& first = parts.front();
   FidelityOptions options;
   options.situations = SettingString(first, "--situations");
@@ -183,7 +184,7 @@ int MergeFidelityCommand(const std::vector<ShardPart>& parts, const std::string&
   RequireShardItems(first, static_cast<int>(plan.set.cases.size()), "situations");
   plan.run.result = MergeFidelityShards(plan.set, plan.run.settings, parts);
   plan.run.provenance.run_time_s = ShardsRunTime(parts);
-  return WriteFidelityReport(out_dir, plan.run, models);
+  return WriteFidelityReport(outputs, out_dir, plan.run, models);
 }
 
 }  // namespace foresight

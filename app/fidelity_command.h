@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/cli_values.h"
+#include "report/output_set.h"
 #include "report/shard_file.h"
 #include "validation/fidelity.h"
 #include "validation/fidelity_report.h"
@@ -42,7 +43,7 @@ FidelityRun RunFidelityInMemory(const FidelityOptions& options,
 
 // `foresight merge` of a sharded fidelity run into the report folder `out_dir`.
 inline constexpr char kFidelityCommand[] = "fidelity";
-int MergeFidelityCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
-                         const std::filesystem::path& models);
+int MergeFidelityCommand(const std::vector<ShardPart>& parts, OutputSet& outputs,
+                         const std::string& out_dir, const std::filesystem::path& models);
 
 }  // namespace foresight

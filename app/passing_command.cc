@@ -76,8 +76,8 @@ void AddScorecardFiles(const std::filesystem::path& dir, const PaperTables& pape
 
 // Every team's report and, for two teams, their paired comparison and the scorecard against the
 // paper, written to --out.
-void WritePassingReport(const PassingOptions& o, const PassingInputs& in, PassingTrials trials,
-                        const std::optional<PaperTables>& paper,
+void WritePassingReport(OutputSet& outputs, const PassingOptions& o, const PassingInputs& in,
+                        PassingTrials trials, const std::optional<PaperTables>& paper,
                         const std::filesystem::path& models) {
   const PassingSetup& setup = in.setup;
   const std::uint64_t seed = ParseSeed(o.seed);
@@ -112,7 +112,7 @@ void WritePassingReport(const PassingOptions& o, const PassingInputs& in, Passin
     text += PassingComparisonText(comparison);
     if (paper) AddScorecardFiles(dir, *paper, runs, models, files, text);
   }
-  WriteReport(o.out_dir, files, text,
+  WriteReport(outputs, o.out_dir, files, text,
               both ? "passing_" + setup.teams[0] + "_outcomes.svg" : "passing_outcomes.svg");
 }
 
@@ -141,7 +141,7 @@ int RunPassingCommand(const PassingOptions& o, const std::filesystem::path& mode
   const PassingInputs in = LoadPassingInputs(o, o.team, models);
   const PassingSetup& setup = in.setup;
   const std::optional<PaperTables> paper = LoadScorecardTables(setup, models);
-  CheckReportDir(o.out_dir, "--out");  // before the work, not after
+  OutputSet outputs = ReportFolderOutput(o.out_dir);  // before the work, not after
   PassingTrials trials;
   for (std::size_t t = 0; t < setup.teams.size(); ++t) {
     const std::string& team = setup.teams[t];
@@ -154,17 +154,17 @@ int RunPassingCommand(const PassingOptions& o, const std::filesystem::path& mode
   if (shard) {
     const ShardHeader header{kPassingCommand, FORESIGHT_VERSION, *shard, Settings(o),
                              PassingItems(setup, static_cast<int>(setup.teams.size()))};
-    WriteShardFolder(o.out_dir, header,
+    WriteShardFolder(outputs, o.out_dir, header,
                      PassingShardResults(setup, setup.teams, trials.results, *shard), start,
                      "trials");
     return 0;
   }
-  WritePassingReport(o, in, std::move(trials), paper, models);
+  WritePassingReport(outputs, o, in, std::move(trials), paper, models);
   return 0;
 }
 
-int MergePassingCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
-                        const std::filesystem::path& models) {
+int MergePassingCommand(const std::vector<ShardPart>& parts, OutputSet& outputs,
+                        const std::string& out_dir, const std::filesystem::path& models) {
   PassingOptions o = PassingOptionsOf(parts.front(), out_dir);
   o.team = SettingString(parts.front(), "--team");
   const PassingInputs in = LoadPassingInputs(o, o.team, models);
@@ -172,11 +172,10 @@ int MergePassingCommand(const std::vector<ShardPart>& parts, const std::string& 
   RequireShardItems(parts.front(), PassingItems(setup, static_cast<int>(setup.teams.size())),
                     "trials");
   const std::optional<PaperTables> paper = LoadScorecardTables(setup, models);
-  CheckReportDir(out_dir, "--out");
   PassingTrials trials;
   trials.results = MergePassingShards(setup, setup.teams, parts);
   trials.run_times_s.assign(setup.teams.size(), ShardsRunTime(parts));
-  WritePassingReport(o, in, std::move(trials), paper, models);
+  WritePassingReport(outputs, o, in, std::move(trials), paper, models);
   return 0;
 }
 

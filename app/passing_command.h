@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/passing_inputs.h"
+#include "report/output_set.h"
 #include "report/shard_file.h"
 
 namespace foresight {
@@ -19,7 +20,7 @@ inline constexpr char kPassingCommand[] = "experiment passing";
 void AddPassingCommand(CLI::App& experiment, PassingOptions& options);
 int RunPassingCommand(const PassingOptions& options, const std::filesystem::path& models);
 // The report of the shards of one passing run in `out_dir`.
-int MergePassingCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
-                        const std::filesystem::path& models);
+int MergePassingCommand(const std::vector<ShardPart>& parts, OutputSet& outputs,
+                        const std::string& out_dir, const std::filesystem::path& models);
 
 }  // namespace foresight

@@ -18,13 +18,15 @@ std::optional<Shard> ParseShardFlag(const std::string& text) {
   return ParseShard("--shard", text);
 }
 
-void WriteShardFolder(const std::string& out_dir, ShardHeader header,
+void WriteShardFolder(OutputSet& outputs, const std::string& out_dir, ShardHeader header,
                       const nlohmann::json& results, std::chrono::steady_clock::time_point start,
                       const std::string& item_name) {
   header.run_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::filesystem::path file = std::filesystem::path(out_dir) / kShardFileName;
-  WriteReportFiles(out_dir, "--out", {{file, ShardFileText(header, results)}});
+  outputs.Put("--out", std::vector<ReportFile>{
+                           {std::string(kShardFileName), ShardFileText(header, results)}});
+  outputs.Commit();
   std::cout << header.command << ": shard " << header.shard.Text() << ": " << results.size()
             << " of " << header.items << " " << item_name << " in " << file.string()
             << "\nmerge all " << header.shard.count

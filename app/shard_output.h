@@ -9,6 +9,7 @@
 #include <string>
 
 #include "common/shard.h"
+#include "report/output_set.h"
 #include "report/shard_file.h"
 
 namespace foresight {
@@ -18,8 +19,9 @@ void AddShardOption(CLI::App& command, std::string& shard);
 // The parsed --shard, or nothing when the flag was not given.
 std::optional<Shard> ParseShardFlag(const std::string& text);
 
-// Writes `out_dir`/shard.json and prints what it holds and how to merge.
-void WriteShardFolder(const std::string& out_dir, ShardHeader header,
+// Commits `out_dir`/shard.json as the folder --out that `outputs` declared before the work
+// (ReportFolderOutput) and prints what it holds and how to merge.
+void WriteShardFolder(OutputSet& outputs, const std::string& out_dir, ShardHeader header,
                       const nlohmann::json& results, std::chrono::steady_clock::time_point start,
                       const std::string& item_name);
 

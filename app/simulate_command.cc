@@ -91,6 +91,10 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
   const std::filesystem::path models =
       models_dir.empty() ? DefaultModelsDir() : std::filesystem::path(models_dir);
   OutputSet outputs;  // located and checked before the work, written together after it
+  outputs.AddInput("the input --situation", options.situation_file);
+  outputs.AddInput("the input --kicks", options.kicks_file);
+  outputs.AddInput("the input --physics", options.physics_file);
+  outputs.AddInput("the input --variation", options.variation_file);
   outputs.AddFile("--svg", options.svg_file);
   outputs.AddFile("--trace", options.trace_file);
   outputs.AddFile("--view", options.view_file);

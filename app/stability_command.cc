@@ -32,7 +32,7 @@ StabilityOptions StabilityOptionsOf(const ShardPart& part, const std::string& ou
   return o;
 }
 
-// The params of the flags, checked, and the report folder checked before the work.
+// The params of the flags, checked.
 StabilityParams LoadStabilityRun(const StabilityOptions& o, const std::filesystem::path& models) {
   if (o.quick && !o.params.empty()) throw InputError("--quick and --params exclude each other");
   const std::string name =
@@ -57,18 +57,17 @@ StabilityParams LoadStabilityRun(const StabilityOptions& o, const std::filesyste
   }
   WithFile("--strategy/--repeats/--samples with " + DisplayPath(params.file, models),
            [&] { params.Validate(); });
-  CheckReportDir(o.out_dir, "--out");  // before hours of work, not after
   return params;
 }
 
-void WriteStabilityReport(const std::string& out_dir, const StabilityRun& run) {
+void WriteStabilityReport(OutputSet& outputs, const std::string& out_dir, const StabilityRun& run) {
   const std::filesystem::path dir(out_dir);
   const ReportFiles files = {{dir / "stability.json", StabilityJson(run).dump(2) + "\n"},
                              {dir / "stability.csv", StabilityCountsCsv(run)},
                              {dir / "stability_positions.csv", StabilityPositionsCsv(run)},
                              {dir / "stability.svg", StabilityPlotSvg(run)},
                              {dir / "stability_map.svg", StabilityMapSvg(run)}};
-  WriteReport(out_dir, files, StabilityText(run), "stability.svg");
+  WriteReport(outputs, out_dir, files, StabilityText(run), "stability.svg");
 }
 
 }  // namespace
@@ -96,12 +95,14 @@ int RunStabilityCommand(const StabilityOptions& o, const std::filesystem::path& 
   const int threads = ParseCount("--threads", o.threads, 0, 1024);
   const std::optional<Shard> shard = ParseShardFlag(o.shard);
   const StabilityParams params = LoadStabilityRun(o, models);
+  OutputSet outputs = ReportFolderOutput(o.out_dir);  // before hours of work, not after
   const auto progress = CommandProgress("stability", "poses");
   if (shard) {
     const StabilityResult part = RunStability(params, seed, threads, progress, *shard);
     const ShardHeader header{kStabilityCommand, FORESIGHT_VERSION, *shard, StabilitySettings(o),
                              StabilityItems(params)};
-    WriteShardFolder(o.out_dir, header, StabilityShardResults(part, *shard), start, "poses");
+    WriteShardFolder(outputs, o.out_dir, header, StabilityShardResults(part, *shard), start,
+                     "poses");
     return 0;
   }
   StabilityRun run;
@@ -109,12 +110,12 @@ int RunStabilityCommand(const StabilityOptions& o, const std::filesystem::path& 
   run.params = &params;
   run.result = RunStability(params, seed, threads, progress);
   run.provenance.run_time_s = SecondsSince(start);
-  WriteStabilityReport(o.out_dir, run);
+  WriteStabilityReport(outputs, o.out_dir, run);
   return 0;
 }
 
-int MergeStabilityCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
-                          const std::filesystem::path& models) {
+int MergeStabilityCommand(const std::vector<ShardPart>& parts, OutputSet& outputs,
+                          const std::string& out_dir, const std::filesystem::path& models) {
   const StabilityOptions o = StabilityOptionsOf(parts.front(), out_dir);
   const std::uint64_t seed = ParseSeed(o.seed);
   const StabilityParams params = LoadStabilityRun(o, models);
@@ -124,7 +125,7 @@ int MergeStabilityCommand(const std::vector<ShardPart>& parts, const std::string
   run.params = &params;
   run.result = MergeStabilityShards(params, parts);
   run.provenance.run_time_s = ShardsRunTime(parts);
-  WriteStabilityReport(out_dir, run);
+  WriteStabilityReport(outputs, out_dir, run);
   return 0;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "report/output_set.h"
 #include "report/shard_file.h"
 
 namespace foresight {
@@ -30,7 +31,7 @@ struct StabilityOptions {
 void AddStabilityCommand(CLI::App& experiment, StabilityOptions& options);
 int RunStabilityCommand(const StabilityOptions& options, const std::filesystem::path& models);
 // The report of the shards of one stability run in `out_dir`.
-int MergeStabilityCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
-                          const std::filesystem::path& models);
+int MergeStabilityCommand(const std::vector<ShardPart>& parts, OutputSet& outputs,
+                          const std::string& out_dir, const std::filesystem::path& models);
 
 }  // namespace foresight

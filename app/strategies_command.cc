@@ -76,19 +76,17 @@ std::unique_ptr<StrategiesPlan> PlanStrategies(const StrategiesOptions& o,
   if (o.physics) {
     plan->physics = LoadPhysicsSetup(params.situation, models, o.physics_file, base);
     RequireAllKickMotions(*plan->physics, run.provenance.Input("kicks"));
-    CheckReportDir(o.out_dir, "--out");  // before the work, not after
     run.provenance.SetInput("executor", "physics");
     run.provenance.SetInput("physics", DisplayPath(plan->physics->physics_file, models));
     run.provenance.SetInput("robot_base",
                             std::string(RobotBaseName(plan->physics->params.robot.base)));
   } else {
-    CheckReportDir(o.out_dir, "--out");
     run.provenance.SetInput("executor", "coarse");
   }
   return plan;
 }
 
-void WriteStrategiesReport(const std::string& out_dir, StrategiesRun& run) {
+void WriteStrategiesReport(OutputSet& outputs, const std::string& out_dir, StrategiesRun& run) {
   run.summaries = SummariseStrategies(run.result);
   const std::filesystem::path dir(out_dir);
   const ReportFiles files = {{dir / "strategies.json", StrategiesJson(run).dump(2) + "\n"},
@@ -96,7 +94,7 @@ void WriteStrategiesReport(const std::string& out_dir, StrategiesRun& run) {
                              {dir / "strategies_turns.svg", StrategiesTurnsSvg(run)},
                              {dir / "strategies_kicks.svg", StrategiesKicksSvg(run)},
                              {dir / "strategies_paths.svg", StrategiesPathsSvg(run)}};
-  WriteReport(out_dir, files, StrategiesText(run), "strategies_turns.svg");
+  WriteReport(outputs, out_dir, files, StrategiesText(run), "strategies_turns.svg");
 }
 
 }  // namespace
@@ -127,6 +125,7 @@ int RunStrategiesCommand(const StrategiesOptions& o, const std::filesystem::path
   const int threads = ParseCount("--threads", o.threads, 0, 1024);
   const std::optional<Shard> shard = ParseShardFlag(o.shard);
   const std::unique_ptr<StrategiesPlan> plan = PlanStrategies(o, models);
+  OutputSet outputs = ReportFolderOutput(o.out_dir);  // before the work, not after
   const OutcomeSimulator* executor = plan->physics ? &*plan->physics->simulator : nullptr;
   const auto progress = CommandProgress("strategies", "runs");
   if (shard) {
@@ -134,26 +133,26 @@ int RunStrategiesCommand(const StrategiesOptions& o, const std::filesystem::path
         RunStrategies(plan->params, executor, seed, threads, progress, *shard);
     const ShardHeader header{kStrategiesCommand, FORESIGHT_VERSION, *shard, StrategiesSettings(o),
                              plan->params.starts};
-    WriteShardFolder(o.out_dir, header, StrategiesShardResults(plan->params, part, *shard), start,
-                     "starts");
+    WriteShardFolder(outputs, o.out_dir, header, StrategiesShardResults(plan->params, part, *shard),
+                     start, "starts");
     return 0;
   }
   StrategiesRun& run = plan->run;
   run.result = RunStrategies(plan->params, executor, seed, threads, progress);
   run.provenance.run_time_s = SecondsSince(start);
-  WriteStrategiesReport(o.out_dir, run);
+  WriteStrategiesReport(outputs, o.out_dir, run);
   return 0;
 }
 
-int MergeStrategiesCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
-                           const std::filesystem::path& models) {
+int MergeStrategiesCommand(const std::vector<ShardPart>& parts, OutputSet& outputs,
+                           const std::string& out_dir, const std::filesystem::path& models) {
   const StrategiesOptions o = StrategiesOptionsOf(parts.front(), out_dir);
   const std::unique_ptr<StrategiesPlan> plan = PlanStrategies(o, models);
   RequireShardItems(parts.front(), plan->params.starts, "starts");
   StrategiesRun& run = plan->run;
   run.result = MergeStrategiesShards(plan->params, ParseSeed(o.seed), parts);
   run.provenance.run_time_s = ShardsRunTime(parts);
-  WriteStrategiesReport(out_dir, run);
+  WriteStrategiesReport(outputs, out_dir, run);
   return 0;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "report/output_set.h"
 #include "report/shard_file.h"
 
 namespace foresight {
@@ -31,7 +32,7 @@ struct StrategiesOptions {
 void AddStrategiesCommand(CLI::App& experiment, StrategiesOptions& options);
 int RunStrategiesCommand(const StrategiesOptions& options, const std::filesystem::path& models);
 // The report of the shards of one strategies run in `out_dir`.
-int MergeStrategiesCommand(const std::vector<ShardPart>& parts, const std::string& out_dir,
-                           const std::filesystem::path& models);
+int MergeStrategiesCommand(const std::vector<ShardPart>& parts, OutputSet& outputs,
+                           const std::string& out_dir, const std::filesystem::path& models);
 
 }  // namespace foresight

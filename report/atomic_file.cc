@@ -4,7 +4,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
@@ -14,7 +13,7 @@
 #include <string>
 
 #include "common/error.h"
-#include "report/output_set.h"
+#include "report/temporary_name.h"
 
 namespace foresight {
 namespace {
@@ -78,9 +77,7 @@ void CheckFolderTakesFiles(const std::filesystem::path& dir, const std::string& 
   if (!std::filesystem::is_directory(dir, ec)) {
     throw InputError(shown + ": cannot write: directory " + dir.string() + " does not exist");
   }
-  static std::atomic<unsigned> probe_count{0};  // tells the probes of one process's threads apart
-  const std::filesystem::path probe =
-      dir / (".foresight-probe-file." + std::to_string(::getpid()) + "." + std::to_string(++probe_count));
+  const std::filesystem::path probe = dir / (".foresight-probe-file." + UniqueSuffix());
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
   if (fd < 0 && errno != EEXIST) {
     throw InputError(shown + ": cannot write in the folder " + dir.string() + ": " +
@@ -152,13 +149,6 @@ void WriteStreamTarget(const FileTarget& target, std::string_view content,
     return WriteToDescriptor(target.fd, content, shown);
   }
   WriteToDevice(target.target, content, shown);
-}
-
-void WriteFileAtomically(const std::filesystem::path& file, std::string_view content) {
-  OutputSet outputs;
-  outputs.AddFile("", file);
-  outputs.Put("", std::string(content));
-  outputs.Commit();
 }
 
 }  // namespace foresight

@@ -6,7 +6,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <optional>
@@ -16,6 +15,7 @@
 #include "common/error.h"
 #include "report/atomic_file.h"
 #include "report/signal_guard.h"
+#include "report/temporary_name.h"
 
 namespace foresight {
 namespace fs = std::filesystem;
@@ -33,9 +33,13 @@ struct OutputSet::Output {
   std::string Shown() const { return flag.empty() ? path.string() : flag + ": " + path.string(); }
 };
 
-namespace {
+struct OutputSet::Input {
+  std::string what;
+  fs::path path;  // as the user gave it
+  fs::path key;
+};
 
-std::atomic<unsigned> file_count{0};  // tells the temporary files of one process apart
+namespace {
 
 fs::path KeyOf(const fs::path& path) {
   std::error_code ec;
@@ -113,6 +117,7 @@ void OutputSet::AddFolder(const std::string& flag, const fs::path& dir) {
                        "; give the outputs separate places");
     }
   }
+  for (const Input& input : inputs_) RequireNotInput(*output, input);
   CheckReportFolder(dir, flag);
   outputs_.push_back(std::move(output));
 }
@@ -134,8 +139,24 @@ void OutputSet::AddFile(const std::string& flag, const fs::path& file) {
                        "; give every output its own place");
     }
   }
+  for (const Input& input : inputs_) RequireNotInput(*output, input);
   if (!output->member_of) output->file = LocateOutputFile(file, output->Shown());
   outputs_.push_back(std::move(output));
+}
+
+void OutputSet::AddInput(const std::string& what, const fs::path& path) {
+  if (path.empty()) return;
+  Input input{what, path, KeyOf(path)};
+  for (const auto& output : outputs_) RequireNotInput(*output, input);
+  inputs_.push_back(std::move(input));
+}
+
+void OutputSet::RequireNotInput(const Output& output, const Input& input) const {
+  const bool is = output.key == input.key;
+  if (!is && !(output.folder && Inside(input.key, output.key))) return;
+  throw InputError(output.Shown() + (is ? " is " : " holds ") + input.what + " " +
+                   input.path.string() +
+                   ", which the output would replace; write the output elsewhere");
 }
 
 bool OutputSet::Has(const std::string& flag) const {
@@ -202,7 +223,7 @@ void OutputSet::Commit() {
       }
       for (const Output* file : files) {
         fs::path temp = file->file.target;
-        temp += ".tmp." + std::to_string(::getpid()) + "." + std::to_string(++file_count);
+        temp += ".tmp." + UniqueSuffix();
         WriteNewFile(temp, *file->content, file->Shown());
         staged_files.push_back(temp);
       }
@@ -228,6 +249,21 @@ void OutputSet::Commit() {
   for (const Output* stream : streams) {
     WriteStreamTarget(stream->file, *stream->content, stream->Shown());
   }
+}
+
+void WriteFileAtomically(const fs::path& file, std::string_view content) {
+  OutputSet outputs;
+  outputs.AddFile("", file);
+  outputs.Put("", std::string(content));
+  outputs.Commit();
+}
+
+void WriteReportFolder(const fs::path& dir, std::span<const ReportFile> files,
+                       std::string_view flag) {
+  OutputSet outputs;
+  outputs.AddFolder(std::string(flag), dir);
+  outputs.Put(std::string(flag), std::vector<ReportFile>(files.begin(), files.end()));
+  outputs.Commit();
 }
 
 }  // namespace foresight

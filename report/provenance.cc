@@ -2,11 +2,9 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 
+#include "common/data_file.h"
 #include "common/error.h"
-
 #include "report/report_format.h"
 
 namespace foresight {
@@ -28,14 +26,12 @@ const std::string& RunProvenance::Input(std::string_view key) const {
 
 std::string ContentHash(const std::filesystem::path& file) {
   if (file.empty()) return "";
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot read the file");
+  // Read as every reader reads (a FIFO or a device is refused, never blocks; 16 MiB at most).
   std::uint64_t hash = 14695981039346656037ULL;  // FNV-1a 64-bit offset basis
-  for (auto it = std::istreambuf_iterator<char>(in); it != std::istreambuf_iterator<char>(); ++it) {
-    hash ^= static_cast<unsigned char>(*it);
+  for (const char c : ReadDataFile(file)) {
+    hash ^= static_cast<unsigned char>(c);
     hash *= 1099511628211ULL;  // FNV-1a 64-bit prime
   }
-  if (in.bad()) throw InputError(file.string() + ": cannot read the file");
   char text[32];
   std::snprintf(text, sizeof text, "fnv1a64:%016llx", static_cast<unsigned long long>(hash));
   return text;

@@ -5,7 +5,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -15,7 +14,7 @@
 
 #include "common/error.h"
 #include "report/atomic_file.h"
-#include "report/output_set.h"
+#include "report/temporary_name.h"
 
 namespace foresight {
 namespace fs = std::filesystem;
@@ -62,8 +61,6 @@ std::optional<Marker> ReadMarker(const fs::path& dir) {
   return marker;
 }
 
-std::atomic<unsigned> probe_count{0};  // tells the probes of one process's threads apart
-
 // The nearest existing folder at or above `dir` (the report folder `named`'s parent) must be a
 // folder in which the missing ones can
 // be made: they are made and removed again (a read-only file system, a name too long, a file in
@@ -93,8 +90,7 @@ void CheckCreatable(const fs::path& dir, std::string_view flag, const fs::path& 
     }
   }
   if (missing.empty()) {  // the folder exists: it must take a new entry
-    const fs::path probe = existing / (".foresight-probe-folder." + std::to_string(::getpid()) + "." +
-                                       std::to_string(++probe_count));
+    const fs::path probe = existing / (".foresight-probe-folder." + UniqueSuffix());
     if (::mkdir(probe.c_str(), 0777) != 0) {
       failure = existing.string() + ": " + std::strerror(errno);
     } else {
@@ -138,8 +134,6 @@ void MoveEntries(const fs::path& from, const fs::path& to, std::span<const std::
   }
 }
 
-std::atomic<unsigned> folder_count{0};  // tells the temporary folders of one process apart
-
 }  // namespace
 
 fs::path NormalReportFolder(const fs::path& dir, std::string_view flag) {
@@ -158,14 +152,6 @@ void CheckReportFolder(const fs::path& dir, std::string_view flag) {
   RequireOwn(normal, flag);
 }
 
-void WriteReportFolder(const fs::path& dir, std::span<const ReportFile> files,
-                       std::string_view flag) {
-  OutputSet outputs;
-  outputs.AddFolder(std::string(flag), dir);
-  outputs.Put(std::string(flag), std::vector<ReportFile>(files.begin(), files.end()));
-  outputs.Commit();
-}
-
 StagedFolder StageReportFolder(const fs::path& dir, std::span<const ReportFile> files,
                                std::string_view flag) {
   StagedFolder staged;
@@ -177,7 +163,7 @@ StagedFolder StageReportFolder(const fs::path& dir, std::span<const ReportFile> 
   // Built piece by piece: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
   std::string temp_name = ".";
   temp_name += staged.dir.filename().string();
-  temp_name += ".tmp." + std::to_string(::getpid()) + "." + std::to_string(++folder_count);
+  temp_name += ".tmp." + UniqueSuffix();
   staged.temp = ParentOf(staged.dir) / temp_name;
   fs::remove_all(staged.temp, ec);
   if (::mkdir(staged.temp.c_str(), 0777) != 0) {

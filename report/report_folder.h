@@ -30,16 +30,14 @@ struct ReportFile {
   std::string content;
 };
 
+// The steps OutputSet takes, folder by folder (report/output_set.h; its WriteReportFolder writes
+// one folder).
+
 // Throws InputError naming `flag` if `dir` could not be written as a report folder: not
-// foresight's, a parent that cannot be created (made and removed again to find out). Call it
-// before the work; writing checks again.
+// foresight's, a parent that cannot be created (made and removed again to find out). OutputSet
+// calls it when the folder is declared, before the work; staging checks again.
 void CheckReportFolder(const std::filesystem::path& dir, std::string_view flag);
 
-// Writes `files` (and the marker) as the folder `dir`: an OutputSet of this one folder.
-void WriteReportFolder(const std::filesystem::path& dir, std::span<const ReportFile> files,
-                       std::string_view flag);
-
-// The steps OutputSet takes, folder by folder (report/output_set.h).
 struct StagedFolder {
   std::string flag;
   std::filesystem::path dir;   // normalised

@@ -185,6 +185,7 @@
 #include "report/shard_file.h"
 #include "report/signal_guard.h"
 #include "report/svg_writer.h"
+#include "report/temporary_name.h"
 #include "report/viewer_assets.h"
 #include "report/viewer_page.h"
 #include "stats/distributions.h"

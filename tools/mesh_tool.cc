@@ -19,12 +19,14 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "common/error.h"
+#include "report/output_set.h"
 
 namespace {
 
@@ -123,25 +125,18 @@ std::string Header(const SuperellipsoidParams& p, const Mesh& mesh) {
   return out.str();
 }
 
-bool WriteObj(const std::filesystem::path& file, const std::string& header, const Mesh& mesh) {
-  std::filesystem::create_directories(file.parent_path());
-  const std::filesystem::path temporary = file.string() + ".tmp";
-  {
-    std::ofstream out(temporary);
-    if (!out) return false;
-    out << header;
-    char line[96];
-    for (const Eigen::Vector3d& v : mesh.vertices) {
-      std::snprintf(line, sizeof line, "v %.6f %.6f %.6f\n", v.x(), v.y(), v.z());
-      out << line;
-    }
-    for (const Eigen::Vector3i& f : mesh.faces) {
-      out << "f " << f.x() + 1 << ' ' << f.y() + 1 << ' ' << f.z() + 1 << '\n';
-    }
-    if (!out) return false;
+std::string ObjText(const std::string& header, const Mesh& mesh) {
+  std::string text = header;
+  char line[96];
+  for (const Eigen::Vector3d& v : mesh.vertices) {
+    std::snprintf(line, sizeof line, "v %.6f %.6f %.6f\n", v.x(), v.y(), v.z());
+    text += line;
   }
-  std::filesystem::rename(temporary, file);
-  return true;
+  for (const Eigen::Vector3i& f : mesh.faces) {
+    text += "f " + std::to_string(f.x() + 1) + ' ' + std::to_string(f.y() + 1) + ' ' +
+            std::to_string(f.z() + 1) + '\n';
+  }
+  return text;
 }
 
 // NAO left foot in the l_foot frame (the ankle roll axis): sole 0.04519 m below the ankle
@@ -215,21 +210,32 @@ int main(int argc, char** argv) {
   const std::vector<SuperellipsoidParams> parts = {NaoFoot(true), NaoFoot(false), AiboPaw(true),
                                                    AiboPaw(false), AiboHead()};
   try {
+    // Every mesh file is declared (and its folder made and checked) first, then every mesh is
+    // made, then all are written as one set (report/output_set.h): each file replaced whole,
+    // none if one cannot be written.
+    foresight::OutputSet outputs;
+    for (const SuperellipsoidParams& part : parts) {
+      const std::filesystem::path file = out_dir / part.file;
+      std::filesystem::create_directories(file.parent_path());
+      outputs.AddFile(part.file, file);
+    }
+    std::vector<std::string> lines;
     for (const SuperellipsoidParams& part : parts) {
       const Mesh mesh = Superellipsoid(part);
       if (!FacesPointOutwards(mesh, part.centre_m)) {
         std::cerr << "foresight_mesh_tool: " << part.file << ": a face points inwards\n";
         return 1;
       }
-      const std::filesystem::path file = out_dir / part.file;
-      if (!WriteObj(file, Header(part, mesh), mesh)) {
-        std::cerr << "foresight_mesh_tool: cannot write " << file << "\n";
-        return 1;
-      }
-      std::cout << file.string() << ": " << mesh.vertices.size() << " vertices, "
-                << mesh.faces.size() << " triangles\n";
+      outputs.Put(part.file, ObjText(Header(part, mesh), mesh));
+      lines.push_back((out_dir / part.file).string() + ": " + std::to_string(mesh.vertices.size()) +
+                      " vertices, " + std::to_string(mesh.faces.size()) + " triangles\n");
     }
+    outputs.Commit();
+    for (const std::string& line : lines) std::cout << line;
   } catch (const std::filesystem::filesystem_error& e) {
+    std::cerr << "foresight_mesh_tool: " << e.what() << "\n";
+    return 1;
+  } catch (const foresight::InputError& e) {
     std::cerr << "foresight_mesh_tool: " << e.what() << "\n";
     return 1;
   }

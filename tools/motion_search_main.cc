@@ -2,7 +2,9 @@
 //
 // Searches a kick motion's keyframes and weight shift in the project's physics
 // (tools/motion_search.h), prints each round's best candidates and writes DIR/search.json (every
-// candidate) and DIR/best_<rank>.json (the best `keep` candidates as motion files). Bad input:
+// candidate) and DIR/best_<rank>.json (the best `keep` candidates as motion files). DIR is a
+// report folder (report/report_folder.h), checked before the search and replaced whole after it
+// (no best_<rank>.json of an earlier, larger run remains; a user's own files stay). Bad input:
 // one line "foresight_motion_search: FILE: FIELD: problem" and exit status 2, nothing written.
 #include <cstdlib>
 #include <filesystem>
@@ -11,7 +13,7 @@
 
 #include "common/error.h"
 #include "models/model_paths.h"
-#include "report/atomic_file.h"
+#include "report/output_set.h"
 #include "tools/motion_search.h"
 #include "tools/motion_search_output.h"
 
@@ -62,9 +64,9 @@ int Run(int argc, char** argv) {
   const std::filesystem::path models = args.models.empty() ? DefaultModelsDir() : args.models;
   const MotionSearchSettings settings = LoadMotionSearchSettings(args.settings, models);
   const auto setup = LoadSearchSetup(settings, models);
-  if (std::filesystem::exists(args.out) && !std::filesystem::is_directory(args.out)) {
-    throw InputError("--out: '" + args.out.string() + "' is not a directory");
-  }
+  OutputSet outputs;  // checked before the search, written as one commit after it
+  outputs.AddInput("the settings file", args.settings);
+  outputs.AddFolder("--out", args.out);
   MotionSearchRun run;
   run.settings = &settings;
   run.setup = setup.get();
@@ -77,18 +79,15 @@ int Run(int argc, char** argv) {
   const int motion_index = *setup->robot.FindMotion(settings.kick);
   const std::filesystem::path start_file =
       setup->robot.spec.kick_motion_files[static_cast<std::size_t>(motion_index)].second;
-  std::vector<std::string> motion_files;
+  std::vector<ReportFile> files = {{"search.json", SearchJson(settings, result).dump(2) + "\n"}};
   for (int k = 0; k < settings.keep && k < static_cast<int>(result.best.size()); ++k) {
     const SearchCandidate& c = result.candidates[static_cast<std::size_t>(result.best[k])];
-    motion_files.push_back(MotionFileText(start_file, c.motion));
+    files.push_back(
+        {"best_" + std::to_string(k + 1) + ".json", MotionFileText(start_file, c.motion)});
   }
-  const std::string search = SearchJson(settings, result).dump(2) + "\n";
-  std::filesystem::create_directories(args.out);
-  WriteFileAtomically(args.out / "search.json", search);
-  for (std::size_t k = 0; k < motion_files.size(); ++k) {
-    WriteFileAtomically(args.out / ("best_" + std::to_string(k + 1) + ".json"), motion_files[k]);
-  }
-  std::cout << "wrote " << (args.out / "search.json").string() << " and " << motion_files.size()
+  outputs.Put("--out", files);
+  outputs.Commit();
+  std::cout << "wrote " << (args.out / "search.json").string() << " and " << files.size() - 1
             << " motion file(s)\n";
   return 0;
 }

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
+#include "common/data_file.h"
 #include "common/error.h"
 #include "common/geometry.h"
 
@@ -129,9 +129,10 @@ nlohmann::ordered_json SearchJson(const MotionSearchSettings& settings,
 }
 
 std::string MotionFileText(const std::filesystem::path& start_file, const KickMotion& motion) {
-  std::ifstream in(start_file);
-  if (!in) throw InputError(start_file.string() + ": cannot read");
-  nlohmann::ordered_json j = nlohmann::ordered_json::parse(in, nullptr, false);
+  // Read as every data file is (a FIFO in its place is refused, not waited on); the search's
+  // setup read it strictly already, and ordered_json keeps its keys in the file's order.
+  nlohmann::ordered_json j =
+      nlohmann::ordered_json::parse(ReadDataFile(start_file), nullptr, false);
   if (j.is_discarded()) throw InputError(start_file.string() + ": not JSON");
   j["keyframes"] = KeyframesJson(motion);
   if (motion.balance.Has()) j["balance"]["offsets_deg"] = OffsetsJson(motion);

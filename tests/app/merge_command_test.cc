@@ -99,11 +99,38 @@ TEST_F(MergeCommandTest, AnOutThatIsOrHoldsAShardFolderIsRefusedAndTheShardKept)
     const RunResult r = Run({"merge", "--out", out, "runs/p"});
     EXPECT_EQ(r.exit_code, 2) << out;
     EXPECT_EQ(r.err, "foresight: error: --out: " + out + (out == "runs" ? " holds" : " is") +
-                         " the shard folder runs/p, which the report would replace; write the "
-                         "report elsewhere\n");
+                         " the shard folder runs/p, which the output would replace; write the "
+                         "output elsewhere\n");
     EXPECT_EQ(ReadFile(work() / "runs" / "p" / "shard.json"), shard) << out;
   }
   EXPECT_EQ(Run({"merge", "--out", "runs/report", "runs/p"}).exit_code, 0);
+}
+
+// A merged calibration is one folder, --out: its refusals name --out (they named --report, a flag
+// merge does not have) and come before the shards are read.
+TEST_F(MergeCommandTest, AMergedCalibrationNamesOnlyItsOwnFlag) {
+  Shard("c", {"calibrate", "--robot", "nao", "--kick", "forward", "--trials", "8"});
+  fs::create_directories(work() / "mine");
+  Write("mine/notes.txt", "the user's");
+  const RunResult r = Run({"merge", "--out", "mine", "c"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, StartsWith("foresight: error: --out: mine: holds files that no foresight "
+                                "report wrote"));
+  EXPECT_EQ(ReadFile(work() / "mine" / "notes.txt"), "the user's");
+  const RunResult merged = Run({"merge", "--out", "merged", "c"});
+  ASSERT_EQ(merged.exit_code, 0) << merged.err;
+  EXPECT_TRUE(fs::exists(work() / "merged" / "nao_calibrated.json"));
+  EXPECT_TRUE(fs::exists(work() / "merged" / "calibration.html"));
+}
+
+// --out is checked before a shard is read: an --out that cannot be made is the error, not the
+// shards (here missing).
+TEST_F(MergeCommandTest, OutIsCheckedBeforeTheShardsAreRead) {
+  Write("a_file", "x");
+  const RunResult r = Run({"merge", "--out", "a_file/report", "missing_shard"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, StartsWith("foresight: error: --out: cannot create the folder "
+                                "'a_file/report': "));
 }
 
 }  // namespace

@@ -76,6 +76,53 @@ TEST_F(OutputsTest, AReportParentThatCannotBeMadeIsFoundBeforeTheWork) {
                 "--report: cannot create the folder");
 }
 
+// Every other command's outputs are one OutputSet declared before the work too: an --out whose
+// parent cannot be made ends each at once, however much work the flags ask for.
+TEST_F(OutputsTest, EveryCommandChecksItsOutBeforeTheWork) {
+  const std::string bad = std::string(300, 'n') + "/out";  // a name longer than a file's may be
+  const std::string refused = "--out: cannot create the folder";
+  ExpectRefused({"fidelity", "--situations", "quick", "--trials", "100000", "--out", bad}, refused);
+  ExpectRefused({"experiment", "stability", "--repeats", "100000", "--out", bad}, refused);
+  ExpectRefused({"experiment", "strategies", "--starts", "10000000", "--out", bad}, refused);
+  ExpectRefused({"experiment", "passing", "--config", "dg", "--trials", "10000000", "--out", bad},
+                refused);
+  ExpectRefused({"experiment", "ablations", "--config", "dg", "--trials", "10000000", "--out", bad},
+                refused);
+  ExpectRefused({"cbr", "atlas", "--out", bad}, refused);
+  // The same for a shard's folder.
+  ExpectRefused({"calibrate", "--robot", "nao", "--kick", "forward", "--trials", "1000000",
+                 "--shard", "0/2", "--out", bad},
+                refused);
+  ExpectRefused(
+      {"fidelity", "--situations", "quick", "--trials", "100000", "--shard", "0/2", "--out", bad},
+      refused);
+  ExpectRefused(
+      {"experiment", "strategies", "--starts", "10000000", "--shard", "0/2", "--out", bad},
+      refused);
+  ExpectRefused({"experiment", "passing", "--config", "dg", "--trials", "10000000", "--shard",
+                 "1/3", "--out", bad},
+                refused);
+}
+
+// An output may not replace one of the command's inputs: the log stays a log.
+TEST_F(OutputsTest, AnOutputThatNamesAnInputIsRefused) {
+  WriteKickLog();
+  const std::string log = ReadFile(work() / "kicks.csv");
+  ExpectRefused({"calibrate", "--robot", "nao", "--from-csv", "kicks.csv", "--out", "kicks.csv"},
+                "--out: kicks.csv is the input --from-csv kicks.csv, which the output would "
+                "replace");
+  ExpectRefused({"calibrate", "--robot", "nao", "--from-csv", "kicks.csv", "--fit-variation",
+                 "--out", "./kicks.csv"},
+                "is the input --from-csv kicks.csv");
+  EXPECT_EQ(ReadFile(work() / "kicks.csv"), log);
+  Write("open_goal.json", foresight::testing::ShippedText("open_goal"));
+  ExpectRefused({"simulate", "--situation", "open_goal.json", "--kick", "forward", "--trials",
+                 "1000000", "--trace", "open_goal.json"},
+                "--trace: open_goal.json is the input --situation open_goal.json");
+  ExpectRefused({"decide", "--situation", "open_goal.json", "--svg", "open_goal.json"},
+                "--svg: open_goal.json is the input --situation open_goal.json");
+}
+
 // A disk that fills up after the model is staged (a file-size limit, `ulimit -f`): neither the
 // model nor the report is written, and the message names the user's file.
 TEST_F(OutputsTest, CalibrateWritesTheModelAndTheReportTogetherOrNeither) {

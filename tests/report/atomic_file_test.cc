@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "common/error.h"
+#include "report/output_set.h"
 #include "tests/support/temp_files.h"
 
 namespace foresight {

@@ -65,6 +65,48 @@ TEST(OutputSetTest, AFileInsideAReportFolderBecomesOneOfItsFiles) {
 // A disk that fills up while the set is staged (here a file-size limit, RLIMIT_FSIZE, as
 // `ulimit -f` sets it): no output is written, no temporary is left, and the message names the
 // user's path, not the temporary's.
+// An output may not name an input: a file that is one, or a report folder that is or holds one
+// (through a symbolic link too), in whichever order the two are declared.
+TEST(OutputSetTest, AnOutputThatIsOrHoldsAnInputIsRefused) {
+  const fs::path dir = testing::FreshTempDir("inputs");
+  fs::create_directories(dir / "runs" / "shard");
+  { std::ofstream(dir / "log.csv") << "kick\n"; }
+  fs::create_directory_symlink(dir / "runs", dir / "link");
+  const auto refusal = [&](const std::string& what, const fs::path& input, bool folder,
+                           const fs::path& output, bool input_first) {
+    try {
+      OutputSet outputs;
+      if (input_first) outputs.AddInput(what, input);
+      folder ? outputs.AddFolder("--out", output) : outputs.AddFile("--out", output);
+      if (!input_first) outputs.AddInput(what, input);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  for (const bool input_first : {true, false}) {
+    EXPECT_EQ(refusal("the input --from-csv", dir / "log.csv", false, dir / "log.csv", input_first),
+              "--out: " + (dir / "log.csv").string() + " is the input --from-csv " +
+                  (dir / "log.csv").string() +
+                  ", which the output would replace; write the output elsewhere");
+    EXPECT_THAT(
+        refusal("the shard folder", dir / "runs" / "shard", true, dir / "runs/shard/", input_first),
+        HasSubstr("runs/shard/ is the shard folder"));
+    // (A link as a report folder is refused anyway, but not before the input is named.)
+    if (input_first) {
+      EXPECT_THAT(refusal("the shard folder", dir / "runs" / "shard", true, dir / "link", true),
+                  HasSubstr("link holds the shard folder"));
+    }
+    // A report beside the input, or inside an input folder, replaces nothing of it.
+    EXPECT_EQ(refusal("the shard folder", dir / "runs" / "shard", true, dir / "runs" / "report",
+                      input_first),
+              "");
+    EXPECT_EQ(refusal("the shard folder", dir / "runs" / "shard", true,
+                      dir / "runs" / "shard" / "report", input_first),
+              "");
+  }
+}
+
 TEST(OutputSetTest, AFullDiskWritesNoOutputOfTheSetAndNamesTheUsersPath) {
   const fs::path dir = testing::FreshTempDir("full");
   const pid_t child = ::fork();

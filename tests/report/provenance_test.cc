@@ -3,6 +3,7 @@
 #include "report/provenance.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <string>
@@ -58,6 +59,21 @@ TEST(ProvenanceTest, ContentHashIsFnv1a64OfTheBytes) {
             ContentHash(testing::WriteTempFile("hash_c_" + id, "{\"x\": 2}")));
   EXPECT_THROW(ContentHash(testing::FreshTempDir("hash_" + id) / "absent"), InputError);
   EXPECT_EQ(ContentHash(""), "");  // data from memory has no file to hash
+}
+
+// A FIFO in a data file's place is refused at once (the hash read it with std::ifstream, whose
+// open waits for a writer that never comes), like every reader's input.
+TEST(ProvenanceTest, ContentHashRefusesAFifoWithoutWaiting) {
+  const std::filesystem::path fifo =
+      testing::FreshTempDir("hash_fifo_" + std::to_string(::getpid())) / "kicks.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  try {
+    ContentHash(fifo);
+    ADD_FAILURE() << "a FIFO was hashed";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              fifo.string() + ": is not a regular file (a device or a pipe?)");
+  }
 }
 
 TEST(ProvenanceTest, JoinDistinctKeepsFirstAppearances) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "report/output_set.h"
 #include "tests/support/temp_files.h"
 
 namespace foresight {

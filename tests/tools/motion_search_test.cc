@@ -5,12 +5,12 @@
 #include "tools/motion_search.h"
 
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 
 #include "common/error.h"
 #include "common/geometry.h"
@@ -265,6 +265,45 @@ TEST(MotionSearchCommandTest, BadSettingsExitTwoAndGoodOnesWriteTheirFiles) {
   EXPECT_TRUE(std::filesystem::exists(out / "good" / "search.json"));
   EXPECT_TRUE(std::filesystem::exists(out / "good" / "best_1.json"));
   EXPECT_NO_THROW(LoadKickMotion(out / "good" / "best_1.json"));
+}
+
+// --out is a report folder: checked before the search (nothing is searched for an output that
+// cannot be written) and replaced whole after it, so a smaller run leaves no best_<rank>.json of
+// a larger one behind, and a user's own file there stays.
+TEST(MotionSearchCommandTest, OutIsCheckedFirstAndReplacedWhole) {
+  const std::filesystem::path out = testing::FreshTempDir("search_out_whole");
+  const auto run = [&](const std::string& settings, const std::filesystem::path& dir) {
+    const std::filesystem::path file = WriteTempFile("cmd_whole.json", settings);
+    const std::string command = std::string(FORESIGHT_MOTION_SEARCH) + " " + file.string() +
+                                " --out " + dir.string() + " --threads 1 --models " +
+                                ModelsDir().string() + " >" + (out / "log.txt").string() + " 2>" +
+                                (out / "err.txt").string();
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  };
+  const auto read = [](const std::filesystem::path& file) {
+    std::ifstream in(file);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  // A parent that cannot be made (a file is in the way): refused before the first round is
+  // searched (and printed).
+  { std::ofstream(out / "a_file") << "x"; }
+  EXPECT_EQ(run(TinySettings(), out / "a_file" / "r"), 2);
+  EXPECT_EQ(read(out / "log.txt"), "");
+  EXPECT_NE(read(out / "err.txt").find("--out: cannot create the folder"), std::string::npos)
+      << read(out / "err.txt");
+
+  const std::filesystem::path dir = out / "search";
+  ASSERT_EQ(run(testing::ReplaceOnce(TinySettings(), R"("keep": 2)", R"("keep": 3)"), dir), 0)
+      << read(out / "err.txt");
+  EXPECT_TRUE(std::filesystem::exists(dir / "best_3.json"));
+  { std::ofstream(dir / "notes.txt") << "the user's"; }
+  ASSERT_EQ(run(testing::ReplaceOnce(TinySettings(), R"("keep": 2)", R"("keep": 1)"), dir), 0)
+      << read(out / "err.txt");
+  EXPECT_TRUE(std::filesystem::exists(dir / "best_1.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "best_2.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "best_3.json"));
+  EXPECT_EQ(read(dir / "notes.txt"), "the user's");
 }
 
 }  // namespace
