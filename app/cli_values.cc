@@ -1,7 +1,6 @@
 #include "app/cli_values.h"
 
 #include <charconv>
-#include <cstdio>
 #include <filesystem>
 #include <memory>
 
@@ -78,12 +77,6 @@ void WriteReportFiles(const std::string& dir, const std::string& flag, const Rep
 
 void CheckReportDir(const std::string& dir, const std::string& flag) {
   CheckReportFolder(dir, flag);
-}
-
-std::string DefaultText(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.15g", value);
-  return text;
 }
 
 std::optional<bool> ParseSwitch(const std::string& flag, const std::string& text) {

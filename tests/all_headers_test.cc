@@ -177,6 +177,7 @@
 #include "report/experiment_maps.h"
 #include "report/field_svg.h"
 #include "report/html_report.h"
+#include "report/json_text.h"
 #include "report/provenance.h"
 #include "report/output_set.h"
 #include "report/report_folder.h"
