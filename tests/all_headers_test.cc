@@ -183,6 +183,7 @@
 #include "report/report_folder.h"
 #include "report/report_format.h"
 #include "report/scene_trace_json.h"
+#include "report/scene_trace_shard.h"
 #include "report/shard_file.h"
 #include "report/signal_guard.h"
 #include "report/svg_writer.h"
