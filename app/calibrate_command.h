@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/cli_values.h"
+#include "common/checks.h"
 #include "report/output_set.h"
 #include "report/shard_file.h"
 #include "validation/calibration.h"
@@ -36,7 +37,8 @@ struct CalibrateOptions {
   // Physics trials per kick and run of that fit; empty: not given (kDefaultFitTrials).
   std::string fit_trials;
   // The defaults of the fit are CalibrationSettings' (shown by --help).
-  std::string confidence = DefaultText(CalibrationSettings{}.confidence);
+  // The settings struct's default in the shortest form that reads back to it ("0.95").
+  std::string confidence = FormatNumber(CalibrationSettings{}.confidence);
   std::string resamples = std::to_string(CalibrationSettings{}.resamples);
   std::string shard;  // "I/N": only that shard, --out is then its folder (app/shard_output.h)
 };

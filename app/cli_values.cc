@@ -1,7 +1,6 @@
 #include "app/cli_values.h"
 
 #include <charconv>
-#include <cstdio>
 #include <filesystem>
 #include <memory>
 
@@ -75,12 +74,6 @@ OutputSet ReportFolderOutput(const std::string& dir) {
   OutputSet outputs;
   outputs.AddFolder("--out", dir);
   return outputs;
-}
-
-std::string DefaultText(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.15g", value);
-  return text;
 }
 
 std::optional<bool> ParseSwitch(const std::string& flag, const std::string& text) {

@@ -21,10 +21,6 @@ double ParseNumber(const std::string& flag, const std::string& text, double lo, 
 // "on" or "off" (empty: not given, nullopt); anything else is an InputError naming the flag.
 std::optional<bool> ParseSwitch(const std::string& flag, const std::string& text);
 
-// A library setting's default as the command line shows it, so the default lives in one place
-// (the settings struct): integers in full, numbers in the shortest form ("0.95", not "0.950000").
-std::string DefaultText(double value);
-
 // A long loop's progress "LABEL: done / total UNIT (..%), rate, time left": to the long-call
 // host of the calling thread if there is one (the Python module's callback, common/long_call.h),
 // otherwise on stderr: rewritten in place on a terminal, a line at most every few seconds in a

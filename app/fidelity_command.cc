@@ -118,7 +118,7 @@ int WriteFidelityReport(OutputSet& outputs, const std::string& out_dir, const Fi
                        {dir / "fidelity_candidates.csv", FidelityCandidatesCsv(run)},
                        {dir / "fidelity_situations.csv", FidelitySituationsCsv(run)},
                        {dir / "fidelity.html", FidelityHtml(run)}};
-  // The worst situations in 3D, linked from fidelity.html (their trials play again, recorded).
+  // The worst situations in 3D, linked from fidelity.html, from the trials recorded in the run.
   for (auto& [name, page] : FidelityViewPages(run.result, run.settings, models)) {
     files.push_back({dir / name, std::move(page)});
   }

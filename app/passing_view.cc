@@ -27,8 +27,9 @@ std::string PassingViewHtml(const PassingRun& run, std::size_t index, const Pass
   PhysicsKickExecutor executor(setup.field, setup.kicks, models, o.physics_file,
                                ParseBaseFlag(o.base));
   executor.Record(kKickViewRateHz);
+  // The very trial the run scored, or an error (the replay is checked bit for bit).
   const MatchTrialResult again =
-      PlayExampleTrial(setup, run.team, executor, ParseSeed(o.seed), st.scenario);
+      ReplayExampleTrial(setup, run.team, executor, ParseSeed(o.seed), st);
   // The k-th kick event of the trial is the k-th kick the executor carried out.
   std::vector<const MatchEvent*> kicks;
   for (const MatchEvent& e : again.events) {

@@ -1,8 +1,9 @@
 // `experiment passing`'s 3D viewers (report/viewer_page.h): per scenario, the example trial's
 // match (experiments/passing_view.h); with --physics also each of its kicks as the physics trial
 // that carried it out, the robot drawn from its URDF. The kicks are recorded by playing the
-// example trial again (PlayExampleTrial) through a recording PhysicsKickExecutor: the same
-// random numbers give the same match and the same kicks.
+// example trial again (ReplayExampleTrial) through a recording PhysicsKickExecutor: the same
+// random numbers give the same match and the same kicks, which the replay checks bit for bit
+// against the scored trial (an internal error otherwise).
 #pragma once
 
 #include <cstddef>

@@ -1,4 +1,4 @@
-// Speed of case retrieval (issue 13 targets, one core: <= 10 us for the 136 cases and a
+// Speed of case retrieval (the targets, one core: <= 10 us for the 136 cases and a
 // 2-teammate, 2-opponent problem; sub-linear with the ball-scope index, <= 100 us at 100,000
 // cases). Run (docs/PERFORMANCE.md):
 //   taskset -c 1 build/bench/cbr_bench --benchmark_repetitions=5

@@ -1,5 +1,5 @@
-// Speed of the CBR team's reasoning (issue 15: "retrieval and a whole decision cycle's reasoning
-// time per robot, against the AIBO's budget"). Run (docs/PERFORMANCE.md):
+// Speed of the CBR team's reasoning: retrieval and a whole decision cycle's reasoning time per
+// robot, to compare with the AIBO's time budget. Run (docs/PERFORMANCE.md):
 //   taskset -c 1 build/bench/cbr_team_bench --benchmark_repetitions=5
 //   --benchmark_report_aggregates_only=true
 // BM_CoordinatorStep/<timing>: the costliest step of a robot: it is the selector and the

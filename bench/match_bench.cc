@@ -1,4 +1,4 @@
-// Speed of the match simulator (issue 14 target: a whole DG table, 4 scenarios x 500 trials for
+// Speed of the match simulator (the target: a whole DG table, 4 scenarios x 500 trials for
 // one team, in well under a minute on 2 cores). Run (docs/PERFORMANCE.md):
 //   taskset -c 1 build/bench/match_bench --benchmark_repetitions=5
 //   --benchmark_report_aggregates_only=true

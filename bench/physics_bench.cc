@@ -1,4 +1,4 @@
-// Speed of the physics ground truth (issue 3 targets per core: a free roll of 5 m >= 1000
+// Speed of the physics ground truth (the targets per core: a free roll of 5 m >= 1000
 // trials/s, a complete NAO kick trial until the ball rests >= 50 trials/s, near-linear scaling
 // with cores). Run:
 //   build/bench/physics_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true

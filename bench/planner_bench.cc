@@ -1,6 +1,6 @@
-// Speed of the coarse model (issue 18's targets on one core: a plain decision <= 1 us, an
-// optimal_all decision with the rotation search <= 40 us; issue 2's were >= 15 M samples/s,
-// <= 10 us and <= 300 us). Run:
+// Speed of the coarse model (the targets on one core: a plain decision <= 1 us, an optimal_all
+// decision with the rotation search <= 40 us; the first targets were >= 15 M samples/s, <= 10 us
+// and <= 300 us). Run:
 //   build/bench/planner_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 // Scenes are the shared test scenes (tests/support), so tests and benchmarks agree on them.
 #include <benchmark/benchmark.h>
@@ -15,8 +15,8 @@
 namespace foresight {
 namespace {
 
-// The coarse model's contacts: the paper's inelastic stop, or rebounds (issue 12) with the
-// shipped SPL restitution.
+// The coarse model's contacts: the paper's inelastic stop, or rebounds (docs/PHYSICS.md, "The
+// coarse model meets the contacts") with the shipped SPL restitution.
 enum class Contacts { kPaper, kRebounds };
 
 // Positions all over the field so that rolls meet posts, nets, lines and open carpet.
@@ -108,7 +108,8 @@ BENCHMARK_CAPTURE(BM_Decision, optimal_all_rebounds, Strategy::kOptimalAll, Cont
     ->Unit(benchmark::kMicrosecond);
 
 // The same through CoarsePlanner::Decide(strategy, samples, seed), which makes a fresh evaluator
-// and Decision each time (about 15 heap allocations): what the benchmark timed before issue 18.
+// and Decision each time (about 15 heap allocations): what the benchmark timed before a robot
+// kept one evaluator and one Decision.
 void BM_DecisionFresh(benchmark::State& state, Strategy strategy) {
   const std::vector<Situation> situations = Field(16);
   std::vector<CoarsePlanner> planners(situations.begin(), situations.end());

@@ -1,6 +1,6 @@
 // The bits of many decisions, printed: the check that two builds of the planner (e.g. one for the
 // NAO's Atom, -march=silvermont, with 2 SIMD lanes, and one for this machine, -march=native,
-// with 4) decide exactly alike (scripts/same_bytes.sh compares their output; issue 18).
+// with 4) decide exactly alike (scripts/same_bytes.sh compares their output).
 // Scenes are the benchmark's (random poses over the field, one obstacle) plus poses near the
 // goals and lines; every strategy, several sample counts and seeds. Every double is printed in
 // hexadecimal (%a), so any difference in a last bit shows.

@@ -1,5 +1,5 @@
-// Not a benchmark: the rotation search's parameters against brute force (issue 18). For random
-// poses (the test scenes, no obstacle) and every kick, BestRotation with each parameter set
+// Not a benchmark: how the rotation search's parameters were chosen, against brute force. For
+// random poses (the test scenes, no obstacle) and every kick, BestRotation with each parameter set
 // below is compared with the best trimmed utility over the circle in 0.25 deg steps; prints the
 // hypotheses per kick and the worst and mean utility lost. The shipped choice
 // (models/evaluation/spl.json) and the numbers are in docs/PERFORMANCE.md.

@@ -1,5 +1,9 @@
 #include "common/long_call.h"
 
+#include <algorithm>
+#include <atomic>
+#include <memory>
+
 namespace foresight {
 
 namespace {
@@ -40,7 +44,20 @@ ProgressFunction LongCallProgress(const std::string& label, const std::string& u
                                   ProgressFunction fallback) {
   LongCallHost* host = current_host;
   if (host == nullptr) return fallback;
-  return [host, label, unit](int done, int total) { host->Progress(label, done, total, unit); };
+  // The last step of kProgressSteps reported; shared by the copies of the reporter.
+  auto reported = std::make_shared<std::atomic<long long>>(0);
+  return [host, label, unit, reported](int done, int total) {
+    const long long step =
+        total > 0 ? static_cast<long long>(done) * kProgressSteps / total : kProgressSteps;
+    long long last = reported->load(std::memory_order_relaxed);
+    // A report per new step; the last item always (its step may have been reported already).
+    while (step > last || done == total) {
+      if (reported->compare_exchange_weak(last, std::max(step, last), std::memory_order_relaxed)) {
+        host->Progress(label, done, total, unit);
+        return;
+      }
+    }
+  };
 }
 
 }  // namespace foresight

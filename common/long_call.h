@@ -14,8 +14,8 @@
 //
 // Progress: the commands make their progress reporters with LongCallProgress(label, unit, or);
 // with a host on the calling thread, the reports go to its Progress() (from any thread: the
-// host must lock what it needs), otherwise to `or` (the command line's printer, common/
-// progress_log.h).
+// host must lock what it needs), at most kProgressSteps of them per loop, otherwise to `or` (the
+// command line's printer, common/progress_log.h). Loops report every item; the limit is here.
 #pragma once
 
 #include <chrono>
@@ -63,8 +63,15 @@ void PollLongCall();
 
 using ProgressFunction = std::function<void(int done, int total)>;
 
-// A progress reporter for one loop: to the calling thread's host if it has one, otherwise
-// `fallback` (which may be empty: no report).
+// A host hears at most this many progress reports per loop (plus the last item's), whatever the
+// loop's length: a host's Progress() may be costly (the Python module takes the GIL for it), and
+// a loop may report every item.
+inline constexpr int kProgressSteps = 100;
+
+// A progress reporter for one loop: to the calling thread's host if it has one, rate-limited to
+// one report each time another 1/kProgressSteps of the total is done and one for the last item;
+// otherwise `fallback` (which may be empty: no report; it limits its own rate,
+// common/progress_log.h).
 ProgressFunction LongCallProgress(const std::string& label, const std::string& unit,
                                   ProgressFunction fallback);
 

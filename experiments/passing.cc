@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
+#include "cbr/cbr_team.h"
 #include "common/checks.h"
 #include "common/error.h"
 #include "common/parallel_for.h"
 #include "common/random.h"
-#include "cbr/cbr_team.h"
+#include "experiments/match_trial_shard.h"
 #include "match/opponent_team.h"
 #include "models/model_paths.h"
 #include "models/physics_params.h"
@@ -227,6 +230,42 @@ MatchTrialResult PlayExampleTrial(const PassingSetup& setup, const std::string& 
   MatchSetup example = MatchSetupOf(setup, executor);
   example.trace_period_s = setup.params.trace_period_s;
   return PlayTrial(setup, team, example, seed, scenario_number, ExampleTrialIndex(setup));
+}
+
+std::string MatchTrialDifference(const MatchTrialResult& a, const MatchTrialResult& b) {
+  // The shard form writes every number exactly (it reads back to the same bits).
+  const nlohmann::json x = TrialShardJson(a), y = TrialShardJson(b);
+  for (const char* key : {"outcome", "counters", "team_counters", "events", "trace"}) {
+    const nlohmann::json &u = x.at(key), &v = y.at(key);
+    if (u == v) continue;
+    if (!u.is_array()) return key;
+    if (u.size() != v.size()) {
+      return std::string(key) + " (" + std::to_string(u.size()) + " against " +
+             std::to_string(v.size()) + ")";
+    }
+    for (std::size_t i = 0; i < u.size(); ++i) {
+      if (u[i] != v[i]) return std::string(key) + "[" + std::to_string(i) + "]";
+    }
+  }
+  return "";
+}
+
+MatchTrialResult ReplayExampleTrial(const PassingSetup& setup, const std::string& team,
+                                    const KickExecutor& executor, std::uint64_t seed,
+                                    const ScenarioTrials& scored) {
+  const std::size_t index = static_cast<std::size_t>(ExampleTrialIndex(setup));
+  if (index >= scored.trials.size() || scored.trials[index].trace.empty()) {
+    throw InputError("scenario " + std::to_string(scored.scenario) +
+                     ": the results hold no example trial to play again");
+  }
+  MatchTrialResult again = PlayExampleTrial(setup, team, executor, seed, scored.scenario);
+  const std::string difference = MatchTrialDifference(scored.trials[index], again);
+  if (!difference.empty()) {
+    throw std::logic_error("scenario " + std::to_string(scored.scenario) + ", trial " +
+                           std::to_string(index) + " played again for the viewer differs from " +
+                           "the scored trial in its " + difference);
+  }
+  return again;
 }
 
 PassingResult RunPassing(const PassingSetup& setup, const std::string& team,

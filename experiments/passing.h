@@ -131,5 +131,15 @@ int ExampleTrialIndex(const PassingSetup& setup);
 MatchTrialResult PlayExampleTrial(const PassingSetup& setup, const std::string& team,
                                   const KickExecutor& executor, std::uint64_t seed,
                                   int scenario_number);
+// PlayExampleTrial of the scenario of `scored` (RunPassing's result for it), checked against
+// the example trial the run scored: std::logic_error naming the first difference unless the
+// replay is the same trial bit for bit (outcome, counters, events, trace), so a viewer never
+// shows a trial other than the one scored. InputError when `scored` holds no example trial.
+MatchTrialResult ReplayExampleTrial(const PassingSetup& setup, const std::string& team,
+                                    const KickExecutor& executor, std::uint64_t seed,
+                                    const ScenarioTrials& scored);
+// Where two trials differ ("" when they are the same bit for bit): "outcome", "counters",
+// "team_counters", "events[3]", "trace[120]" or "events (12 against 13)".
+std::string MatchTrialDifference(const MatchTrialResult& a, const MatchTrialResult& b);
 
 }  // namespace foresight

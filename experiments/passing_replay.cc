@@ -1,6 +1,7 @@
 #include "experiments/passing_replay.h"
 
 #include "report/field_svg.h"
+#include "report/json_text.h"
 #include "report/report_format.h"
 
 namespace foresight {
@@ -59,12 +60,21 @@ std::string FieldSvg(const PassingSetup& setup, const MatchTrialResult& t) {
 std::string FramesJson(const PassingSetup& setup, const MatchTrialResult& t) {
   const FieldCanvas c(setup.field, kPixelsPerM, 0.0);
   std::string json = "[";
+  // Appends `value` with `decimals` decimals after a comma (report/json_text.h).
+  const auto number = [&json](double value, int decimals, const char* what) {
+    json += ',';
+    json += JsonFixed(value, decimals, what);
+  };
   for (std::size_t i = 0; i < t.trace.size(); ++i) {
     const TraceFrame& f = t.trace[i];
-    json += Format("%s[%.2f,%.1f,%.1f", i == 0 ? "" : ",\n", f.time_s, c.X(f.p_F_ball.x()),
-                   c.Y(f.p_F_ball.y()));
+    json += i == 0 ? "[" : ",\n[";
+    json += JsonFixed(f.time_s, 2, "replay frame time");
+    number(c.X(f.p_F_ball.x()), 1, "replay ball x");
+    number(c.Y(f.p_F_ball.y()), 1, "replay ball y");
     for (const Pose2& p : f.robots) {
-      json += Format(",%.1f,%.1f,%.1f", c.X(p.p_F.x()), c.Y(p.p_F.y()), -p.theta_rad * kRadToDeg);
+      number(c.X(p.p_F.x()), 1, "replay robot x");
+      number(c.Y(p.p_F.y()), 1, "replay robot y");
+      number(-p.theta_rad * kRadToDeg, 1, "replay robot heading");
     }
     json += "]";
   }
@@ -82,7 +92,11 @@ std::string EventsJson(const PassingSetup& setup, const MatchTrialResult& t) {
   std::string json = "[";
   bool first = true;
   for (const auto& [time_s, text] : ReplayEvents(setup, t)) {
-    json += Format("%s[%.2f,\"%s\"]", first ? "" : ",", time_s, text.c_str());
+    json += first ? "[" : ",[";
+    json += JsonFixed(time_s, 2, "replay event time");
+    json += ',';
+    json += JsonString(text);
+    json += ']';
     first = false;
   }
   return json + "]";
@@ -176,7 +190,7 @@ std::string PassingReplayHtml(const PassingRun& run, std::size_t index) {
       "lines: the whole paths; dashed boxes: home regions.</p>\n",
       static_cast<unsigned long long>(run.provenance.seed));
   html += "<script>\nconst frames = " + FramesJson(setup, *t) +
-          ";\nconst events = " + EventsJson(setup, *t) + ";\n" + kScript +
+          ";\nconst events = " + ScriptSafeJson(EventsJson(setup, *t)) + ";\n" + kScript +
           "</script>\n</body></html>\n";
   return html;
 }

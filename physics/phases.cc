@@ -64,6 +64,7 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
   PhaseEnd end;
   end.ball = ball_start;
   double last_touch_s = 0.0;
+  bool struck = false;
   // The kick phase ends by max_kick_time_s; a floating robot is watched on until it has stood
   // its settle time after its motion, however slow the motion's playback.
   const double watch_end_s = std::max(steps.max_kick_time_s, stand_end_s);
@@ -104,6 +105,12 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
     // winds up, is not a launch: the motion goes on and may still strike it.
     const double speed = end.ball.PlanarSpeed();
     const bool out_of_reach = speed * speed >= 2.0 * deceleration * steps.min_launch_roll_m;
+    // The strike: the first step in which the robot's touch has given the ball a launch's speed
+    // (the same rule that tells a graze from a launch, below).
+    if (contacts.kicker && out_of_reach && !struck) {
+      end.t_strike_s = t;
+      struck = true;
+    }
     if (end.touched && t - last_touch_s >= kReleaseTimeS && (out_of_reach || t > motion_end_s) &&
         RollsFreely(end.ball, radius)) {
       end.launched = true;
@@ -115,6 +122,7 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
     if (!end.touched && t > motion_end_s + kMissGraceS && (!floating || t >= stand_end_s)) break;
     if (t >= steps.max_kick_time_s && !floating) break;
   }
+  if (!struck) end.t_strike_s = end.t_first_touch_s;  // no touch gave a launch's speed
   return end;
 }
 

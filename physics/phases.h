@@ -35,6 +35,10 @@ struct PhaseEnd {
   bool launched = false;  // kick: it left the robot and rolls without sliding
   bool fell = false;      // kick: the robot's torso tilted past the fall tilt (floating base)
   double t_first_touch_s = 0.0;
+  // kick: the strike, the first step in which the robot's touch gave the ball a launch's speed
+  // (one that would roll it min_launch_roll_m: slower, a touch is a graze); the first touch if
+  // none did.
+  double t_strike_s = 0.0;
   double max_tilt_rad = 0.0;  // kick: the torso's largest tilt (floating base)
 };
 

@@ -103,6 +103,7 @@ TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request) 
   result.max_tilt_rad = kick.max_tilt_rad;
   const double t_zero = kick.touched ? kick.t_first_touch_s : kick.t_s;
   result.t_first_touch_s = t_zero;
+  result.t_strike_s = kick.touched ? kick.t_strike_s : kick.t_s;
   if (kick.touched) {
     const Vec2 v = kick.ball.v_F.head<2>();
     result.launch_speed_mps = v.norm();

@@ -59,6 +59,9 @@ struct TrialResult {
   Vec2 p_F_launch{0.0, 0.0};
   double t_launch_s = 0.0;        // since the first touch
   double t_first_touch_s = 0.0;   // since the motion's start (the trace's clock)
+  // The strike, when the robot's touch gave the ball a launch's speed (an earlier graze that left
+  // it nearly at rest is the first touch, not the strike; physics/phases.h), on the same clock.
+  double t_strike_s = 0.0;
   std::vector<TracePoint> trace;  // filled on request; times since the motion's start
   std::optional<SceneTrace> scene;  // the whole scene for the viewer, on request
 };

@@ -5,7 +5,6 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <algorithm>
 #include <vector>
 
 #include "common/error.h"
@@ -75,8 +74,7 @@ py::dict DecideMany(const std::shared_ptr<PlannerCore>& core, const py::object& 
   auto h = hypotheses.mutable_unchecked<1>();
   RunLongCall(progress, [&] {
     std::lock_guard<std::mutex> lock(core->mutex);
-    const ProgressFunction report = LongCallProgress("decide", "poses", {});
-    const py::ssize_t every = std::max<py::ssize_t>(1, n / 100);
+    const ProgressFunction report = LongCallProgress("decide", "poses", {});  // rate-limited
     for (py::ssize_t i = 0; i < n; ++i) {
       WithFile("robots[" + std::to_string(i) + "]",
                [&] { DecideLocked(*core, states[i], chosen, sample_count, seeds[i]); });
@@ -86,9 +84,7 @@ py::dict DecideMany(const std::shared_ptr<PlannerCore>& core, const py::object& 
       u(i) = d.kick_index == kNoKick ? d.none.trimmed_utility
                                      : d.kicks[d.kick_index].choice.evaluation.trimmed_utility;
       h(i) = d.evaluations;
-      if (report && ((i + 1) % every == 0 || i + 1 == n)) {
-        report(static_cast<int>(i + 1), static_cast<int>(n));
-      }
+      if (report) report(static_cast<int>(i + 1), static_cast<int>(n));
       PollLongCall();
     }
     return 0;

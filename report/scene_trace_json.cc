@@ -1,48 +1,45 @@
 #include "report/scene_trace_json.h"
 
-#include <cmath>
-#include <nlohmann/json.hpp>
-
-#include "report/report_format.h"
+#include "report/json_text.h"
 
 namespace foresight {
 
 namespace {
 
-// Appends round(value * units) to `out`, after a comma unless `first`.
-void Int(std::string& out, double value, double units, bool first = false) {
+// Appends round(value * units) to `out`, after a comma unless `first`; `what` names the value
+// when it is not finite (report/json_text.h).
+void Int(std::string& out, double value, double units, const char* what, bool first = false) {
   if (!first) out += ',';
-  out += std::to_string(std::llround(value * units));
+  out += std::to_string(JsonRounded(value * units, what));
 }
 
-void Vector(std::string& out, const Eigen::Vector3d& v, double units, bool first = false) {
-  Int(out, v.x(), units, first);
-  Int(out, v.y(), units);
-  Int(out, v.z(), units);
+void Vector(std::string& out, const Eigen::Vector3d& v, double units, const char* what,
+            bool first = false) {
+  Int(out, v.x(), units, what, first);
+  Int(out, v.y(), units, what);
+  Int(out, v.z(), units, what);
 }
 
 // x, y, z, qx, qy, qz, qw; the quaternion with qw >= 0 (q and -q are the same turn).
-void Pose(std::string& out, const ScenePose& pose, bool first = false) {
-  Vector(out, pose.p_F, kTraceUnitsPerM, first);
+void Pose(std::string& out, const ScenePose& pose, const char* what, bool first = false) {
+  Vector(out, pose.p_F, kTraceUnitsPerM, what, first);
   const double sign = pose.q_F.w() < 0.0 ? -1.0 : 1.0;
-  Vector(out, sign * pose.q_F.vec(), kTraceUnitsPerQuat);
-  Int(out, sign * pose.q_F.w(), kTraceUnitsPerQuat);
+  Vector(out, sign * pose.q_F.vec(), kTraceUnitsPerQuat, what);
+  Int(out, sign * pose.q_F.w(), kTraceUnitsPerQuat, what);
 }
 
 void Isometry(std::string& out, const Eigen::Isometry3d& pose) {
   ScenePose p;
   p.p_F = pose.translation();
   p.q_F = Eigen::Quaterniond(pose.linear()).normalized();
-  Pose(out, p, true);
+  Pose(out, p, "robot shape pose", true);
 }
-
-std::string Quoted(const std::string& text) { return nlohmann::json(text).dump(); }
 
 std::string Strings(const std::vector<std::string>& names) {
   std::string out = "[";
   for (std::size_t i = 0; i < names.size(); ++i) {
     if (i > 0) out += ',';
-    out += Quoted(names[i]);
+    out += JsonString(names[i]);
   }
   return out + "]";
 }
@@ -54,24 +51,25 @@ std::string Frames(const SceneTrace& trace) {
     const SceneFrame& f = trace.frames[i];
     const char* sep = i ? "," : "";
     t += sep;
-    Int(t, f.t_s, kTraceUnitsPerS, true);
+    Int(t, f.t_s, kTraceUnitsPerS, "scene trace frame time", true);
     phase += sep;
     phase += std::to_string(f.phase);
     ball += sep;
     ball += '[';
-    Pose(ball, f.ball, true);
-    Vector(ball, f.w_F_ball, kTraceUnitsPerRadps);
+    Pose(ball, f.ball, "scene trace ball pose", true);
+    Vector(ball, f.w_F_ball, kTraceUnitsPerRadps, "scene trace ball spin");
     ball += "]";
     links += sep;
     links += '[';
-    for (std::size_t k = 0; k < f.links.size(); ++k) Pose(links, f.links[k], k == 0);
+    for (std::size_t k = 0; k < f.links.size(); ++k)
+      Pose(links, f.links[k], "scene trace link pose", k == 0);
     links += "]";
     bodies += sep;
     bodies += '[';
     for (std::size_t k = 0; k < f.bodies.size(); ++k) {
-      Int(bodies, f.bodies[k].p_F.x(), kTraceUnitsPerM, k == 0);
-      Int(bodies, f.bodies[k].p_F.y(), kTraceUnitsPerM);
-      Int(bodies, f.bodies[k].theta_rad, kTraceUnitsPerQuat);
+      Int(bodies, f.bodies[k].p_F.x(), kTraceUnitsPerM, "scene trace body pose", k == 0);
+      Int(bodies, f.bodies[k].p_F.y(), kTraceUnitsPerM, "scene trace body pose");
+      Int(bodies, f.bodies[k].theta_rad, kTraceUnitsPerQuat, "scene trace body pose");
     }
     bodies += "]";
   }
@@ -81,37 +79,48 @@ std::string Frames(const SceneTrace& trace) {
 }  // namespace
 
 std::string SceneTraceJson(const SceneTrace& trace) {
-  std::string out = "{\"format\":" + Quoted(kSceneTraceFormat);
-  out += Format(",\"rate_hz\":%.17g", trace.rate_hz);
-  out += Format(
-      ",\"units\":{\"m\":%g,\"quaternion\":%g,\"rad_per_s\":%g,\"N_s\":%g,\"s\":%g,"
-      "\"heading_rad\":%g}",
-      kTraceUnitsPerM, kTraceUnitsPerQuat, kTraceUnitsPerRadps, kTraceUnitsPerNs, kTraceUnitsPerS,
-      kTraceUnitsPerQuat);
+  std::string out = "{\"format\":" + JsonString(kSceneTraceFormat);
+  out += ",\"rate_hz\":" + JsonNumber(trace.rate_hz, "scene trace rate_hz");
+  out += ",\"units\":{";
+  const std::pair<const char*, double> units[] = {{"m", kTraceUnitsPerM},
+                                                  {"quaternion", kTraceUnitsPerQuat},
+                                                  {"rad_per_s", kTraceUnitsPerRadps},
+                                                  {"N_s", kTraceUnitsPerNs},
+                                                  {"s", kTraceUnitsPerS},
+                                                  {"heading_rad", kTraceUnitsPerQuat}};
+  for (const auto& [name, value] : units) {
+    if (out.back() != '{') out += ',';
+    out += JsonString(name);
+    out += ':';
+    out += JsonNumber(value, name);
+  }
+  out += "}";
   out += ",\n\"links\":" + Strings(trace.links);
   out += ",\n\"phases\":" + Strings(trace.phases);
   out += ",\n\"bodies\":[";
   for (std::size_t i = 0; i < trace.bodies.size(); ++i) {
     const SceneBody& b = trace.bodies[i];
-    out += Format("%s{\"name\":%s,\"team\":%d,\"radius_m\":%.6g,\"height_m\":%.6g}", i ? "," : "",
-                  Quoted(b.name).c_str(), b.team, b.radius_m, b.height_m);
+    out += std::string(i ? "," : "") + "{\"name\":" + JsonString(b.name) +
+           ",\"team\":" + std::to_string(b.team) +
+           ",\"radius_m\":" + JsonNumber(b.radius_m, "scene trace body radius_m") +
+           ",\"height_m\":" + JsonNumber(b.height_m, "scene trace body height_m") + "}";
   }
   out += "],\n" + Frames(trace);
   out += ",\n\"contacts\":[";
   for (std::size_t i = 0; i < trace.contacts.size(); ++i) {
     const SceneContact& c = trace.contacts[i];
     out += (i ? ",\n[" : "\n[");
-    Int(out, c.t_s, kTraceUnitsPerS, true);
-    out += "," + Quoted(c.a) + "," + Quoted(c.b);
-    Vector(out, c.p_F, kTraceUnitsPerM);
-    Int(out, c.impulse_Ns, kTraceUnitsPerNs);
+    Int(out, c.t_s, kTraceUnitsPerS, "scene trace contact time", true);
+    out += "," + JsonString(c.a) + "," + JsonString(c.b);
+    Vector(out, c.p_F, kTraceUnitsPerM, "scene trace contact point");
+    Int(out, c.impulse_Ns, kTraceUnitsPerNs, "scene trace contact impulse");
     out += "]";
   }
   out += "],\n\"obstacles\":[";
   for (std::size_t i = 0; i < trace.obstacles.size(); ++i) {
     out += i ? ",[" : "[";
     for (std::size_t k = 0; k < trace.obstacles[i].size(); ++k) {
-      Pose(out, trace.obstacles[i][k], k == 0);
+      Pose(out, trace.obstacles[i][k], "scene trace obstacle link pose", k == 0);
     }
     out += "]";
   }
@@ -119,11 +128,11 @@ std::string SceneTraceJson(const SceneTrace& trace) {
 }
 
 std::string RobotShapesJson(const RobotModel& model) {
-  std::string out = "{\"name\":" + Quoted(model.name) + ",\"links\":[";
+  std::string out = "{\"name\":" + JsonString(model.name) + ",\"links\":[";
   for (std::size_t l = 0; l < model.links.size(); ++l) {
     const RobotLink& link = model.links[l];
     out += l ? ",\n{\"name\":" : "\n{\"name\":";
-    out += Quoted(link.name);
+    out += JsonString(link.name);
     out += ",\"shapes\":[";
     for (std::size_t s = 0; s < link.collisions.size(); ++s) {
       const RobotShape& shape = link.collisions[s];
@@ -133,28 +142,31 @@ std::string RobotShapesJson(const RobotModel& model) {
       switch (shape.kind) {
         case RobotShape::Kind::kBox:
           out += ",\"box\":[";
-          Vector(out, shape.box_size_m, kTraceUnitsPerM, true);
+          Vector(out, shape.box_size_m, kTraceUnitsPerM, "robot box size", true);
           out += "]";
           break;
         case RobotShape::Kind::kSphere:
           out += ",\"sphere\":";
-          Int(out, shape.radius_m, kTraceUnitsPerM, true);
+          Int(out, shape.radius_m, kTraceUnitsPerM, "robot sphere radius", true);
           break;
         case RobotShape::Kind::kCylinder:
           out += ",\"cylinder\":[";
-          Int(out, shape.radius_m, kTraceUnitsPerM, true);
-          Int(out, shape.length_m, kTraceUnitsPerM);
+          Int(out, shape.radius_m, kTraceUnitsPerM, "robot cylinder radius", true);
+          Int(out, shape.length_m, kTraceUnitsPerM, "robot cylinder length");
           out += "]";
           break;
         case RobotShape::Kind::kMesh:
           out += ",\"vertices\":[";
           for (std::size_t v = 0; v < shape.mesh_vertices_S_m.size(); ++v) {
-            Vector(out, shape.mesh_vertices_S_m[v], kTraceUnitsPerM, v == 0);
+            Vector(out, shape.mesh_vertices_S_m[v], kTraceUnitsPerM, "robot mesh vertex", v == 0);
           }
           out += "],\"triangles\":[";
           for (std::size_t t = 0; t < shape.mesh_triangles.size(); ++t) {
             const auto& tri = shape.mesh_triangles[t];
-            out += Format("%s%d,%d,%d", t ? "," : "", tri[0], tri[1], tri[2]);
+            for (int k = 0; k < 3; ++k) {
+              if (t > 0 || k > 0) out += ',';
+              out += std::to_string(tri[k]);
+            }
           }
           out += "]";
           break;

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/html_report.h"
-#include "report/report_format.h"
+#include "report/json_text.h"
 #include "report/scene_trace_json.h"
 #include "report/viewer_assets.h"
 
@@ -12,62 +12,72 @@ namespace foresight {
 
 namespace {
 
-std::string Quoted(const std::string& text) { return nlohmann::json(text).dump(); }
-
 std::string Pairs(const ViewerNumbers& rows) {
   std::string out = "[";
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    out += (i ? ",[" : "[") + Quoted(rows[i].first) + "," + Quoted(rows[i].second) + "]";
+    out += (i ? ",[" : "[") + JsonString(rows[i].first) + "," + JsonString(rows[i].second) + "]";
   }
   return out + "]";
 }
 
+// {"name":number,...} of named numbers, each refused when not finite (report/json_text.h).
+std::string Numbers(std::initializer_list<std::pair<const char*, double>> named, const char* what) {
+  std::string out = "{";
+  for (const auto& [name, value] : named) {
+    if (out.size() > 1) out += ',';
+    out += JsonString(name) + ":" + JsonNumber(value, std::string(what) + "." + name);
+  }
+  return out + "}";
+}
+
 std::string FieldJson(const FieldSpec& f) {
   const GoalSpec& g = f.goal;
-  return Format(
-      "{\"field_length_m\":%.17g,\"field_width_m\":%.17g,\"line_width_m\":%.17g,"
-      "\"carpet_length_m\":%.17g,\"carpet_width_m\":%.17g,\"goal\":{\"post_radius_m\":%.17g,"
-      "\"post_centre_x_m\":%.17g,\"post_centre_y_m\":%.17g,\"net_depth_m\":%.17g,"
-      "\"net_height_m\":%.17g}}",
-      f.field_length_m, f.field_width_m, f.line_width_m, f.carpet_length_m, f.carpet_width_m,
-      g.post_radius_m, g.post_centre_x_m, g.post_centre_y_m, g.net_depth_m, g.net_height_m);
+  std::string out = Numbers({{"field_length_m", f.field_length_m},
+                             {"field_width_m", f.field_width_m},
+                             {"line_width_m", f.line_width_m},
+                             {"carpet_length_m", f.carpet_length_m},
+                             {"carpet_width_m", f.carpet_width_m}},
+                            "viewer field");
+  out.pop_back();
+  return out + ",\"goal\":" +
+         Numbers({{"post_radius_m", g.post_radius_m},
+                  {"post_centre_x_m", g.post_centre_x_m},
+                  {"post_centre_y_m", g.post_centre_y_m},
+                  {"net_depth_m", g.net_depth_m},
+                  {"net_height_m", g.net_height_m}},
+                 "viewer field.goal") +
+         "}";
 }
 
 std::string SceneJson(const ViewerScene& scene) {
-  std::string out = "{\"title\":" + Quoted(scene.title);
+  std::string out = "{\"title\":" + JsonString(scene.title);
   out += ",\"about\":" + Pairs(scene.about);
   out += ",\"field\":" + FieldJson(*scene.field);
-  out += Format(",\"ball_radius_m\":%.17g", scene.field->ball.radius_m);
+  out += ",\"ball_radius_m\":" + JsonNumber(scene.field->ball.radius_m, "viewer ball_radius_m");
   out += ",\n\"robot\":" + (scene.robot ? RobotShapesJson(*scene.robot) : std::string("null"));
   out += ",\n\"regions\":[";
   for (std::size_t i = 0; i < scene.regions.size(); ++i) {
     const ViewerRegion& r = scene.regions[i];
-    out += Format("%s{\"label\":%s,\"team\":%d,\"x_min\":%.17g,\"x_max\":%.17g,\"y_min\":%.17g,"
-                  "\"y_max\":%.17g}",
-                  i ? "," : "", Quoted(r.label).c_str(), r.team, r.box.x_min_m, r.box.x_max_m,
-                  r.box.y_min_m, r.box.y_max_m);
+    std::string box = Numbers({{"x_min", r.box.x_min_m},
+                               {"x_max", r.box.x_max_m},
+                               {"y_min", r.box.y_min_m},
+                               {"y_max", r.box.y_max_m}},
+                              "viewer region");
+    out += std::string(i ? "," : "") + "{\"label\":" + JsonString(r.label) +
+           ",\"team\":" + std::to_string(r.team) + "," + box.substr(1);
   }
   out += "],\n\"trials\":[";
   for (std::size_t i = 0; i < scene.trials.size(); ++i) {
     const ViewerTrial& t = scene.trials[i];
-    out += (i ? ",\n{" : "\n{") + std::string("\"label\":") + Quoted(t.label);
+    out += (i ? ",\n{" : "\n{") + std::string("\"label\":") + JsonString(t.label);
     out += ",\"numbers\":" + Pairs(t.numbers) + ",\"events\":[";
     for (std::size_t k = 0; k < t.events.size(); ++k) {
-      out += Format("%s[%.6g,%s]", k ? "," : "", t.events[k].first,
-                    Quoted(t.events[k].second).c_str());
+      out += std::string(k ? "," : "") + "[" + JsonNumber(t.events[k].first, "viewer event time") +
+             "," + JsonString(t.events[k].second) + "]";
     }
     out += "],\n\"trace\":" + SceneTraceJson(t.trace) + "}";
   }
   return out + "]}";
-}
-
-// Text inside <script>: "</" would end it early. JSON may escape '/' ("<\/"); the inlined
-// scripts are checked to contain no "</script" at all.
-std::string ScriptSafeJson(std::string json) {
-  for (std::size_t at = json.find("</"); at != std::string::npos; at = json.find("</", at + 3)) {
-    json.replace(at, 2, "<\\/");
-  }
-  return json;
 }
 
 void Script(std::string& html, const char* id, std::string_view text) {
@@ -145,8 +155,8 @@ std::string ViewerHtml(const ViewerScene& scene) {
   html += kViewerCss;
   html += "</style>\n</head><body>\n";
   html += kBody;
-  html += "<script>document.getElementById('title').textContent = " + Quoted(scene.title) +
-          ";</script>\n";
+  html += "<script>document.getElementById('title').textContent = " +
+          ScriptSafeJson(JsonString(scene.title)) + ";</script>\n";
   html += "<script type=\"application/json\" id=\"scene-data\">" + ScriptSafeJson(SceneJson(scene)) +
           "</script>\n";
   // three.js is MIT licensed (Copyright 2010-2026 Three.js Authors); its files keep their notes.

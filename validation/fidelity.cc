@@ -10,6 +10,7 @@
 #include "physics/physics_setup.h"
 #include "planner/coarse_planner.h"
 #include "validation/candidate_grid.h"
+#include "validation/fidelity_views.h"
 #include "validation/physics_evaluator.h"
 
 namespace foresight {
@@ -70,7 +71,8 @@ using SettledByWorld = std::map<std::string, SettledStances>;
 
 SituationFidelity RunOne(const FidelityCase& fc, const std::vector<double>& rotations,
                          const std::filesystem::path& models, const FidelitySettings& settings,
-                         int coarse_samples, SettledByWorld& settled) {
+                         int coarse_samples, SettledByWorld& settled,
+                         const std::vector<SituationFidelity>& before) {
   const std::string world = fc.situation.kicks.robot + "|" + fc.situation.field.name;
   const auto known = settled.find(world);
   auto setup = LoadPhysicsSetup(fc.situation, models, settings.physics_file, settings.base,
@@ -111,6 +113,8 @@ SituationFidelity RunOne(const FidelityCase& fc, const std::vector<double>& rota
   s.physics_outcomes = physics.Hypothesis(choice.kick_index, choice.rotation_rad).outcomes;
   s.decisions = CompareDecisions(coarse, physics, rotations);
   s.physics_trials_run = physics.trials_run();
+  // Recorded now, while the evaluator that scored the trials is here (merge runs no physics).
+  if (MayBeShown(before, s)) s.views = RecordFidelityViews(s, physics);
   return s;
 }
 
@@ -211,7 +215,9 @@ FidelityResult RunFidelity(const FidelitySet& set, const std::filesystem::path& 
     const FidelityCase& fc = set.cases[shard.Item(k)];
     const int n =
         settings.coarse_samples > 0 ? settings.coarse_samples : fc.situation.evaluation.samples;
-    result.situations.push_back(RunOne(fc, set.rotations_rad, models_dir, settings, n, settled));
+    result.situations.push_back(
+        RunOne(fc, set.rotations_rad, models_dir, settings, n, settled, result.situations));
+    KeepShownViews(result.situations);
     if (settings.progress) settings.progress(k + 1, owned);
   }
   if (shard.IsWhole()) FinishFidelity(result, settings.confidence);
@@ -228,14 +234,20 @@ void FinishFidelity(FidelityResult& result, double confidence) {
   Aggregate(result, confidence);
 }
 
+bool WorseSituation(const SituationFidelity& a, const SituationFidelity& b) {
+  const ChoiceMetrics& x = a.coarse;
+  const ChoiceMetrics& y = b.coarse;
+  if (x.regret != y.regret) return x.regret > y.regret;
+  if (std::isnan(x.tau_b) || std::isnan(y.tau_b))
+    return !std::isnan(x.tau_b) && std::isnan(y.tau_b);
+  return x.tau_b < y.tau_b;
+}
+
 std::vector<int> WorstFirst(const FidelityResult& result) {
   std::vector<int> order(result.situations.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    const ChoiceMetrics& x = result.situations[a].coarse;
-    const ChoiceMetrics& y = result.situations[b].coarse;
-    if (x.regret != y.regret) return x.regret > y.regret;
-    return x.tau_b < y.tau_b;
+    return WorseSituation(result.situations[a], result.situations[b]);
   });
   return order;
 }

@@ -25,6 +25,7 @@
 #include "common/shard.h"
 #include "models/physics_params.h"
 #include "planner/decision.h"
+#include "report/viewer_page.h"
 #include "stats/statistics.h"
 #include "validation/fidelity_set.h"
 
@@ -40,7 +41,7 @@ struct FidelitySettings {
   std::filesystem::path physics_file;      // empty: MODELS/physics/<field>.json
   std::optional<RobotBase> base;           // replaces the physics files' robot base
   std::function<void(int, int)> progress;  // (situations done, total)
-  // Only situation i with shard.Owns(i) runs (issue 17); the result then holds those, in set
+  // Only situation i with shard.Owns(i) runs; the result then holds those, in set
   // order, without the aggregates: validation/fidelity_shard.h merges the shards.
   Shard shard;
 };
@@ -80,6 +81,9 @@ struct SituationFidelity {
   std::vector<Outcome> physics_outcomes;  // ... and its physics trials
   long long physics_trials_run = 0;
   StatusCounts physics_status;  // over all candidates
+  // The 3D viewer's trials (validation/fidelity_views.h), recorded while the situation ran; only
+  // a situation that may be among the worst shown keeps them.
+  std::vector<ViewerTrial> views;
 };
 
 struct MeanWithInterval {
@@ -120,7 +124,12 @@ void FinishFidelity(FidelityResult& result, double confidence);
 // The coarse samples N of a run: the setting, or the first situation's evaluation file's.
 int FidelityCoarseSamples(const FidelitySet& set, const FidelitySettings& settings);
 
-// The situations ordered from worst to best: largest coarse regret, then lowest tau.
+// Whether situation a is worse than b: larger coarse regret, then lower tau (NaN after every
+// number), then neither (the earlier in the set comes first). A strict weak order, so the worst
+// few of a whole run are among the worst few of each shard's situations.
+bool WorseSituation(const SituationFidelity& a, const SituationFidelity& b);
+
+// The situations ordered from worst to best by WorseSituation, ties in set order.
 std::vector<int> WorstFirst(const FidelityResult& result);
 
 }  // namespace foresight

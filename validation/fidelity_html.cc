@@ -116,7 +116,7 @@ void WorstSituations(HtmlReport& html, const FidelityResult& r) {
       "chosen action; orange rings: where physics put the ball for the same action; "
       "arrow: the robot's heading after its turn.");
   const std::vector<int> order = WorstFirst(r);
-  const std::vector<int> viewed = FidelityViewSituations(r);
+  const std::vector<int> viewed = FidelityViewSituations(r.situations);
   for (std::size_t i = 0; i < order.size() && i < 10; ++i) {
     const SituationFidelity& s = r.situations[order[i]];
     const CandidateScore& choice = s.candidates[s.coarse.choice];

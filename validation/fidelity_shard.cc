@@ -6,6 +6,7 @@
 #include "common/geometry.h"
 #include "planner/hypothesis.h"
 #include "planner/strategy_names.h"
+#include "report/scene_trace_shard.h"
 
 namespace foresight {
 
@@ -111,6 +112,8 @@ nlohmann::json SituationJson(const SituationFidelity& s) {
                          ExactJson(a.coarse_rotation_rad), ExactJson(a.physics_rotation_rad),
                          a.agree, ExactJson(a.regret)});
   }
+  nlohmann::json views = nlohmann::json::array();
+  for (const ViewerTrial& t : s.views) views.push_back(ViewerTrialShardJson(t));
   return {{"file", std::filesystem::path(s.file).filename().string()},
           {"candidates", candidates},
           {"physics_best", s.physics_best},
@@ -120,7 +123,8 @@ nlohmann::json SituationJson(const SituationFidelity& s) {
           {"coarse_outcomes", OutcomesShardJson(s.coarse_outcomes)},
           {"physics_outcomes", OutcomesShardJson(s.physics_outcomes)},
           {"physics_trials_run", s.physics_trials_run},
-          {"physics_status", StatusJson(s.physics_status)}};
+          {"physics_status", StatusJson(s.physics_status)},
+          {"views", views}};
 }
 
 StrategyAgreement ReadAgreement(const ShardValue& v, int kicks) {
@@ -181,6 +185,9 @@ SituationFidelity ReadSituation(const ShardValue& v, const FidelityCase& fc) {
   s.physics_trials_run = v["physics_trials_run"].Integer();
   if (s.physics_trials_run < 0) v["physics_trials_run"].Fail("must be 0 or more");
   s.physics_status = ReadStatus(v["physics_status"]);
+  const ShardValue views = v["views"];
+  for (std::size_t i = 0; i < views.Size(); ++i)
+    s.views.push_back(ReadShardViewerTrial(views.At(i)));
   return s;
 }
 

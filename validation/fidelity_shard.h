@@ -1,8 +1,9 @@
-// The fidelity comparison in shards (issue 17): a shard's situations as the results of its shard
+// The fidelity comparison in shards: a shard's situations as the results of its shard
 // file (report/shard_file.h), and the whole result again from all shards. An item is a situation
 // of the set; its result is everything RunFidelity computed for it (candidates with their three
-// evaluations, metrics, decisions, the drawn outcomes), numbers written exactly, so the merged
-// report has the bytes of an unsharded run.
+// evaluations, metrics, decisions, the drawn outcomes, the recorded trials of a situation that may
+// get a 3D viewer, validation/fidelity_views.h), numbers written exactly, so the merged report has
+// the bytes of an unsharded run.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,5 +1,9 @@
 #include "validation/physics_evaluator.h"
 
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
 #include "common/parallel_for.h"
 
 namespace foresight {
@@ -16,13 +20,7 @@ PhysicsHypothesis PhysicsActionEvaluator::Run(int kick_index, double rotation_ra
   PhysicsHypothesis h;
   h.outcomes.resize(samples_.size());
   const auto run_trial = [&](int i) {
-    const DrawnSample& sample = samples_[static_cast<std::size_t>(i)];
-    if (kick_index == kNoKick) {  // `none`: the ball stays where it lies
-      h.outcomes[i].p_F_rest = sample.state.p_F_ball;
-      return;
-    }
-    const ConcreteAction action = MakeAction(situation_.kicks, kick_index, rotation_rad, sample);
-    h.outcomes[i] = simulator_.Simulate(sample.state, action);
+    h.outcomes[i] = Trial(kick_index, rotation_rad, i, 0.0).outcome;
   };
   ParallelFor(static_cast<int>(samples_.size()), kick_index == kNoKick ? 1 : threads_, run_trial);
   HypothesisAccumulator hypothesis;
@@ -32,6 +30,45 @@ PhysicsHypothesis PhysicsActionEvaluator::Run(int kick_index, double rotation_ra
   }
   h.evaluation = hypothesis.Finish(situation_.evaluation);
   return h;
+}
+
+TrialResult PhysicsActionEvaluator::Trial(int kick_index, double rotation_rad, int i,
+                                          double scene_rate_hz) const {
+  const DrawnSample& sample = samples_[static_cast<std::size_t>(i)];
+  if (kick_index == kNoKick) {  // `none`: the ball stays where it lies
+    TrialResult none;
+    none.outcome.p_F_rest = sample.state.p_F_ball;
+    return none;
+  }
+  const ConcreteAction action = MakeAction(situation_.kicks, kick_index, rotation_rad, sample);
+  return simulator_.Run(sample.state, action, false, scene_rate_hz);
+}
+
+namespace {
+
+bool SameBits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+bool SameBits(const Outcome& a, const Outcome& b) {
+  return SameBits(a.p_F_rest.x(), b.p_F_rest.x()) && SameBits(a.p_F_rest.y(), b.p_F_rest.y()) &&
+         a.category == b.category && a.first_contact == b.first_contact &&
+         SameBits(a.time_s, b.time_s) && a.status == b.status;
+}
+
+}  // namespace
+
+TrialResult PhysicsActionEvaluator::Replay(int kick_index, double rotation_rad, int i,
+                                           double scene_rate_hz) {
+  const Outcome& scored =
+      Hypothesis(kick_index, rotation_rad).outcomes.at(static_cast<std::size_t>(i));
+  TrialResult again = Trial(kick_index, rotation_rad, i, scene_rate_hz);
+  if (!SameBits(again.outcome, scored)) {
+    throw std::logic_error("physics trial " + std::to_string(i) + " of kick " +
+                           std::to_string(kick_index) +
+                           " played again with its scene recorded differs from the scored one");
+  }
+  return again;
 }
 
 const PhysicsHypothesis& PhysicsActionEvaluator::Hypothesis(int kick_index, double rotation_rad) {

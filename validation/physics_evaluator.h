@@ -36,6 +36,13 @@ class PhysicsActionEvaluator final : public ActionEvaluator {
   std::vector<Outcome> Outcomes(int kick_index, double rotation_rad) const override;
   // Runs the trials if they have not run yet.
   const PhysicsHypothesis& Hypothesis(int kick_index, double rotation_rad);
+  // Trial i of a candidate: the one function the scoring runs for every trial; scene_rate_hz >
+  // 0 also records the scene (TrialResult::scene), which changes nothing else.
+  TrialResult Trial(int kick_index, double rotation_rad, int i, double scene_rate_hz) const;
+  // Trial i of a candidate scored already, run again by Trial with the scene recorded, for the
+  // 3D viewer. std::logic_error unless its outcome equals the scored trial's bit for bit: the
+  // viewer shows the very trial that was scored, or nothing.
+  TrialResult Replay(int kick_index, double rotation_rad, int i, double scene_rate_hz);
   long long trials_run() const { return trials_run_; }
 
  private:

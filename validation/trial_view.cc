@@ -18,7 +18,12 @@ ViewerNumbers TrialNumbers(const TrialResult& r) {
     rows.push_back({"launch direction", Format("%+.2f deg (robot frame)",
                                                r.launch_direction_rad * kRadToDeg)});
     rows.push_back({"launch point", Format("(%.3f, %.3f) m", r.p_F_launch.x(), r.p_F_launch.y())});
-    rows.push_back({"first touch", Format("%.3f s (within 1 mm)", r.t_first_touch_s)});
+    // The strike gave the ball a launch's speed (physics/phases.h); a first touch long before it
+    // was a graze that left the ball nearly at rest.
+    rows.push_back({"strike", Format("%.3f s (the touch gives a launch's speed)", r.t_strike_s)});
+    rows.push_back(
+        {"first touch", Format("%.3f s (within 1 mm), %.0f ms before the strike", r.t_first_touch_s,
+                               (r.t_strike_s - r.t_first_touch_s) * 1e3)});
   }
   rows.push_back({"rest", Format("(%.3f, %.3f) m", o.p_F_rest.x(), o.p_F_rest.y())});
   rows.push_back({"time to rest", Format("%.2f s after the touch", o.time_s)});

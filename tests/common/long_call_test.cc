@@ -104,5 +104,25 @@ TEST(LongCallTest, ProgressGoesToTheHostOrElseTheFallback) {
   EXPECT_EQ(host.heard.back(), "simulate 4/4 trials");
 }
 
+// Every long call is rate-limited in one place: a loop that reports each of a million items
+// reaches the host (the Python module takes the GIL per report) about kProgressSteps times,
+// in order, ending with the last item.
+TEST(LongCallTest, TheHostHearsAtMostOneReportPerStepAndTheLast) {
+  TestHost host(0);
+  ScopedLongCallHost installed(host);
+  const ProgressFunction report = LongCallProgress("decide", "poses", {});
+  constexpr int kItems = 1000000;
+  for (int done = 1; done <= kItems; ++done) report(done, kItems);
+  EXPECT_LE(host.heard.size(), static_cast<std::size_t>(kProgressSteps + 1));
+  EXPECT_GE(host.heard.size(), static_cast<std::size_t>(kProgressSteps));
+  EXPECT_EQ(host.heard.front(), "decide 10000/1000000 poses");
+  EXPECT_EQ(host.heard.back(), "decide 1000000/1000000 poses");
+  // A short loop still reports every item.
+  host.heard.clear();
+  const ProgressFunction few = LongCallProgress("simulate", "trials", {});
+  for (int done = 1; done <= 3; ++done) few(done, 3);
+  EXPECT_EQ(host.heard.size(), 3u);
+}
+
 }  // namespace
 }  // namespace foresight

@@ -6,7 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
 
+#include "common/error.h"
+#include "experiments/passing_replay.h"
 #include "experiments/passing_report.h"
 #include "experiments/passing_stats.h"
 #include "tests/support/temp_files.h"
@@ -135,6 +139,60 @@ TEST(PassingTest, SummaryCountsTheTrials) {
   EXPECT_EQ(result.scenarios[0].scenario, 4);
   EXPECT_FALSE(result.scenarios[0].trials[0].trace.empty());  // the example trial
   EXPECT_TRUE(result.scenarios[0].trials[1].trace.empty());
+}
+
+// The example trial played again for a viewer is checked against the trial the run scored: the
+// coarse replay is the same trial bit for bit; a scored trial that differs in one event time by
+// a nanosecond (a replay that went its own way) is an error naming where, never a viewer of
+// another trial; results without the example trial (a shard that did not play it) are refused.
+TEST(PassingTest, AReplayedExampleTrialMustBeTheScoredTrial) {
+  const PassingSetup setup = LoadSetup("dg", 2, false, {4});
+  const CoarseKickExecutor executor(setup.field, setup.kicks.rolling_deceleration_mps2);
+  PassingResult result = RunPassing(setup, "reactive", executor, 1, 2);
+  ScenarioTrials& st = result.scenarios[0];
+  const MatchTrialResult again = ReplayExampleTrial(setup, "reactive", executor, 1, st);
+  EXPECT_EQ(MatchTrialDifference(again, st.trials[0]), "");
+  ASSERT_FALSE(st.trials[0].events.empty());
+  st.trials[0].events[0].time_s += 1e-9;
+  try {
+    ReplayExampleTrial(setup, "reactive", executor, 1, st);
+    ADD_FAILURE() << "a replay that differs from the scored trial was accepted";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("differs from the scored trial in its events[0]"),
+              std::string::npos)
+        << e.what();
+  }
+  st.trials[0].trace.clear();
+  EXPECT_THROW(ReplayExampleTrial(setup, "reactive", executor, 1, st), InputError);
+}
+
+// The 2D replay's events are JSON strings written by the one JSON writer: a quote, a backslash,
+// a control character and "</script>" in an event's text leave the page's script whole and the
+// events readable as JSON with the text unchanged.
+TEST(PassingTest, TheReplaysEventTextIsEscapedJson) {
+  const PassingSetup setup = LoadSetup("dg", 1, false, {4});
+  const CoarseKickExecutor executor(setup.field, setup.kicks.rolling_deceleration_mps2);
+  PassingRun run;
+  run.setup = &setup;
+  run.team = "reactive";
+  run.result = RunPassing(setup, "reactive", executor, 1, 1);
+  MatchTrialResult& t = run.result.scenarios[0].trials[0];
+  ASSERT_FALSE(t.trace.empty());
+  const std::string odd = "say \"hi\" \\ back\tslash </script><b>";
+  MatchEvent e;
+  e.kind = EventKind::kKick;
+  e.detail = odd;
+  t.events.push_back(e);
+  const std::string html = PassingReplayHtml(run, 0);
+  EXPECT_EQ(html.find("</script><b>"), std::string::npos);
+  const std::string open = "const events = ";
+  const std::size_t a = html.find(open);
+  ASSERT_NE(a, std::string::npos);
+  const std::size_t b = html.find(";\n", a);
+  const nlohmann::json events =
+      nlohmann::json::parse(html.substr(a + open.size(), b - a - open.size()));
+  ASSERT_FALSE(events.empty());
+  EXPECT_EQ(events.back()[1].get<std::string>(), "A kick " + odd);
 }
 
 }  // namespace

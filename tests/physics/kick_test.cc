@@ -174,6 +174,47 @@ TEST(KickPhaseTest, AGrazeThatLeavesTheBallAtRestDoesNotEndTheKick) {
   }
 }
 
+// The strike is when the robot's touch gives the ball a launch's speed, by the rule the kick phase
+// tells a graze from a launch with: after the graze above (the knee brushing the ball, which it
+// leaves nearly at rest) the strike comes later, with the contact that carries the kick's impulse
+// (the largest in the recorded scene). The viewer shows both times.
+TEST(KickPhaseTest, TheStrikeIsTheLaunchingTouchNotAnEarlierGraze) {
+  const auto data = testing::LoadPhysicsFixture("four_legged", true, "aibo_ers7");
+  data->robot->spec.variation = TrialVariation{};
+  const int kick = *data->robot->FindMotion("forward_short");
+  data->robot->motions[kick].p_R_ball -= Vec2(0.022, 0.0);
+  const Vec2 ball(-0.88, 0.0);
+  KickRequest request;
+  request.state = DrawnState{Pose2{Vec2(-1.0, 0.0), 0.0}, ball};
+  request.motion_index = kick;
+  request.stream = 1;
+  request.scene_rate_hz = 100.0;
+  const TrialResult r = RunKickTrial(testing::SceneOf(*data, {}, ball), request);
+  ASSERT_TRUE(r.launched);
+  EXPECT_GT(r.t_strike_s, r.t_first_touch_s + 0.05);  // the graze came first
+  ASSERT_TRUE(r.scene.has_value());
+  double largest = 0.0, t_largest = -1.0;
+  for (const SceneContact& c : r.scene->contacts) {
+    const std::string& other = c.a == "ball" ? c.b : c.a;
+    const bool link = other != "ball" && other != "carpet" && other != "post" && other != "net" &&
+                      other != "obstacle";
+    if ((c.a == "ball" || c.b == "ball") && link && c.impulse_Ns > largest) {
+      largest = c.impulse_Ns;
+      t_largest = c.t_s;
+    }
+  }
+  // Contacts are summed over a frame's 10 ms; a strike lasts a few milliseconds.
+  EXPECT_GE(t_largest, r.t_strike_s - 0.01);
+  EXPECT_LE(t_largest, r.t_strike_s + 0.02);
+  // A kick without a graze: the strike comes within the few milliseconds a strike takes
+  // (KickStrikeTest) of the first touch.
+  data->robot->motions[kick].p_R_ball += Vec2(0.022, 0.0);
+  const TrialResult clean = RunKickTrial(testing::SceneOf(*data, {}, ball), request);
+  ASSERT_TRUE(clean.launched);
+  EXPECT_GE(clean.t_strike_s, clean.t_first_touch_s);
+  EXPECT_LE(clean.t_strike_s, clean.t_first_touch_s + 0.006);
+}
+
 // The seam says when the robot missed (issue 11): with the ball moved half a metre to the side of
 // where the motion expects it, the foot swings through air, the ball stays, and the outcome says
 // so; the same kick at the right place says ok.

@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -21,6 +23,8 @@
 #include "tests/support/test_situations.h"
 #include "validation/candidate_grid.h"
 #include "validation/fidelity_set.h"
+#include "validation/fidelity_shard.h"
+#include "validation/fidelity_views.h"
 
 namespace foresight {
 namespace {
@@ -224,6 +228,113 @@ TEST(FidelityTest, TinyRunMetricsAreInRange) {
   const std::vector<int> worst = WorstFirst(r);
   ASSERT_EQ(worst.size(), 2u);
   EXPECT_GE(r.situations[worst[0]].coarse.regret, r.situations[worst[1]].coarse.regret);
+}
+
+// --- the worst situations' viewers -------------------------------------------------------------
+
+// A situation whose coarse choice kicks, with the given regret and tau.
+SituationFidelity Scored(double regret, double tau_b) {
+  SituationFidelity s;
+  s.candidates.push_back(CandidateScore{});
+  s.coarse.regret = regret;
+  s.coarse.tau_b = tau_b;
+  return s;
+}
+
+// The situations run as shard `index` of `count` would run them: each recorded (a view labelled
+// with its index in the set) when it may be shown among those run before it, and the views of
+// those pushed out dropped; then all put back in set order, as the merge does.
+std::vector<SituationFidelity> RunInShards(const std::vector<SituationFidelity>& set, int count) {
+  std::vector<SituationFidelity> merged(set.size());
+  for (int index = 0; index < count; ++index) {
+    std::vector<SituationFidelity> run;
+    std::vector<std::size_t> items;
+    for (std::size_t i = static_cast<std::size_t>(index); i < set.size(); i += count) {
+      SituationFidelity s = set[i];
+      if (MayBeShown(run, s)) s.views = {ViewerTrial{std::to_string(i), {}, {}, {}}};
+      run.push_back(s);
+      items.push_back(i);
+      KeepShownViews(run);
+    }
+    for (std::size_t k = 0; k < items.size(); ++k) merged[items[k]] = run[k];
+  }
+  return merged;
+}
+
+// The worst situations are known only after every situation (and every shard), yet each is
+// recorded while it runs: whatever the split into shards, every situation shown has its own
+// recording, and at most the shown few per shard keep one (ties in regret and tau, and a NaN tau,
+// included: the order is strict).
+TEST(FidelityViewsTest, EveryShownSituationKeepsItsRecordingInEveryShardSplit) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<SituationFidelity> set = {
+      Scored(0.1, 0.5), Scored(0.5, 0.2),  Scored(0.3, nan), Scored(0.2, 0.9), Scored(0.5, 0.2),
+      Scored(0.3, 0.1), Scored(0.0, -1.0), Scored(0.5, nan), Scored(0.3, nan), Scored(0.05, 0.0)};
+  std::vector<int> expected = FidelityViewSituations(set);
+  EXPECT_EQ(expected, (std::vector<int>{1, 4, 7}));
+  for (int count = 1; count <= 5; ++count) {
+    SCOPED_TRACE(count);
+    const std::vector<SituationFidelity> merged = RunInShards(set, count);
+    int recorded = 0;
+    for (const SituationFidelity& s : merged) recorded += !s.views.empty();
+    EXPECT_LE(recorded, count * kFidelityViewSituations);
+    for (int i : expected) {
+      ASSERT_EQ(merged[i].views.size(), 1u) << i;
+      EXPECT_EQ(merged[i].views[0].label, std::to_string(i));
+    }
+  }
+}
+
+// The tiny run records the shown candidates' first trials (each played again through the
+// evaluator that scored it and checked against the scored outcome bit for bit, or the run
+// throws), merging its shards gives viewer pages with the unsharded run's bytes, and the pages
+// are made from those recordings alone: a shown situation without them is refused, not
+// simulated again.
+TEST(FidelityViewsTest, PagesComeFromTheRecordedTrialsAndShardsGiveTheSameBytes) {
+  const FidelitySet set = TinySet("views");
+  FidelitySettings settings;
+  settings.physics_trials = 4;
+  settings.converged_samples = 200;
+  settings.seed = 7;
+  settings.threads = 2;
+  const FidelityResult whole = RunFidelity(set, testing::ModelsDir(), settings);
+  const std::vector<int> shown = FidelityViewSituations(whole.situations);
+  ASSERT_FALSE(shown.empty());
+  for (int i : shown) {
+    const SituationFidelity& s = whole.situations[i];
+    ASSERT_FALSE(s.views.empty()) << s.file;
+    for (const ViewerTrial& v : s.views) {
+      EXPECT_FALSE(v.trace.frames.empty()) << v.label;
+      EXPECT_EQ(v.numbers[0].first, "candidate");
+      EXPECT_TRUE(std::any_of(v.numbers.begin(), v.numbers.end(), [](const auto& row) {
+        return row.first == "strike";
+      })) << v.label;
+    }
+  }
+  std::vector<ShardPart> parts;
+  for (int i = 0; i < 2; ++i) {
+    FidelitySettings part_settings = settings;
+    part_settings.shard = {i, 2};
+    const FidelityResult part = RunFidelity(set, testing::ModelsDir(), part_settings);
+    ShardPart shard_part;
+    shard_part.file = "shard" + part_settings.shard.Text();
+    shard_part.header.shard = part_settings.shard;
+    shard_part.header.items = static_cast<int>(set.cases.size());
+    shard_part.results = nlohmann::json::parse(FidelityShardResults(part).dump());
+    parts.push_back(shard_part);
+  }
+  FidelityResult merged = MergeFidelityShards(set, settings, parts);
+  const auto pages = FidelityViewPages(whole, settings, testing::ModelsDir());
+  ASSERT_EQ(pages.size(), shown.size());
+  EXPECT_EQ(FidelityViewPages(merged, settings, testing::ModelsDir()), pages);
+  merged.situations[shown[0]].views.clear();
+  try {
+    FidelityViewPages(merged, settings, testing::ModelsDir());
+    ADD_FAILURE() << "a shown situation without recorded trials made a page";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(),
+                HasSubstr(": the fidelity results hold no recorded trials for its viewer"));
+  }
 }
 
 // --- loading sets -----------------------------------------------------------------------------
