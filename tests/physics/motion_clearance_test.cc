@@ -83,9 +83,6 @@ TEST(MotionClearanceTest, ShippedMotionsStayAboveTheCarpet) {
   for (const char* robot_name : {"nao", "aibo_ers7"}) {
     const Robot robot = LoadRobot(robot_name, testing::ModelsDir());
     for (const KickMotion& motion : robot.motions) {
-      // The AIBO's body kick lunges by extending its hind legs against the carpet, which only
-      // the floating base models; its front legs' swing is checked in power_kick_test.cc.
-      if (motion.name == "power") continue;
       const MotionClearance clearance = FindMotionClearance(robot, motion);
       EXPECT_GT(clearance.lowest_m, -0.001)
           << robot_name << " " << motion.name << " at " << clearance.t_s << " s, "
