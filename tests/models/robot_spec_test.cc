@@ -450,14 +450,18 @@ TEST(RobotSpecTest, ShippedNaoLoadsWithFourKicks) {
   }
 }
 
-TEST(RobotSpecTest, ShippedAiboLoadsWithFiveKicks) {
+TEST(RobotSpecTest, ShippedAiboLoadsWithSixKicks) {
   const Robot aibo = LoadRobot("aibo_ers7", ModelsDir());
   EXPECT_EQ(aibo.model.links.size(), 16u);
-  EXPECT_EQ(aibo.motions.size(), 5u);
+  EXPECT_EQ(aibo.motions.size(), 6u);
   EXPECT_TRUE(aibo.FindMotion("forward_short").has_value());
-  // The pass, appended last so no other kick's random streams move, stands up for its kick.
+  // The pass and then the power kick, appended last so no other kick's random streams move,
+  // stand up for their kicks; the power kick shifts its weight on a floating base.
   EXPECT_EQ(aibo.FindMotion("pass"), 4);
   EXPECT_TRUE(aibo.motions[4].stance.IsOwn());
+  EXPECT_EQ(aibo.FindMotion("power"), 5);
+  EXPECT_TRUE(aibo.motions[5].stance.IsOwn());
+  EXPECT_TRUE(aibo.motions[5].balance.Has());
   EXPECT_EQ(aibo.StandingPositions().size(), aibo.model.joints.size());
 }
 

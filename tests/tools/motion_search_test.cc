@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -213,6 +214,20 @@ TEST(MotionSearchTest, BadSettingsNameTheFileAndField) {
                     testing::ReplaceOnce(TinySettings(), R"("kick": "forward")", R"("kick": "lob")")),
       ModelsDir());
   EXPECT_THROW(LoadSearchSetup(settings, ModelsDir()), InputError);
+}
+
+// Every shipped settings file (models/motion_search/) loads, and names a kick its robot has a
+// motion for, on the base it says.
+TEST(MotionSearchTest, EveryShippedSettingsFileLoads) {
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(ModelsDir() / "motion_search")) {
+    const MotionSearchSettings settings = LoadMotionSearchSettings(entry.path(), ModelsDir());
+    const auto setup = LoadSearchSetup(settings, ModelsDir());
+    EXPECT_TRUE(setup->robot.FindMotion(settings.kick).has_value()) << entry.path();
+    EXPECT_EQ(setup->params.robot.base, settings.base) << entry.path();
+    ++files;
+  }
+  EXPECT_GE(files, 3);
 }
 
 TEST(MotionSearchTest, AWrittenMotionFileLoadsBackAsTheCandidate) {
