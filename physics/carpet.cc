@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "common/random.h"
+#include "physics/bullet_world.h"
 
 namespace foresight {
 
@@ -14,6 +16,12 @@ namespace {
 constexpr std::uint64_t kPatchDomain = 0x70a7c4;
 
 }  // namespace
+
+void AddCarpetPlane(BulletWorld& world, const MaterialParams& materials) {
+  auto* plane = world.Own(std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), 0.0));
+  world.AddStatic(plane, btTransform::getIdentity(), BodyTag::kCarpet,
+                  {materials.restitution.carpet, materials.friction.carpet});
+}
 
 Carpet::Carpet(const CarpetParams& params, double trial_factor)
     : params_(params), trial_factor_(trial_factor) {}

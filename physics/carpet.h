@@ -22,6 +22,12 @@ class btRigidBody;
 
 namespace foresight {
 
+class BulletWorld;
+
+// Adds the carpet, the plane z = 0 with the carpet's restitution and friction, to a world: the
+// one place a world gets its carpet (the trials' scene, the settled stance, the tests).
+void AddCarpetPlane(BulletWorld& world, const MaterialParams& materials);
+
 class Carpet {
  public:
   Carpet(const CarpetParams& params, double trial_factor);

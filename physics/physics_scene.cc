@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "physics/bullet_convert.h"
+#include "physics/carpet.h"
 #include "physics/robot_kinematics.h"
 #include "physics/robot_shapes.h"
 
@@ -100,10 +101,8 @@ PhysicsScene MakePhysicsScene(const FieldSpec& field, const PhysicsParams& param
 }
 
 void AddStatics(BulletWorld& world, const PhysicsScene& scene) {
-  auto* plane = world.Own(std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), 0.0));
   const MaterialParams& m = scene.params.materials;
-  world.AddStatic(plane, btTransform::getIdentity(), BodyTag::kCarpet,
-                  {m.restitution.carpet, m.friction.carpet});
+  AddCarpetPlane(world, m);
   AddGoal(world, scene, 1.0);
   AddGoal(world, scene, -1.0);
   if (scene.obstacle_poses.empty()) return;

@@ -5,6 +5,7 @@
 
 #include "physics/bullet_convert.h"
 #include "physics/bullet_world.h"
+#include "physics/carpet.h"
 #include "physics/kicking_robot.h"
 
 namespace foresight {
@@ -17,9 +18,7 @@ SettledStance SettleBalance(const Robot& robot, const KickMotion& motion,
   const StepParams& steps = params.steps;
   BulletWorld world(BulletWorld::Kind::kMultiBody,
                     {steps.solver_iterations, steps.restitution_threshold_mps});
-  auto* plane = world.Own(std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), 0.0));
-  world.AddStatic(plane, btTransform::getIdentity(), BodyTag::kCarpet,
-                  {params.materials.restitution.carpet, params.materials.friction.carpet});
+  AddCarpetPlane(world, params.materials);
   const Eigen::Isometry3d pose_F_start = PlanarPose(0.0, 0.0, robot.BaseHeightM(motion), 0.0);
   KickingRobot kicker(world, robot, pose_F_start, robot.StandingPositions(motion),
                       KickJoints(robot, motion, RobotBase::kFloating), floating);

@@ -9,6 +9,7 @@
 #include "common/random.h"
 #include "models/situation.h"
 #include "physics/motion_clearance.h"
+#include "physics/played_speed.h"
 #include "physics/settled_stance.h"
 
 namespace foresight {
@@ -76,6 +77,13 @@ void Evaluate(const MotionSearchRun& run, Robot& robot, int motion_index, int ki
   c.clearance_m = FindSwingClearance(robot, c.motion).lowest_m;
   if (c.clearance_m < settings.constraints.min_clearance_m) {
     c.refusal = Refusal::kClearance;
+    return;
+  }
+  // The targets' speed is not the joints': a joint carried on by the links swinging around it
+  // may outrun its motor where its own target does not ask it to.
+  if (FindPlayedSpeedShare(robot, c.motion, run.setup->params, max_factor) >
+      settings.constraints.max_speed_share) {
+    c.refusal = Refusal::kSpeed;
     return;
   }
   Played played = Play(run, robot, motion_index, kick_index, round.trials, trial_seed);

@@ -16,6 +16,10 @@
 //   refused for clearance when the links the motion moves come closer to the carpet than
 //                         min_clearance_m over its targets (FindSwingClearance,
 //                         physics/motion_clearance.h);
+//   refused for speed     also when, played alone at the fastest playback, a joint turns
+//                         faster than max_speed_share of its motor's no-load speed
+//                         (FindPlayedSpeedShare, physics/played_speed.h): a joint carried on
+//                         by the links around it can outrun what its target asks;
 //   refused for balance   when the robot falls while shifting its weight, or falls in more
 //                         than max_fall_share of its trials (floating base);
 // and otherwise scored by the objective over `trials` physics trials (lower is better).

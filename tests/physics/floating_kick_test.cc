@@ -14,6 +14,7 @@
 #include "physics/ball_placement.h"
 #include "physics/bullet_convert.h"
 #include "physics/bullet_world.h"
+#include "physics/carpet.h"
 #include "physics/kicking_robot.h"
 #include "physics/physics_runs.h"
 #include "physics/physics_simulator.h"
@@ -30,12 +31,6 @@ std::unique_ptr<testing::PhysicsFixtureData> FloatingNao() {
   return data;
 }
 
-void AddCarpet(BulletWorld& world, const PhysicsParams& params) {
-  auto* plane = world.Own(std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), 0.0));
-  world.AddStatic(plane, btTransform::getIdentity(), BodyTag::kCarpet,
-                  {params.materials.restitution.carpet, params.materials.friction.carpet});
-}
-
 // How far a floating robot held at a kick's stance moves in 2 s on a bare carpet.
 struct Standing {
   double drift_m = 0.0;   // horizontal
@@ -49,7 +44,7 @@ Standing StandFor2s(const testing::PhysicsFixtureData& data, const char* kick,
   const KickMotion& motion = robot.motions[*robot.FindMotion(kick)];
   BulletWorld world(BulletWorld::Kind::kMultiBody, {data.params.steps.solver_iterations,
                                                     data.params.steps.restitution_threshold_mps});
-  AddCarpet(world, data.params);
+  AddCarpetPlane(world, data.params.materials);
   Eigen::Isometry3d start = pose_F_start_at_height_0;
   start.translation().z() = robot.BaseHeightM(motion);
   KickingRobot kicker(world, robot, start, robot.StandingPositions(motion),
@@ -89,7 +84,7 @@ TEST(FloatingBaseTest, ItsLinksTouchTheStaticsAndAFixedBasesDoNot) {
     const Robot& robot = *data->robot;
     const KickMotion& motion = robot.motions[0];
     BulletWorld world(BulletWorld::Kind::kMultiBody, {10, 0.02});
-    AddCarpet(world, data->params);
+    AddCarpetPlane(world, data->params.materials);
     auto* box = world.Own(std::make_unique<btBoxShape>(btVector3(0.02, 0.3, 0.02)));
     world.AddStatic(box, btTransform(btQuaternion::getIdentity(), btVector3(0, 0, 0.35)),
                     BodyTag::kObstacle, {0.18, 0.48});
