@@ -27,22 +27,28 @@ void CoarseActionEvaluator::Redraw(const StateEstimate& state, int samples, std:
   state_ = state;
   sample_count_ = samples;
   padded_count_ = static_cast<std::size_t>((samples + kLanes - 1) / kLanes * kLanes);
-  DrawSamples(state, seed, samples, drawn_);
-  // Padding lanes hold a ball at the centre spot; their results are never summed.
-  ball_x_.assign(padded_count_, 0.0);
-  ball_y_.assign(padded_count_, 0.0);
-  start_category_.assign(padded_count_, static_cast<std::int64_t>(Category::kInfield));
-  theta_rad_.assign(padded_count_, 0.0);
-  z_speed_.assign(padded_count_, 0.0);
-  z_direction_.assign(padded_count_, 0.0);
-  for (std::size_t i = 0; i < drawn_.size(); ++i) {
-    const DrawnSample& d = drawn_[i];
-    ball_x_[i] = d.state.p_F_ball.x();
-    ball_y_[i] = d.state.p_F_ball.y();
-    start_category_[i] = static_cast<std::int64_t>(ClassifyPosition(world_, d.state.p_F_ball));
-    theta_rad_[i] = d.state.robot.theta_rad;
-    z_speed_[i] = d.z_speed;
-    z_direction_[i] = d.z_direction;
+  // Padding lanes hold a ball at the centre spot without noise; their results are never summed.
+  ball_x_.resize(padded_count_);
+  ball_y_.resize(padded_count_);
+  start_category_.resize(padded_count_);
+  theta_rad_.resize(padded_count_);
+  z_speed_.resize(padded_count_);
+  z_direction_.resize(padded_count_);
+  LaneMask drawn{};
+  for (int l = 0; l < kLanes; ++l) drawn[l] = -1;
+  for (std::size_t first = 0; first < padded_count_; first += kLanes) {
+    const SampleLanes s = DrawSampleLanes(state, seed, first);
+    if (first + kLanes > static_cast<std::size_t>(samples)) {
+      for (int l = 0; l < kLanes; ++l) drawn[l] = first + l < static_cast<std::size_t>(samples) ? -1 : 0;
+    }
+    const Lanes zero = Broadcast(0.0);
+    const Lanes x = Select(drawn, s.ball_x, zero), y = Select(drawn, s.ball_y, zero);
+    Store(x, &ball_x_[first]);
+    Store(y, &ball_y_[first]);
+    StoreMask(ClassifyPositionLanes(world_.lines, x, y), &start_category_[first]);
+    Store(Select(drawn, s.robot_theta_rad, zero), &theta_rad_[first]);
+    Store(Select(drawn, s.z_speed, zero), &z_speed_[first]);
+    Store(Select(drawn, s.z_direction, zero), &z_direction_[first]);
   }
   const std::size_t slots = static_cast<std::size_t>(kick_count()) * padded_count_;
   direction_x_.resize(slots);

@@ -62,7 +62,6 @@ class CoarseActionEvaluator final : public ActionEvaluator {
   const PositionValue& value_;
   int sample_count_ = 0;
   std::size_t padded_count_ = 0;  // sample_count_ rounded up to whole lanes
-  std::vector<DrawnSample> drawn_;
   // Per sample (padded): the ball and the category of its start.
   std::vector<double> ball_x_, ball_y_;
   std::vector<std::int64_t> start_category_;
