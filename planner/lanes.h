@@ -16,7 +16,7 @@
 #include <cmath>
 #include <cstdint>
 
-#if defined(__AVX2__)
+#if defined(__AVX__)
 #include <immintrin.h>
 #endif
 
@@ -54,10 +54,20 @@ inline LaneMask Select(LaneMask m, LaneMask if_true, LaneMask if_false) {
   return m ? if_true : if_false;
 }
 
+// Whether some lane (Any) or every lane (All) of a mask is set: one test instruction where the
+// target has one.
 inline bool Any(LaneMask m) {
-  std::int64_t any = 0;
-  for (int l = 0; l < kLanes; ++l) any |= m[l];
-  return any != 0;
+#if defined(__AVX512F__)
+  return _mm512_test_epi64_mask(reinterpret_cast<__m512i>(m), reinterpret_cast<__m512i>(m)) != 0;
+#elif defined(__AVX__)
+  return !_mm256_testz_si256(reinterpret_cast<__m256i>(m), reinterpret_cast<__m256i>(m));
+#else
+  static_assert(kLanes == 2);
+  return (m[0] | m[1]) != 0;
+#endif
+}
+inline bool All(LaneMask m) {
+  return !Any(~m);
 }
 
 // std::min, std::max and std::clamp's definitions lane by lane (the same lane wins on ties).

@@ -30,11 +30,27 @@ SampleLanes DrawSampleLanes(const StateEstimate& estimate, std::uint64_t seed,
                             std::uint64_t first) {
   SampleLanes s;
   s.stream = StreamKeyLanes(seed, first);
-  LaneMask fast = BroadcastMask(-1);
   // DrawSample's draws in its order: robot x, y, heading, ball y, ball x, speed, direction.
-  Lanes normal[7];
-  for (int k = 0; k < 7; ++k) {
-    normal[k] = NormalFastLanes(StreamBitsLanes(s.stream, static_cast<std::uint64_t>(k + 1)), fast);
+  constexpr int kDraws = 7;
+  Lanes normal[kDraws];
+  LaneMask fast[kDraws];
+  LaneMask all_fast = BroadcastMask(-1);
+  for (int k = 0; k < kDraws; ++k) {
+    fast[k] = BroadcastMask(-1);
+    normal[k] =
+        NormalFastLanes(StreamBitsLanes(s.stream, static_cast<std::uint64_t>(k + 1)), fast[k]);
+    all_fast &= fast[k];
+  }
+  if (!All(all_fast)) {
+    // A lane's first slow-path draw and every later one from its scalar stream: the slow path
+    // draws more numbers, which moves the later draws along the stream.
+    for (int l = 0; l < kLanes; ++l) {
+      if (all_fast[l]) continue;
+      int k = 0;
+      while (fast[k][l]) ++k;
+      RandomStream rng(s.stream[l], static_cast<std::uint64_t>(k));
+      for (; k < kDraws; ++k) normal[k][l] = rng.NextNormal();
+    }
   }
   s.robot_x = estimate.robot.p_F.x() + estimate.sigma_robot_x_m * normal[0];
   s.robot_y = estimate.robot.p_F.y() + estimate.sigma_robot_y_m * normal[1];
@@ -48,19 +64,6 @@ SampleLanes DrawSampleLanes(const StateEstimate& estimate, std::uint64_t seed,
   s.ball_y = s.robot_y + (sin_theta * ball_R_x + cos_theta * ball_R_y);
   s.z_speed = normal[5];
   s.z_direction = normal[6];
-  if (Any(~fast)) {
-    for (int l = 0; l < kLanes; ++l) {
-      if (fast[l]) continue;
-      const DrawnSample d = DrawSample(estimate, seed, first + static_cast<std::uint64_t>(l));
-      s.robot_x[l] = d.state.robot.p_F.x();
-      s.robot_y[l] = d.state.robot.p_F.y();
-      s.robot_theta_rad[l] = d.state.robot.theta_rad;
-      s.ball_x[l] = d.state.p_F_ball.x();
-      s.ball_y[l] = d.state.p_F_ball.y();
-      s.z_speed[l] = d.z_speed;
-      s.z_direction[l] = d.z_direction;
-    }
-  }
   return s;
 }
 
