@@ -131,22 +131,37 @@ ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
   SinCos(rotation_rad, &sin_rho, &cos_rho);
   const int max_outs = MaxOuts(params, sample_count_);
   HypothesisAccumulator hypothesis;
-  for (std::size_t first = 0; first < static_cast<std::size_t>(sample_count_); first += kLanes) {
-    const RestLanes rest = kick_index == kNoKick
-                               ? RestingLanes(first)
-                               : RollLanes(world_, Launch(kick_index, first, cos_rho, sin_rho));
-    const Lanes potential = value_.PotentialLanes(rest.x, rest.y);
-    const Lanes value = value_.ValueOfPotentialLanes(potential);
-    // Summed in sample order, as the scalar reference sums.
-    const std::size_t lanes = std::min<std::size_t>(kLanes, sample_count_ - first);
-    for (std::size_t l = 0; l < lanes; ++l) {
-      const auto category = static_cast<Category>(rest.category[l]);
-      hypothesis.Add(category, category == Category::kInfield ? value[l] : 0.0, potential[l]);
-      if (stop_when_trimmed && hypothesis.CertainlyTrimmed(max_outs)) {
-        ActionEvaluation trimmed = hypothesis.Finish(params);
-        trimmed.too_risky = true;
-        trimmed.trimmed_utility = 0.0;
-        return trimmed;
+  // Chunks of kChunkGroups lane groups: rolled, then valued together (independent work side by
+  // side), then summed in sample order, as the scalar reference sums. A search stops after the
+  // chunk in which the candidate is certainly trimmed, with the sums up to that sample.
+  constexpr int kChunkGroups = 16 / kLanes;
+  const std::size_t count = static_cast<std::size_t>(sample_count_);
+  for (std::size_t chunk = 0; chunk < count; chunk += kChunkGroups * kLanes) {
+    Lanes x[kChunkGroups], y[kChunkGroups], potential[kChunkGroups];
+    LaneMask category[kChunkGroups];
+    int groups = 0;
+    for (std::size_t first = chunk; first < count && groups < kChunkGroups; first += kLanes) {
+      const RestLanes rest = kick_index == kNoKick
+                                 ? RestingLanes(first)
+                                 : RollLanes(world_, Launch(kick_index, first, cos_rho, sin_rho));
+      x[groups] = rest.x;
+      y[groups] = rest.y;
+      category[groups] = rest.category;
+      ++groups;
+    }
+    value_.PotentialLanes(x, y, potential, groups);
+    for (int g = 0; g < groups; ++g) {
+      const Lanes value = value_.ValueOfPotentialLanes(potential[g]);
+      const std::size_t first = chunk + static_cast<std::size_t>(g) * kLanes;
+      const std::size_t lanes = std::min<std::size_t>(kLanes, count - first);
+      for (std::size_t l = 0; l < lanes; ++l) {
+        hypothesis.Add(static_cast<Category>(category[g][l]), value[l], potential[g][l]);
+        if (stop_when_trimmed && hypothesis.CertainlyTrimmed(max_outs)) {
+          ActionEvaluation trimmed = hypothesis.Finish(params);
+          trimmed.too_risky = true;
+          trimmed.trimmed_utility = 0.0;
+          return trimmed;
+        }
       }
     }
   }

@@ -27,8 +27,10 @@ inline LaneBits Mix64Lanes(LaneBits z) {
 
 // StreamKey(seed, first + l, domain) in lane l.
 inline LaneBits StreamKeyLanes(std::uint64_t seed, std::uint64_t first, std::uint64_t domain = 0) {
-  LaneBits index{};
-  for (int l = 0; l < kLanes; ++l) index[l] = first + static_cast<std::uint64_t>(l);
+  alignas(64) static constexpr std::uint64_t kLaneNumbers[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+  LaneBits index;
+  __builtin_memcpy(&index, kLaneNumbers, sizeof index);
+  index += first;
   const std::uint64_t seed_mix = Mix64(seed + kGoldenGamma);
   return Mix64Lanes(BroadcastBits(seed_mix) ^
                     Mix64Lanes(index * kGoldenGamma + domain * 0xD1B54A32D192ED03ULL));
