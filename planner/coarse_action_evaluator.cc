@@ -134,7 +134,7 @@ ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
   // Chunks of kChunkGroups lane groups: rolled, then valued together (independent work side by
   // side), then summed in sample order, as the scalar reference sums. A search stops after the
   // chunk in which the candidate is certainly trimmed, with the sums up to that sample.
-  constexpr int kChunkGroups = 16 / kLanes;
+  constexpr int kChunkGroups = 32 / kLanes;
   const std::size_t count = static_cast<std::size_t>(sample_count_);
   for (std::size_t chunk = 0; chunk < count; chunk += kChunkGroups * kLanes) {
     Lanes x[kChunkGroups], y[kChunkGroups], potential[kChunkGroups];
