@@ -31,39 +31,32 @@ void CoarseActionEvaluator::Redraw(const StateEstimate& state, int samples, std:
   ball_x_.resize(padded_count_);
   ball_y_.resize(padded_count_);
   start_category_.resize(padded_count_);
-  theta_rad_.resize(padded_count_);
-  z_speed_.resize(padded_count_);
-  z_direction_.resize(padded_count_);
-  LaneMask drawn{};
-  for (int l = 0; l < kLanes; ++l) drawn[l] = -1;
-  for (std::size_t first = 0; first < padded_count_; first += kLanes) {
-    const SampleLanes s = DrawSampleLanes(state, seed, first);
-    if (first + kLanes > static_cast<std::size_t>(samples)) {
-      for (int l = 0; l < kLanes; ++l) drawn[l] = first + l < static_cast<std::size_t>(samples) ? -1 : 0;
-    }
-    const Lanes zero = Broadcast(0.0);
-    const Lanes x = Select(drawn, s.ball_x, zero), y = Select(drawn, s.ball_y, zero);
-    Store(x, &ball_x_[first]);
-    Store(y, &ball_y_[first]);
-    StoreMask(ClassifyPositionLanes(world_.lines, x, y), &start_category_[first]);
-    Store(Select(drawn, s.robot_theta_rad, zero), &theta_rad_[first]);
-    Store(Select(drawn, s.z_speed, zero), &z_speed_[first]);
-    Store(Select(drawn, s.z_direction, zero), &z_direction_[first]);
-  }
   const std::size_t slots = static_cast<std::size_t>(kick_count()) * padded_count_;
   direction_x_.resize(slots);
   direction_y_.resize(slots);
   speed_mps_.resize(slots);
   stop_m_.resize(slots);
   moving_.resize(slots);
-  // The launches as MakeAction draws them and CoarseSimulator turns them into F, in lanes.
-  for (int k = 0; k < kick_count(); ++k) {
-    const KickSpec& kick = situation_.kicks.kicks[static_cast<std::size_t>(k)];
-    for (std::size_t first = 0; first < padded_count_; first += kLanes) {
-      const Lanes speed = LaunchSpeed(kick, Load(&z_speed_[first]));
-      const Lanes direction = LaunchDirection(kick, Load(&z_direction_[first]));
+  const Lanes zero = Broadcast(0.0);
+  LaneMask drawn = BroadcastMask(-1);
+  for (std::size_t first = 0; first < padded_count_; first += kLanes) {
+    const SampleLanes s = DrawSampleLanes(state, seed, first);
+    if (first + kLanes > static_cast<std::size_t>(samples)) {
+      for (int l = 0; l < kLanes; ++l) drawn[l] = first + l < static_cast<std::size_t>(samples) ? -1 : 0;
+    }
+    const Lanes x = Select(drawn, s.ball_x, zero), y = Select(drawn, s.ball_y, zero);
+    Store(x, &ball_x_[first]);
+    Store(y, &ball_y_[first]);
+    StoreMask(ClassifyPositionLanes(world_.lines, x, y), &start_category_[first]);
+    const Lanes theta_rad = Select(drawn, s.robot_theta_rad, zero);
+    const Lanes z_speed = Select(drawn, s.z_speed, zero);
+    const Lanes z_direction = Select(drawn, s.z_direction, zero);
+    // The launches as MakeAction draws them and CoarseSimulator turns them into F.
+    for (int k = 0; k < kick_count(); ++k) {
+      const KickSpec& kick = situation_.kicks.kicks[static_cast<std::size_t>(k)];
+      const Lanes speed = LaunchSpeed(kick, z_speed);
       Lanes sin_heading, cos_heading;
-      SinCosLanes(Load(&theta_rad_[first]) + direction, &sin_heading, &cos_heading);
+      SinCosLanes(theta_rad + LaunchDirection(kick, z_direction), &sin_heading, &cos_heading);
       const LaneMask moving = speed > 0.0;
       const std::size_t slot = LaunchSlot(k, first);
       Store(cos_heading, &direction_x_[slot]);
@@ -71,7 +64,7 @@ void CoarseActionEvaluator::Redraw(const StateEstimate& state, int samples, std:
       Store(speed, &speed_mps_[slot]);
       // StopDistance plus the launch offset, as RollBall adds them.
       Store(Select(moving, speed * speed / (2.0 * world_.deceleration_mps2) + kick.launch_offset_m,
-                   Broadcast(0.0)),
+                   zero),
             &stop_m_[slot]);
       StoreMask(moving, &moving_[slot]);
     }

@@ -65,7 +65,6 @@ class CoarseActionEvaluator final : public ActionEvaluator {
   // Per sample (padded): the ball and the category of its start.
   std::vector<double> ball_x_, ball_y_;
   std::vector<std::int64_t> start_category_;
-  std::vector<double> theta_rad_, z_speed_, z_direction_;  // the robot's drawn heading, kick noise
   // Per kick, then per sample (padded), [LaunchSlot(kick, i)]: the launch before the turn.
   std::vector<double> direction_x_, direction_y_, speed_mps_, stop_m_;
   std::vector<std::int64_t> moving_;  // -1 when the launch speed is > 0 (lane mask)
