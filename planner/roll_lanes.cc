@@ -58,7 +58,8 @@ Lanes CapsuleEntry(const RollLanesInput& in, const SegmentShape& net, double rad
                             Broadcast(0.0), in.stop_m);
   const Lanes ex = (in.start_x + along * in.dir_x) - p.x();
   const Lanes ey = (in.start_y + along * in.dir_y) - p.y();
-  return ~(Sqrt(ex * ex + ey * ey) > goal.bound_radius_m);
+  // ~(Sqrt(ex * ex + ey * ey) > goal.bound_radius_m), exactly, without the root.
+  return ~((ex * ex + ey * ey) > goal.bound_distance_sq_max);
 }
 
 [[gnu::always_inline]] inline void HitGoal(const GoalShapes& goal, double ball_radius, const RollLanesInput& in, Lanes& hit) {
