@@ -33,7 +33,8 @@ inline LaneBits StreamKeyLanes(std::uint64_t seed, std::uint64_t first, std::uin
   index += first;
   const std::uint64_t seed_mix = Mix64(seed + kGoldenGamma);
   return Mix64Lanes(BroadcastBits(seed_mix) ^
-                    Mix64Lanes(index * kGoldenGamma + domain * 0xD1B54A32D192ED03ULL));
+                    Mix64Lanes(index * kGoldenGamma +
+                               static_cast<std::uint64_t>(domain * 0xD1B54A32D192ED03ULL)));
 }
 
 // Draw `draw` (1 for the first) of the streams keyed `key`: RandomStream(key)'s draw-th NextBits.
