@@ -74,6 +74,19 @@ void BM_FreshSample(benchmark::State& state) {
 }
 BENCHMARK(BM_FreshSample);
 
+// The 30 samples of a decision drawn into kept storage (7 normals each, the ball placed).
+void BM_DrawSamples(benchmark::State& state) {
+  const std::vector<Situation> situations = Field(16);
+  std::vector<DrawnSample> samples;
+  std::uint64_t seed = 0;
+  for (auto _ : state) {
+    DrawSamples(situations[seed & 15].state, seed, 30, samples);
+    benchmark::DoNotOptimize(samples.data());
+    ++seed;
+  }
+}
+BENCHMARK(BM_DrawSamples);
+
 // A whole decision as a robot's cycle makes it: the samples drawn for the pose and seed into
 // the evaluator's storage (kept between cycles), the strategy, the result into a kept Decision.
 void BM_Decision(benchmark::State& state, Strategy strategy, Contacts contacts) {

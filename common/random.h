@@ -39,6 +39,9 @@ extern const ZigguratTables kZiggurat;
 class RandomStream {
  public:
   explicit RandomStream(std::uint64_t key) : state_(key) {}
+  // The stream keyed `key` after its first `draws` NextBits (for code that made those draws
+  // itself, e.g. in SIMD lanes).
+  RandomStream(std::uint64_t key, std::uint64_t draws) : state_(key + draws * kGoldenGamma) {}
 
   std::uint64_t NextBits() {
     state_ += kGoldenGamma;

@@ -27,37 +27,36 @@ void CoarseActionEvaluator::Redraw(const StateEstimate& state, int samples, std:
   state_ = state;
   sample_count_ = samples;
   padded_count_ = static_cast<std::size_t>((samples + kLanes - 1) / kLanes * kLanes);
-  DrawSamples(state, seed, samples, drawn_);
-  // Padding lanes hold a ball at the centre spot; their results are never summed.
-  ball_x_.assign(padded_count_, 0.0);
-  ball_y_.assign(padded_count_, 0.0);
-  start_category_.assign(padded_count_, static_cast<std::int64_t>(Category::kInfield));
-  theta_rad_.assign(padded_count_, 0.0);
-  z_speed_.assign(padded_count_, 0.0);
-  z_direction_.assign(padded_count_, 0.0);
-  for (std::size_t i = 0; i < drawn_.size(); ++i) {
-    const DrawnSample& d = drawn_[i];
-    ball_x_[i] = d.state.p_F_ball.x();
-    ball_y_[i] = d.state.p_F_ball.y();
-    start_category_[i] = static_cast<std::int64_t>(ClassifyPosition(world_, d.state.p_F_ball));
-    theta_rad_[i] = d.state.robot.theta_rad;
-    z_speed_[i] = d.z_speed;
-    z_direction_[i] = d.z_direction;
-  }
+  // Padding lanes hold a ball at the centre spot without noise; their results are never summed.
+  ball_x_.resize(padded_count_);
+  ball_y_.resize(padded_count_);
+  start_category_.resize(padded_count_);
   const std::size_t slots = static_cast<std::size_t>(kick_count()) * padded_count_;
   direction_x_.resize(slots);
   direction_y_.resize(slots);
   speed_mps_.resize(slots);
   stop_m_.resize(slots);
   moving_.resize(slots);
-  // The launches as MakeAction draws them and CoarseSimulator turns them into F, in lanes.
-  for (int k = 0; k < kick_count(); ++k) {
-    const KickSpec& kick = situation_.kicks.kicks[static_cast<std::size_t>(k)];
-    for (std::size_t first = 0; first < padded_count_; first += kLanes) {
-      const Lanes speed = LaunchSpeed(kick, Load(&z_speed_[first]));
-      const Lanes direction = LaunchDirection(kick, Load(&z_direction_[first]));
+  const Lanes zero = Broadcast(0.0);
+  LaneMask drawn = BroadcastMask(-1);
+  for (std::size_t first = 0; first < padded_count_; first += kLanes) {
+    const SampleLanes s = DrawSampleLanes(state, seed, first);
+    if (first + kLanes > static_cast<std::size_t>(samples)) {
+      for (int l = 0; l < kLanes; ++l) drawn[l] = first + l < static_cast<std::size_t>(samples) ? -1 : 0;
+    }
+    const Lanes x = Select(drawn, s.ball_x, zero), y = Select(drawn, s.ball_y, zero);
+    Store(x, &ball_x_[first]);
+    Store(y, &ball_y_[first]);
+    StoreMask(ClassifyPositionLanes(world_.lines, x, y), &start_category_[first]);
+    const Lanes theta_rad = Select(drawn, s.robot_theta_rad, zero);
+    const Lanes z_speed = Select(drawn, s.z_speed, zero);
+    const Lanes z_direction = Select(drawn, s.z_direction, zero);
+    // The launches as MakeAction draws them and CoarseSimulator turns them into F.
+    for (int k = 0; k < kick_count(); ++k) {
+      const KickSpec& kick = situation_.kicks.kicks[static_cast<std::size_t>(k)];
+      const Lanes speed = LaunchSpeed(kick, z_speed);
       Lanes sin_heading, cos_heading;
-      SinCosLanes(Load(&theta_rad_[first]) + direction, &sin_heading, &cos_heading);
+      SinCosLanes(theta_rad + LaunchDirection(kick, z_direction), &sin_heading, &cos_heading);
       const LaneMask moving = speed > 0.0;
       const std::size_t slot = LaunchSlot(k, first);
       Store(cos_heading, &direction_x_[slot]);
@@ -65,7 +64,7 @@ void CoarseActionEvaluator::Redraw(const StateEstimate& state, int samples, std:
       Store(speed, &speed_mps_[slot]);
       // StopDistance plus the launch offset, as RollBall adds them.
       Store(Select(moving, speed * speed / (2.0 * world_.deceleration_mps2) + kick.launch_offset_m,
-                   Broadcast(0.0)),
+                   zero),
             &stop_m_[slot]);
       StoreMask(moving, &moving_[slot]);
     }
@@ -125,22 +124,37 @@ ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
   SinCos(rotation_rad, &sin_rho, &cos_rho);
   const int max_outs = MaxOuts(params, sample_count_);
   HypothesisAccumulator hypothesis;
-  for (std::size_t first = 0; first < static_cast<std::size_t>(sample_count_); first += kLanes) {
-    const RestLanes rest = kick_index == kNoKick
-                               ? RestingLanes(first)
-                               : RollLanes(world_, Launch(kick_index, first, cos_rho, sin_rho));
-    const Lanes potential = value_.PotentialLanes(rest.x, rest.y);
-    const Lanes value = value_.ValueOfPotentialLanes(potential);
-    // Summed in sample order, as the scalar reference sums.
-    const std::size_t lanes = std::min<std::size_t>(kLanes, sample_count_ - first);
-    for (std::size_t l = 0; l < lanes; ++l) {
-      const auto category = static_cast<Category>(rest.category[l]);
-      hypothesis.Add(category, category == Category::kInfield ? value[l] : 0.0, potential[l]);
-      if (stop_when_trimmed && hypothesis.CertainlyTrimmed(max_outs)) {
-        ActionEvaluation trimmed = hypothesis.Finish(params);
-        trimmed.too_risky = true;
-        trimmed.trimmed_utility = 0.0;
-        return trimmed;
+  // Chunks of kChunkGroups lane groups: rolled, then valued together (independent work side by
+  // side), then summed in sample order, as the scalar reference sums. A search stops after the
+  // chunk in which the candidate is certainly trimmed, with the sums up to that sample.
+  constexpr int kChunkGroups = 32 / kLanes;
+  const std::size_t count = static_cast<std::size_t>(sample_count_);
+  for (std::size_t chunk = 0; chunk < count; chunk += kChunkGroups * kLanes) {
+    Lanes x[kChunkGroups], y[kChunkGroups], potential[kChunkGroups];
+    LaneMask category[kChunkGroups];
+    int groups = 0;
+    for (std::size_t first = chunk; first < count && groups < kChunkGroups; first += kLanes) {
+      const RestLanes rest = kick_index == kNoKick
+                                 ? RestingLanes(first)
+                                 : RollLanes(world_, Launch(kick_index, first, cos_rho, sin_rho));
+      x[groups] = rest.x;
+      y[groups] = rest.y;
+      category[groups] = rest.category;
+      ++groups;
+    }
+    value_.PotentialLanes(x, y, potential, groups);
+    for (int g = 0; g < groups; ++g) {
+      const Lanes value = value_.ValueOfPotentialLanes(potential[g]);
+      const std::size_t first = chunk + static_cast<std::size_t>(g) * kLanes;
+      const std::size_t lanes = std::min<std::size_t>(kLanes, count - first);
+      for (std::size_t l = 0; l < lanes; ++l) {
+        hypothesis.Add(static_cast<Category>(category[g][l]), value[l], potential[g][l]);
+        if (stop_when_trimmed && hypothesis.CertainlyTrimmed(max_outs)) {
+          ActionEvaluation trimmed = hypothesis.Finish(params);
+          trimmed.too_risky = true;
+          trimmed.trimmed_utility = 0.0;
+          return trimmed;
+        }
       }
     }
   }

@@ -4,11 +4,11 @@
 // direction theta_i + rho + alpha_ik. Everything but rho is fixed for the whole decision, so
 // the unit vectors u_ik = (cos, sin)(theta_i + alpha_ik), the speeds, the stop distances and the
 // start's category are computed once, and a candidate costs one rotation of u_ik by rho per
-// sample instead of a sine and cosine. The samples are then rolled, classified and valued four
-// at a time in SIMD lanes (planner/roll_lanes.h, PositionValue::PotentialLanes) and summed in
-// sample order, so an evaluation has the bits of the scalar reference (EvaluateReference: one
-// RollBall per sample, tested equal) and equals SeamActionEvaluator's over a CoarseSimulator up
-// to rounding (tested).
+// sample instead of a sine and cosine. The samples are drawn, rolled, classified and valued
+// kLanes at a time in SIMD lanes (planner/sampling.h, planner/roll_lanes.h,
+// PositionValue::PotentialLanes) and summed in sample order, so an evaluation has the bits of
+// the scalar reference (EvaluateReference: one RollBall per sample, tested equal) and equals
+// SeamActionEvaluator's over a CoarseSimulator up to rounding (tested).
 //
 // Storage is kept between decisions: Redraw draws the samples for another state and seed into
 // the same buffers, so a thread deciding with one evaluator never allocates once the buffers
@@ -62,11 +62,9 @@ class CoarseActionEvaluator final : public ActionEvaluator {
   const PositionValue& value_;
   int sample_count_ = 0;
   std::size_t padded_count_ = 0;  // sample_count_ rounded up to whole lanes
-  std::vector<DrawnSample> drawn_;
   // Per sample (padded): the ball and the category of its start.
   std::vector<double> ball_x_, ball_y_;
   std::vector<std::int64_t> start_category_;
-  std::vector<double> theta_rad_, z_speed_, z_direction_;  // the robot's drawn heading, kick noise
   // Per kick, then per sample (padded), [LaunchSlot(kick, i)]: the launch before the turn.
   std::vector<double> direction_x_, direction_y_, speed_mps_, stop_m_;
   std::vector<std::int64_t> moving_;  // -1 when the launch speed is > 0 (lane mask)

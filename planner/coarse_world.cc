@@ -1,6 +1,7 @@
 #include "planner/coarse_world.h"
 
 #include <cassert>
+#include <cmath>
 
 namespace foresight {
 
@@ -23,10 +24,19 @@ GoalShapes MakeGoal(const FieldSpec& field, double side) {
   goal.bound_centre = Vec2(0.5 * (x_front + x_back), 0.0);
   const double half_depth = 0.5 * g.net_depth_m + g.post_radius_m;
   goal.bound_radius_m = std::hypot(half_depth, g.post_centre_y_m + g.post_radius_m) + r;
+  goal.bound_distance_sq_max = SquaredBound(goal.bound_radius_m);
   return goal;
 }
 
 }  // namespace
+
+double SquaredBound(double r) {
+  // r * r is within an ulp of the answer; step to it.
+  double d = r * r;
+  while (d > 0.0 && std::sqrt(d) > r) d = std::nextafter(d, 0.0);
+  while (std::sqrt(std::nextafter(d, INFINITY)) <= r) d = std::nextafter(d, INFINITY);
+  return d;
+}
 
 SegmentShape SegmentShape::Between(const Vec2& a, const Vec2& b) {
   SegmentShape s;

@@ -36,7 +36,15 @@ struct GoalShapes {
   std::array<SegmentShape, 3> net;  // left side, back, right side
   Vec2 bound_centre{0.0, 0.0};      // a circle containing posts and net, grown by the ball
   double bound_radius_m = 0.0;
+  // The largest squared distance d2 whose correctly rounded square root is <= bound_radius_m
+  // (SquaredBound): sqrt(d2) > bound_radius_m exactly when d2 > bound_distance_sq_max, so lanes
+  // test the bound without a square root and with the same result.
+  double bound_distance_sq_max = 0.0;
 };
+
+// The largest double d with RN(sqrt(d)) <= r, for r >= 0 (RN: IEEE's correctly rounded square
+// root, which is monotone, so d2 > it holds exactly when RN(sqrt(d2)) > r).
+double SquaredBound(double r);
 
 struct CoarseWorld {
   double ball_radius_m = 0.0;

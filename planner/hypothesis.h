@@ -54,10 +54,11 @@ class HypothesisAccumulator {
   void Add(Category category, double value, double potential) {
     ++counts_[static_cast<int>(category)];
     potential_all_sum_ += potential;
-    if (category == Category::kInfield) {
-      value_sum_ += value;
-      potential_sum_ += potential;
-    }
+    // Without a branch (the category is a coin toss for the predictor): adding +0.0 leaves these
+    // sums' bits unchanged, as a sum that starts at +0.0 is never -0.0 (round to nearest).
+    const bool infield = category == Category::kInfield;
+    value_sum_ += infield ? value : 0.0;
+    potential_sum_ += infield ? potential : 0.0;
   }
   ActionEvaluation Finish(const EvaluationParams& params) const;
 

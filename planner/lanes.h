@@ -16,6 +16,10 @@
 #include <cmath>
 #include <cstdint>
 
+#if defined(__AVX__)
+#include <immintrin.h>
+#endif
+
 #include "common/fast_math.h"
 
 namespace foresight {
@@ -50,10 +54,20 @@ inline LaneMask Select(LaneMask m, LaneMask if_true, LaneMask if_false) {
   return m ? if_true : if_false;
 }
 
+// Whether some lane (Any) or every lane (All) of a mask is set: one test instruction where the
+// target has one.
 inline bool Any(LaneMask m) {
-  std::int64_t any = 0;
-  for (int l = 0; l < kLanes; ++l) any |= m[l];
-  return any != 0;
+#if defined(__AVX512F__)
+  return _mm512_test_epi64_mask(reinterpret_cast<__m512i>(m), reinterpret_cast<__m512i>(m)) != 0;
+#elif defined(__AVX__)
+  return !_mm256_testz_si256(reinterpret_cast<__m256i>(m), reinterpret_cast<__m256i>(m));
+#else
+  static_assert(kLanes == 2);
+  return (m[0] | m[1]) != 0;
+#endif
+}
+inline bool All(LaneMask m) {
+  return !Any(~m);
 }
 
 // std::min, std::max and std::clamp's definitions lane by lane (the same lane wins on ties).
@@ -77,6 +91,22 @@ inline Lanes Sqrt(Lanes x) {
   Lanes r{};
   for (int l = 0; l < kLanes; ++l) r[l] = std::sqrt(x[l]);
   return r;
+}
+
+// table[index[l]] in each lane: one gather instruction with AVX2 or AVX-512, loads otherwise.
+// A lookup, so every width reads the same bits.
+inline Lanes Gather(const double* table, LaneBits index) {
+#if defined(__AVX512F__)
+  return reinterpret_cast<Lanes>(_mm512_mask_i64gather_pd(
+      _mm512_setzero_pd(), 0xFF, reinterpret_cast<__m512i>(index), table, sizeof(double)));
+#elif defined(__AVX2__)
+  return reinterpret_cast<Lanes>(
+      _mm256_i64gather_pd(table, reinterpret_cast<__m256i>(index), sizeof(double)));
+#else
+  Lanes v{};
+  for (int l = 0; l < kLanes; ++l) v[l] = table[index[l]];
+  return v;
+#endif
 }
 
 inline Lanes Load(const double* p) {
@@ -144,9 +174,7 @@ inline Lanes ExpFastLanes(Lanes x) {
   const LaneBits j = ni & 63;
   const Lanes p =
       1.0 + r + r * r * (0.5 + r * (1.0 / 6 + r * (1.0 / 24 + r * (1.0 / 120 + r * (1.0 / 720)))));
-  const double* two_pow = fast_math_detail::GetExpTable().two_pow;
-  Lanes table{};
-  for (int l = 0; l < kLanes; ++l) table[l] = two_pow[j[l]];
+  const Lanes table = Gather(fast_math_detail::GetExpTable().two_pow, j);
   // + k << 52 with k = (n - j) / 64, written as a left shift of the multiple of 64.
   const LaneBits bits = reinterpret_cast<LaneBits>(table * p) + ((ni - j) << 46);
   return reinterpret_cast<Lanes>(bits);

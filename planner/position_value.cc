@@ -27,14 +27,15 @@ double PositionValue::Potential(const Vec2& p_F) const {
   return f;
 }
 
-Lanes PositionValue::PotentialLanes(Lanes x, Lanes y) const {
-  Lanes f = -x / potential_.linear_x_scale_m;
+void PositionValue::PotentialLanes(const Lanes* x, const Lanes* y, Lanes* f, int groups) const {
+  for (int i = 0; i < groups; ++i) f[i] = -x[i] / potential_.linear_x_scale_m;
   for (const GaussianTerm& g : potential_.gaussians) {
-    const Lanes dx = (x - g.centre_x_m) / g.sigma_x_m;
-    const Lanes dy = (y - g.centre_y_m) / g.sigma_y_m;
-    f += g.weight * ExpFastLanes(-0.5 * (dx * dx + dy * dy));
+    for (int i = 0; i < groups; ++i) {
+      const Lanes dx = (x[i] - g.centre_x_m) / g.sigma_x_m;
+      const Lanes dy = (y[i] - g.centre_y_m) / g.sigma_y_m;
+      f[i] += g.weight * ExpFastLanes(-0.5 * (dx * dx + dy * dy));
+    }
   }
-  return f;
 }
 
 namespace {

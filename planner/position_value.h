@@ -27,8 +27,15 @@ class PositionValue {
     return std::clamp((potential_max_ - potential) * value_scale_, 0.0, 1.0);
   }
 
-  // The same for four positions at once (planner/lanes.h): each lane has the scalar bits.
-  Lanes PotentialLanes(Lanes x, Lanes y) const;
+  // The same for kLanes positions at once (planner/lanes.h): each lane has the scalar bits.
+  Lanes PotentialLanes(Lanes x, Lanes y) const {
+    Lanes f;
+    PotentialLanes(&x, &y, &f, 1);
+    return f;
+  }
+  // f[g] = PotentialLanes(x[g], y[g]) for g < groups, the groups' independent work interleaved
+  // (one term of every group, then the next term), which keeps the pipeline full.
+  void PotentialLanes(const Lanes* x, const Lanes* y, Lanes* f, int groups) const;
   Lanes ValueOfPotentialLanes(Lanes potential) const {
     return Clamp((potential_max_ - potential) * value_scale_, Broadcast(0.0), Broadcast(1.0));
   }

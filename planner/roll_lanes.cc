@@ -6,6 +6,8 @@ namespace foresight {
 
 namespace {
 
+// The small tests of the straight roll are forced inline ([[gnu::always_inline]]): called apart,
+// every one reloads its lanes from memory and the roll's short chains cannot overlap.
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 LaneMask CategoryLanes(Category c) {
@@ -13,7 +15,7 @@ LaneMask CategoryLanes(Category c) {
 }
 
 // RayCircleEntry (planner/ray_cast.h).
-Lanes CircleEntry(const RollLanesInput& in, const Vec2& centre, double radius) {
+[[gnu::always_inline]] inline Lanes CircleEntry(const RollLanesInput& in, const Vec2& centre, double radius) {
   const Lanes mx = in.start_x - centre.x(), my = in.start_y - centre.y();
   const Lanes b = mx * in.dir_x + my * in.dir_y;
   const Lanes c = (mx * mx + my * my) - radius * radius;
@@ -50,16 +52,17 @@ Lanes CapsuleEntry(const RollLanesInput& in, const SegmentShape& net, double rad
 
 // HitGoal (planner/first_hit.cc): the goal's shapes count for lanes whose path comes within
 // its bounding circle.
-LaneMask NearGoal(const GoalShapes& goal, const RollLanesInput& in) {
+[[gnu::always_inline]] inline LaneMask NearGoal(const GoalShapes& goal, const RollLanesInput& in) {
   const Vec2& p = goal.bound_centre;
   const Lanes along = Clamp((p.x() - in.start_x) * in.dir_x + (p.y() - in.start_y) * in.dir_y,
                             Broadcast(0.0), in.stop_m);
   const Lanes ex = (in.start_x + along * in.dir_x) - p.x();
   const Lanes ey = (in.start_y + along * in.dir_y) - p.y();
-  return ~(Sqrt(ex * ex + ey * ey) > goal.bound_radius_m);
+  // ~(Sqrt(ex * ex + ey * ey) > goal.bound_radius_m), exactly, without the root.
+  return ~((ex * ex + ey * ey) > goal.bound_distance_sq_max);
 }
 
-void HitGoal(const GoalShapes& goal, double ball_radius, const RollLanesInput& in, Lanes& hit) {
+[[gnu::always_inline]] inline void HitGoal(const GoalShapes& goal, double ball_radius, const RollLanesInput& in, Lanes& hit) {
   const LaneMask near = NearGoal(goal, in);
   if (!Any(near)) return;
   Lanes s = Broadcast(kInf);
@@ -70,7 +73,7 @@ void HitGoal(const GoalShapes& goal, double ball_radius, const RollLanesInput& i
 }
 
 // ExitDistance (models/field_lines.cc): the numerator of the direction's case, one division.
-Lanes ExitDistance(Lanes start, Lanes dir, double limit) {
+[[gnu::always_inline]] inline Lanes ExitDistance(Lanes start, Lanes dir, double limit) {
   const Lanes distance = Select(dir > 0.0, limit - start, -limit - start) / dir;
   const LaneMask never = (Abs(start) > limit) | (dir == 0.0);
   return Select(never, Broadcast(kInf), distance);
@@ -78,7 +81,7 @@ Lanes ExitDistance(Lanes start, Lanes dir, double limit) {
 
 // ClassifyPath for a path that starts infield: the first line crossed outward decides, else the
 // end (end_x, end_y) does.
-LaneMask PathCategory(const FieldLines& lines, const RollLanesInput& in, Lanes travelled,
+[[gnu::always_inline]] inline LaneMask PathCategory(const FieldLines& lines, const RollLanesInput& in, Lanes travelled,
                       Lanes end_x, Lanes end_y) {
   const Lanes s_x = ExitDistance(in.start_x, in.dir_x, lines.out_x_m);
   const Lanes s_y = ExitDistance(in.start_y, in.dir_y, lines.out_y_m);

@@ -1,4 +1,4 @@
-// The coarse ball roll of four samples at once (planner/lanes.h): RollBall's first contact with
+// The coarse ball roll of kLanes samples at once (planner/lanes.h): RollBall's first contact with
 // posts, nets and obstacles, the stop on open carpet, ClassifyPath's category and, with the
 // world's rebounds on, the reflections leg by leg (planner/ball_roll.h, planner/first_hit.h,
 // planner/ray_cast.h, models/field_lines.h), written with the same operations in the same order,

@@ -1,6 +1,7 @@
 #include "planner/sampling.h"
 
 #include "common/random.h"
+#include "planner/random_lanes.h"
 
 namespace foresight {
 
@@ -25,11 +26,62 @@ DrawnSample DrawSample(const StateEstimate& estimate, std::uint64_t seed, std::u
   return sample;
 }
 
+SampleLanes DrawSampleLanes(const StateEstimate& estimate, std::uint64_t seed,
+                            std::uint64_t first) {
+  SampleLanes s;
+  s.stream = StreamKeyLanes(seed, first);
+  // DrawSample's draws in its order: robot x, y, heading, ball y, ball x, speed, direction.
+  constexpr int kDraws = 7;
+  Lanes normal[kDraws];
+  LaneMask fast[kDraws];
+  LaneMask all_fast = BroadcastMask(-1);
+  for (int k = 0; k < kDraws; ++k) {
+    fast[k] = BroadcastMask(-1);
+    normal[k] =
+        NormalFastLanes(StreamBitsLanes(s.stream, static_cast<std::uint64_t>(k + 1)), fast[k]);
+    all_fast &= fast[k];
+  }
+  if (!All(all_fast)) {
+    // A lane's first slow-path draw and every later one from its scalar stream: the slow path
+    // draws more numbers, which moves the later draws along the stream.
+    for (int l = 0; l < kLanes; ++l) {
+      if (all_fast[l]) continue;
+      int k = 0;
+      while (fast[k][l]) ++k;
+      RandomStream rng(s.stream[l], static_cast<std::uint64_t>(k));
+      for (; k < kDraws; ++k) normal[k][l] = rng.NextNormal();
+    }
+  }
+  s.robot_x = estimate.robot.p_F.x() + estimate.sigma_robot_x_m * normal[0];
+  s.robot_y = estimate.robot.p_F.y() + estimate.sigma_robot_y_m * normal[1];
+  s.robot_theta_rad = estimate.robot.theta_rad + estimate.sigma_robot_theta_rad * normal[2];
+  const Lanes ball_R_x = estimate.p_R_ball.x() + estimate.sigma_ball_x_m * normal[4];
+  const Lanes ball_R_y = estimate.p_R_ball.y() + estimate.sigma_ball_y_m * normal[3];
+  // Pose2::ToField with SinCos's lanes.
+  Lanes sin_theta, cos_theta;
+  SinCosLanes(s.robot_theta_rad, &sin_theta, &cos_theta);
+  s.ball_x = s.robot_x + (cos_theta * ball_R_x - sin_theta * ball_R_y);
+  s.ball_y = s.robot_y + (sin_theta * ball_R_x + cos_theta * ball_R_y);
+  s.z_speed = normal[5];
+  s.z_direction = normal[6];
+  return s;
+}
+
 void DrawSamples(const StateEstimate& estimate, std::uint64_t seed, int count,
                  std::vector<DrawnSample>& out) {
   out.resize(static_cast<std::size_t>(count));
-  for (int i = 0; i < count; ++i)
-    out[i] = DrawSample(estimate, seed, static_cast<std::uint64_t>(i));
+  for (int first = 0; first < count; first += kLanes) {
+    const SampleLanes s = DrawSampleLanes(estimate, seed, static_cast<std::uint64_t>(first));
+    for (int l = 0; l < kLanes && first + l < count; ++l) {
+      DrawnSample& d = out[static_cast<std::size_t>(first + l)];
+      d.stream = s.stream[l];
+      d.state.robot.p_F = Vec2(s.robot_x[l], s.robot_y[l]);
+      d.state.robot.theta_rad = s.robot_theta_rad[l];
+      d.state.p_F_ball = Vec2(s.ball_x[l], s.ball_y[l]);
+      d.z_speed = s.z_speed[l];
+      d.z_direction = s.z_direction[l];
+    }
+  }
 }
 
 ConcreteAction MakeAction(const KickModel& kicks, int kick_index, double rotation_rad,

@@ -15,6 +15,7 @@
 #include "models/kick_model.h"
 #include "models/outcome.h"
 #include "models/situation.h"
+#include "planner/lanes.h"
 
 namespace foresight {
 
@@ -32,6 +33,17 @@ DrawnSample DrawSample(const StateEstimate& estimate, std::uint64_t seed, std::u
 // Draws samples 0 .. count-1 into `out` (resized; its storage is reused between decisions).
 void DrawSamples(const StateEstimate& estimate, std::uint64_t seed, int count,
                  std::vector<DrawnSample>& out);
+
+// Samples first .. first + kLanes - 1 in SIMD lanes (planner/lanes.h), lane l with the bits of
+// DrawSample(estimate, seed, first + l): the draws' fast paths in lanes (planner/random_lanes.h),
+// and the rare lane with a slow-path draw drawn again by DrawSample.
+struct SampleLanes {
+  LaneBits stream;
+  Lanes robot_x, robot_y, robot_theta_rad;
+  Lanes ball_x, ball_y;  // p_F_ball
+  Lanes z_speed, z_direction;
+};
+SampleLanes DrawSampleLanes(const StateEstimate& estimate, std::uint64_t seed, std::uint64_t first);
 
 // The drawn launch of `kick` for a sample's standard normals (common random numbers: every kick
 // scales the same z by its own sigmas). T is double or SIMD lanes (planner/lanes.h).

@@ -167,6 +167,7 @@
 #include "planner/lanes.h"
 #include "planner/naoth_rule.h"
 #include "planner/position_value.h"
+#include "planner/random_lanes.h"
 #include "planner/ray_cast.h"
 #include "planner/roll_lanes.h"
 #include "planner/rotation_search.h"

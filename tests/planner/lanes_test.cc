@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include "common/random.h"
+#include "planner/random_lanes.h"
 
 namespace foresight {
 namespace {
@@ -47,6 +50,74 @@ TEST(LanesTest, ExpFastLanesHasTheScalarBits) {
   const Lanes far = Fill([v = -720.0]() mutable { return v += 360.0; });
   const Lanes e = ExpFastLanes(far);
   for (int l = 0; l < kLanes; ++l) EXPECT_EQ(e[l], ExpFast(far[l])) << far[l];
+}
+
+TEST(LanesTest, StreamsInLanesHaveTheScalarStreamsBits) {
+  for (std::uint64_t seed : {0ULL, 18ULL, ~0ULL}) {
+    for (std::uint64_t first : {0ULL, 8ULL, 1000003ULL}) {
+      const LaneBits key = StreamKeyLanes(seed, first, 5);
+      for (int l = 0; l < kLanes; ++l) {
+        ASSERT_EQ(key[l], StreamKey(seed, first + l, 5));
+        RandomStream rng(key[l]);
+        for (std::uint64_t draw = 1; draw <= 3; ++draw) {
+          ASSERT_EQ(StreamBitsLanes(key, draw)[l], rng.NextBits());
+        }
+        RandomStream skipped(key[l], 2), walked(key[l]);
+        walked.NextBits();
+        walked.NextBits();
+        ASSERT_EQ(skipped.NextBits(), walked.NextBits());
+      }
+    }
+  }
+}
+
+// The ziggurat's fast path in lanes: a lane it keeps has NextNormal's bits; a lane it rejects is
+// one whose scalar draw leaves the layer's rectangle (so the scalar draws more numbers).
+TEST(LanesTest, NormalFastPathInLanesHasTheScalarBits) {
+  const random_detail::ZigguratTables& t = random_detail::kZiggurat;
+  int rejected = 0, draws = 0;
+  for (std::uint64_t first = 0; first < 40000; first += kLanes) {
+    const LaneBits key = StreamKeyLanes(7, first);
+    LaneMask fast = BroadcastMask(-1);
+    const Lanes normal = NormalFastLanes(StreamBitsLanes(key, 1), fast);
+    for (int l = 0; l < kLanes; ++l) {
+      ++draws;
+      RandomStream bits(key[l]);
+      const std::uint64_t b = bits.NextBits();
+      const int layer = static_cast<int>(b & 127);
+      const double u = 2.0 * (static_cast<double>(b >> 11) * 0x1.0p-53) - 1.0;
+      const bool in_rectangle = u < t.ratio[layer] && u > -t.ratio[layer];
+      ASSERT_EQ(fast[l] != 0, in_rectangle) << first + l;
+      if (fast[l] == 0) {
+        ++rejected;
+        continue;
+      }
+      RandomStream rng(key[l]);
+      const double expected = rng.NextNormal();
+      ASSERT_EQ(std::memcmp(&normal[l], &expected, sizeof expected), 0) << first + l;
+    }
+  }
+  // About 2.8 % of the 128-layer ziggurat's points lie outside their rectangle.
+  EXPECT_GT(rejected, draws / 50);
+  EXPECT_LT(rejected, draws / 25);
+}
+
+TEST(LanesTest, GatherAnyAndAll) {
+  double table[100];
+  for (int i = 0; i < 100; ++i) table[i] = 0.5 * i - 7.0;
+  LaneBits index{};
+  for (int l = 0; l < kLanes; ++l) index[l] = static_cast<std::uint64_t>(99 - 13 * l);
+  const Lanes v = Gather(table, index);
+  for (int l = 0; l < kLanes; ++l) EXPECT_EQ(v[l], table[99 - 13 * l]);
+  EXPECT_FALSE(Any(BroadcastMask(0)));
+  EXPECT_TRUE(All(BroadcastMask(-1)));
+  for (int l = 0; l < kLanes; ++l) {
+    LaneMask one = BroadcastMask(0);
+    one[l] = -1;
+    EXPECT_TRUE(Any(one)) << l;
+    EXPECT_FALSE(All(one) && kLanes > 1) << l;
+    EXPECT_FALSE(All(~one)) << l;
+  }
 }
 
 TEST(LanesTest, RoundingTiesGoAwayFromZeroAsTheScalarOne) {

@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "common/random.h"
+#include "planner/random_lanes.h"
 #include "tests/support/test_situations.h"
 
 namespace foresight {
@@ -85,6 +87,54 @@ TEST(SamplingTest, SampleIDependsOnlyOnSeedAndI) {
     EXPECT_EQ(ten[i].z_speed, hundred[i].z_speed);
   }
   EXPECT_NE(DrawSample(s.state, 100, 0).z_speed, ten[0].z_speed);
+}
+
+}  // namespace
+}  // namespace foresight
+
+namespace foresight {
+namespace {
+
+bool SameBits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+// The drawing in lanes against DrawSample, sample by sample and bit by bit, over enough samples
+// that many lanes have a draw on the ziggurat's slow path (drawn again by the scalar stream).
+TEST(SamplingTest, DrawingInLanesHasDrawSamplesBits) {
+  const Situation s = testing::MakeSituation(testing::Uncertain({.x_m = -2.0, .theta_deg = 170}));
+  int slow_lanes = 0, compared = 0;
+  for (std::uint64_t seed : {3ULL, 1234567ULL}) {
+    for (std::uint64_t first = 0; first < 4000; first += kLanes) {
+      const SampleLanes lanes = DrawSampleLanes(s.state, seed, first);
+      LaneMask fast = BroadcastMask(-1);
+      for (int k = 1; k <= 7; ++k) NormalFastLanes(StreamBitsLanes(lanes.stream, k), fast);
+      for (int l = 0; l < kLanes; ++l) {
+        const DrawnSample d = DrawSample(s.state, seed, first + l);
+        slow_lanes += fast[l] == 0;
+        ++compared;
+        ASSERT_EQ(lanes.stream[l], d.stream);
+        ASSERT_TRUE(SameBits(lanes.robot_x[l], d.state.robot.p_F.x())) << first + l;
+        ASSERT_TRUE(SameBits(lanes.robot_y[l], d.state.robot.p_F.y())) << first + l;
+        ASSERT_TRUE(SameBits(lanes.robot_theta_rad[l], d.state.robot.theta_rad)) << first + l;
+        ASSERT_TRUE(SameBits(lanes.ball_x[l], d.state.p_F_ball.x())) << first + l;
+        ASSERT_TRUE(SameBits(lanes.ball_y[l], d.state.p_F_ball.y())) << first + l;
+        ASSERT_TRUE(SameBits(lanes.z_speed[l], d.z_speed)) << first + l;
+        ASSERT_TRUE(SameBits(lanes.z_direction[l], d.z_direction)) << first + l;
+      }
+    }
+  }
+  EXPECT_GT(slow_lanes, compared / 10);  // about 18 % of samples have a slow-path draw
+  // DrawSamples uses the lanes and stops at any count.
+  std::vector<DrawnSample> some;
+  DrawSamples(s.state, 5, 13, some);
+  ASSERT_EQ(some.size(), 13u);
+  for (int i = 0; i < 13; ++i) {
+    const DrawnSample d = DrawSample(s.state, 5, i);
+    EXPECT_EQ(some[i].stream, d.stream);
+    EXPECT_TRUE(SameBits(some[i].state.p_F_ball.x(), d.state.p_F_ball.x())) << i;
+    EXPECT_TRUE(SameBits(some[i].z_direction, d.z_direction)) << i;
+  }
 }
 
 }  // namespace
