@@ -1,20 +1,12 @@
 #include "planner/coarse_action_evaluator.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "planner/ball_roll.h"
 #include "planner/roll_lanes.h"
 
 namespace foresight {
-
-namespace {
-
-// More outs than this, or one own goal, trims the action whatever the other samples do.
-int MaxOuts(const EvaluationParams& params, int samples) {
-  return static_cast<int>(std::floor(params.max_out_share * samples + 1e-9));
-}
-
-}  // namespace
 
 CoarseActionEvaluator::CoarseActionEvaluator(const Situation& situation, const StateEstimate& state,
                                              const CoarseWorld& world, const PositionValue& value,
@@ -117,22 +109,26 @@ RestLanes CoarseActionEvaluator::RestingLanes(std::size_t first) const {
   return {Load(&ball_x_[first]), Load(&ball_y_[first]), LoadMask(&start_category_[first])};
 }
 
-ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
+ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad, int samples,
                                             bool stop_when_trimmed) {
   ++evaluations_;
   const EvaluationParams& params = situation_.evaluation;
   double sin_rho, cos_rho;
   SinCos(rotation_rad, &sin_rho, &cos_rho);
+  const int count = std::min(samples, sample_count_);
+  // More outs than this, or one own goal, trims the N-sample action whatever the other
+  // samples do.
   const int max_outs = MaxOuts(params, sample_count_);
   HypothesisAccumulator hypothesis;
-  for (std::size_t first = 0; first < static_cast<std::size_t>(sample_count_); first += kLanes) {
+  for (std::size_t first = 0; first < static_cast<std::size_t>(count); first += kLanes) {
     const RestLanes rest = kick_index == kNoKick
                                ? RestingLanes(first)
                                : RollLanes(world_, Launch(kick_index, first, cos_rho, sin_rho));
     const Lanes potential = value_.PotentialLanes(rest.x, rest.y);
     const Lanes value = value_.ValueOfPotentialLanes(potential);
     // Summed in sample order, as the scalar reference sums.
-    const std::size_t lanes = std::min<std::size_t>(kLanes, sample_count_ - first);
+    const std::size_t lanes = std::min<std::size_t>(kLanes, count - first);
+    samples_simulated_ += static_cast<long long>(lanes);  // what the lanes rolled, whatever the width
     for (std::size_t l = 0; l < lanes; ++l) {
       const auto category = static_cast<Category>(rest.category[l]);
       hypothesis.Add(category, category == Category::kInfield ? value[l] : 0.0, potential[l]);
@@ -144,7 +140,8 @@ ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
       }
     }
   }
-  return hypothesis.Finish(params);
+  return count == sample_count_ ? hypothesis.Finish(params)
+                                : hypothesis.FinishFirst(params, max_outs);
 }
 
 std::vector<Outcome> CoarseActionEvaluator::Outcomes(int kick_index, double rotation_rad) const {
