@@ -1,5 +1,8 @@
 #include "models/evaluation_params.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "common/checks.h"
 #include "common/error.h"
 #include "common/geometry.h"
@@ -16,6 +19,12 @@ constexpr double kMaxPotentialWeight = 1e3;
 // Plausibility bound of the coarse roll's contacts per kick (assumption): every rebound costs the
 // ball (1 - e) of its normal speed, so a roll that touches more than a hundred things is garbage.
 constexpr int kMaxCoarseContacts = 100;
+
+int RotationSearchParams::CoarseSamples(int samples) const {
+  // The tolerance keeps share * N that should be whole (1/3 * 30) from rounding up.
+  const int n = static_cast<int>(std::ceil(coarse_sample_share * samples - 1e-9));
+  return std::clamp(n, 1, std::max(samples, 1));
+}
 
 void EvaluationParams::Validate() const {
   RequirePositive("potential.linear_x_scale_m", potential.linear_x_scale_m);
@@ -42,6 +51,8 @@ void EvaluationParams::Validate() const {
                  90.0);
   RequireInRange("rotation_search.refine_levels", rotation_search.refine_levels, 0, 20);
   RequireInRange("rotation_search.refine_candidates", rotation_search.refine_candidates, 1, 100);
+  RequireInRange("rotation_search.coarse_sample_share", rotation_search.coarse_sample_share, 0.01,
+                 1.0);
   RequireInRange("rebounds.max_contacts", rebounds.max_contacts, 1, kMaxCoarseContacts);
 }
 
@@ -71,10 +82,12 @@ EvaluationParams LoadEvaluationParams(const std::filesystem::path& file) {
   params.naoth_rule.goal_preference_share = naoth.Number("goal_preference_share");
 
   JsonObject search = root.Object("rotation_search");
-  search.RejectUnknownKeys({"grid_step_deg", "refine_levels", "refine_candidates"});
+  search.RejectUnknownKeys(
+      {"grid_step_deg", "refine_levels", "refine_candidates", "coarse_sample_share"});
   params.rotation_search.grid_step_rad = search.Number("grid_step_deg") * kDegToRad;
   params.rotation_search.refine_levels = search.Integer("refine_levels");
   params.rotation_search.refine_candidates = search.Integer("refine_candidates");
+  params.rotation_search.coarse_sample_share = search.Number("coarse_sample_share");
 
   JsonObject rebounds = root.Object("rebounds");
   rebounds.RejectUnknownKeys({"enabled", "max_contacts"});

@@ -37,11 +37,17 @@ struct NaothRuleParams {
 };
 
 // Search for the best rotation around the ball: a grid over the whole circle, then pattern
-// refinement around the best grid points (see planner/rotation_search.h).
+// refinement around the best grid points (see planner/rotation_search.h). The grid looks at
+// the first ceil(coarse_sample_share * N) of the N samples only; the rest of the search, and
+// every value the decision uses, at all N.
 struct RotationSearchParams {
   double grid_step_rad = 0.0;
   int refine_levels = 0;
-  int refine_candidates = 0;
+  int refine_candidates = 0;         // grid maxima compared on all N; the best is refined
+  double coarse_sample_share = 1.0;  // 1: the grid on all N samples
+
+  // The samples of the coarse stages for a decision of `samples` samples (1..samples).
+  int CoarseSamples(int samples) const;
 };
 
 // The coarse roll's contacts with posts, nets and robots (issue 12). Off, the paper's model: the

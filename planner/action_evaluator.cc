@@ -1,5 +1,7 @@
 #include "planner/action_evaluator.h"
 
+#include <algorithm>
+
 namespace foresight {
 
 SeamActionEvaluator::SeamActionEvaluator(const Situation& situation,
@@ -10,14 +12,21 @@ SeamActionEvaluator::SeamActionEvaluator(const Situation& situation,
   DrawSamples(state_, seed, samples, samples_);
 }
 
-ActionEvaluation SeamActionEvaluator::Evaluate(int kick_index, double rotation_rad) {
+ActionEvaluation SeamActionEvaluator::EvaluateFirst(int kick_index, double rotation_rad,
+                                                    int samples) {
   ++evaluations_;
+  const std::size_t count = std::min(samples_.size(), static_cast<std::size_t>(samples));
+  samples_simulated_ += static_cast<long long>(count);
   HypothesisAccumulator hypothesis;
-  for (const DrawnSample& sample : samples_) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const DrawnSample& sample = samples_[i];
     const ConcreteAction action = MakeAction(situation_.kicks, kick_index, rotation_rad, sample);
     AddOutcome(hypothesis, simulator_.Simulate(sample.state, action), value_);
   }
-  return hypothesis.Finish(situation_.evaluation);
+  const EvaluationParams& params = situation_.evaluation;
+  return count == samples_.size()
+             ? hypothesis.Finish(params)
+             : hypothesis.FinishFirst(params, MaxOuts(params, sample_count()));
 }
 
 std::vector<Outcome> SeamActionEvaluator::Outcomes(int kick_index, double rotation_rad) const {

@@ -36,11 +36,17 @@ class ActionEvaluator {
 
   // kick_index == kNoKick: the `none` action (the ball stays where it is).
   virtual ActionEvaluation Evaluate(int kick_index, double rotation_rad) = 0;
-  // For searches over rotations: may stop simulating as soon as the action is certain to be
-  // trimmed, and then only too_risky and trimmed_utility (0) are meaningful.
-  virtual ActionEvaluation EvaluateForSearch(int kick_index, double rotation_rad) {
-    return Evaluate(kick_index, rotation_rad);
+  // The hypothesis of the first `samples` samples only (1..sample_count()): a coarse look for
+  // searches (planner/rotation_search.h); with sample_count() samples it is Evaluate's.
+  virtual ActionEvaluation EvaluateFirst(int kick_index, double rotation_rad, int samples) = 0;
+  // For searches over rotations, the first `samples` samples: may stop simulating as soon as
+  // the action is certain to be trimmed, and then only too_risky and trimmed_utility (0) are
+  // meaningful.
+  virtual ActionEvaluation EvaluateForSearch(int kick_index, double rotation_rad, int samples) {
+    return EvaluateFirst(kick_index, rotation_rad, samples);
   }
+  // N, the samples of a whole hypothesis.
+  virtual int sample_count() const = 0;
   // The hypothesis itself: one outcome per sample, for drawing and reports.
   virtual std::vector<Outcome> Outcomes(int kick_index, double rotation_rad) const = 0;
 
@@ -48,12 +54,15 @@ class ActionEvaluator {
   const Situation& situation() const { return situation_; }
   const StateEstimate& state() const { return state_; }
   long long evaluations() const { return evaluations_; }
+  // Samples simulated by the evaluations so far (a hypothesis costs its samples).
+  long long samples_simulated() const { return samples_simulated_; }
   RotationSearchScratch& search_scratch() { return search_scratch_; }
 
  protected:
   const Situation& situation_;
   StateEstimate state_;
   long long evaluations_ = 0;
+  long long samples_simulated_ = 0;
   RotationSearchScratch search_scratch_;
 };
 
@@ -78,7 +87,11 @@ class SeamActionEvaluator final : public ActionEvaluator {
   SeamActionEvaluator(const Situation& situation, const OutcomeSimulator& simulator,
                       const PositionValue& value, int samples, std::uint64_t seed);
 
-  ActionEvaluation Evaluate(int kick_index, double rotation_rad) override;
+  ActionEvaluation Evaluate(int kick_index, double rotation_rad) override {
+    return EvaluateFirst(kick_index, rotation_rad, sample_count());
+  }
+  ActionEvaluation EvaluateFirst(int kick_index, double rotation_rad, int samples) override;
+  int sample_count() const override { return static_cast<int>(samples_.size()); }
   std::vector<Outcome> Outcomes(int kick_index, double rotation_rad) const override;
 
  private:

@@ -1,20 +1,12 @@
 #include "planner/coarse_action_evaluator.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "planner/ball_roll.h"
 #include "planner/roll_lanes.h"
 
 namespace foresight {
-
-namespace {
-
-// More outs than this, or one own goal, trims the action whatever the other samples do.
-int MaxOuts(const EvaluationParams& params, int samples) {
-  return static_cast<int>(std::floor(params.max_out_share * samples + 1e-9));
-}
-
-}  // namespace
 
 CoarseActionEvaluator::CoarseActionEvaluator(const Situation& situation, const StateEstimate& state,
                                              const CoarseWorld& world, const PositionValue& value,
@@ -116,24 +108,28 @@ RestLanes CoarseActionEvaluator::RestingLanes(std::size_t first) const {
   return {Load(&ball_x_[first]), Load(&ball_y_[first]), LoadMask(&start_category_[first])};
 }
 
-ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
+ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad, int samples,
                                             bool stop_when_trimmed) {
   ++evaluations_;
   const EvaluationParams& params = situation_.evaluation;
   double sin_rho, cos_rho;
   SinCos(rotation_rad, &sin_rho, &cos_rho);
+  const int count = std::min(samples, sample_count_);
+  // More outs than this, or one own goal, trims the N-sample action whatever the other
+  // samples do.
   const int max_outs = MaxOuts(params, sample_count_);
   HypothesisAccumulator hypothesis;
   // Chunks of kChunkGroups lane groups: rolled, then valued together (independent work side by
   // side), then summed in sample order, as the scalar reference sums. A search stops after the
   // chunk in which the candidate is certainly trimmed, with the sums up to that sample.
   constexpr int kChunkGroups = 32 / kLanes;
-  const std::size_t count = static_cast<std::size_t>(sample_count_);
-  for (std::size_t chunk = 0; chunk < count; chunk += kChunkGroups * kLanes) {
+  for (std::size_t chunk = 0; chunk < static_cast<std::size_t>(count);
+       chunk += kChunkGroups * kLanes) {
     Lanes x[kChunkGroups], y[kChunkGroups], potential[kChunkGroups];
     LaneMask category[kChunkGroups];
     int groups = 0;
-    for (std::size_t first = chunk; first < count && groups < kChunkGroups; first += kLanes) {
+    for (std::size_t first = chunk; first < static_cast<std::size_t>(count) && groups < kChunkGroups;
+         first += kLanes) {
       const RestLanes rest = kick_index == kNoKick
                                  ? RestingLanes(first)
                                  : RollLanes(world_, Launch(kick_index, first, cos_rho, sin_rho));
@@ -141,12 +137,16 @@ ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
       y[groups] = rest.y;
       category[groups] = rest.category;
       ++groups;
+      // The samples rolled (not the lanes: the same count whatever the width).
+      samples_simulated_ += static_cast<long long>(
+          std::min<std::size_t>(kLanes, static_cast<std::size_t>(count) - first));
     }
     value_.PotentialLanes(x, y, potential, groups);
     for (int g = 0; g < groups; ++g) {
       const Lanes value = value_.ValueOfPotentialLanes(potential[g]);
       const std::size_t first = chunk + static_cast<std::size_t>(g) * kLanes;
-      const std::size_t lanes = std::min<std::size_t>(kLanes, count - first);
+      const std::size_t lanes =
+          std::min<std::size_t>(kLanes, static_cast<std::size_t>(count) - first);
       for (std::size_t l = 0; l < lanes; ++l) {
         hypothesis.Add(static_cast<Category>(category[g][l]), value[l], potential[g][l]);
         if (stop_when_trimmed && hypothesis.CertainlyTrimmed(max_outs)) {
@@ -158,7 +158,8 @@ ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
       }
     }
   }
-  return hypothesis.Finish(params);
+  return count == sample_count_ ? hypothesis.Finish(params)
+                                : hypothesis.FinishFirst(params, max_outs);
 }
 
 std::vector<Outcome> CoarseActionEvaluator::Outcomes(int kick_index, double rotation_rad) const {

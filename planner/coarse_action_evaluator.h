@@ -36,20 +36,24 @@ class CoarseActionEvaluator final : public ActionEvaluator {
   void Redraw(const StateEstimate& state, int samples, std::uint64_t seed);
 
   ActionEvaluation Evaluate(int kick_index, double rotation_rad) override {
-    return Run(kick_index, rotation_rad, false);
+    return Run(kick_index, rotation_rad, sample_count_, false);
   }
-  ActionEvaluation EvaluateForSearch(int kick_index, double rotation_rad) override {
-    return Run(kick_index, rotation_rad, true);
+  ActionEvaluation EvaluateFirst(int kick_index, double rotation_rad, int samples) override {
+    return Run(kick_index, rotation_rad, samples, false);
+  }
+  ActionEvaluation EvaluateForSearch(int kick_index, double rotation_rad, int samples) override {
+    return Run(kick_index, rotation_rad, samples, true);
   }
   std::vector<Outcome> Outcomes(int kick_index, double rotation_rad) const override;
 
   // The scalar reference of Evaluate: one RollBall per sample (for tests).
   ActionEvaluation EvaluateReference(int kick_index, double rotation_rad) const;
 
-  int sample_count() const { return sample_count_; }
+  int sample_count() const override { return sample_count_; }
 
  private:
-  ActionEvaluation Run(int kick_index, double rotation_rad, bool stop_when_trimmed);
+  // The first `samples` samples (at most all).
+  ActionEvaluation Run(int kick_index, double rotation_rad, int samples, bool stop_when_trimmed);
   // Lanes first .. first + kLanes - 1: the launch of a kick turned by rho, or the ball at rest.
   RollLanesInput Launch(int kick_index, std::size_t first, double cos_rho, double sin_rho) const;
   RestLanes RestingLanes(std::size_t first) const;

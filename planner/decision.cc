@@ -23,7 +23,12 @@ struct Context {
 
   RotationObjective ObjectiveFor(int kick) const {
     return [this, kick](double rotation_rad) {
-      return evaluator.EvaluateForSearch(kick, rotation_rad);
+      return evaluator.EvaluateForSearch(kick, rotation_rad, evaluator.sample_count());
+    };
+  }
+  SampledObjective SampledObjectiveFor(int kick) const {
+    return [this, kick](double rotation_rad, int samples) {
+      return evaluator.EvaluateForSearch(kick, rotation_rad, samples);
     };
   }
   bool Acceptable(const ActionEvaluation& e) const { return !e.too_risky; }
@@ -107,12 +112,12 @@ void FallBack(Context& ctx, Decision& decision) {
       double goal_value;
     } objective{&ctx.evaluator, option.kick_index, goal_value};
     const RotationChoice found = BestRotation(
-        [o = &objective](double rho) {
-          ActionEvaluation e = o->evaluator->Evaluate(o->kick, rho);
+        [o = &objective](double rho, int samples) {
+          ActionEvaluation e = o->evaluator->EvaluateFirst(o->kick, rho, samples);
           e.trimmed_utility = FallbackScore(e, o->goal_value);  // what the search maximises
           return e;
         },
-        ctx.search, ctx.evaluator.search_scratch());
+        ctx.evaluator.sample_count(), ctx.search, ctx.evaluator.search_scratch());
     option.choice = {found.rotation_rad,
                      ctx.evaluator.Evaluate(option.kick_index, found.rotation_rad)};
     const double score = FallbackScore(option.choice.evaluation, goal_value);
@@ -129,7 +134,8 @@ void OptimiseEveryKick(Context& ctx, Decision& decision, int only_kick) {
   for (KickOption& option : decision.kicks) {
     option.considered = only_kick < 0 || option.kick_index == only_kick;
     if (option.considered)
-      option.choice = BestRotation(ctx.ObjectiveFor(option.kick_index), ctx.search,
+      option.choice = BestRotation(ctx.SampledObjectiveFor(option.kick_index),
+                                   ctx.evaluator.sample_count(), ctx.search,
                                    ctx.evaluator.search_scratch());
   }
 }
@@ -242,9 +248,11 @@ void Decide(ActionEvaluator& evaluator, Strategy strategy, Decision& decision) {
       break;
     }
   }
-  // Searches may stop simulating a candidate once it is certainly trimmed; report full ones.
+  // Searches may stop simulating a candidate once it is certainly trimmed; report full ones
+  // (an evaluation of all N samples is already the full one).
   for (KickOption& option : decision.kicks) {
-    if (option.considered && strategy != Strategy::kNaoth) {
+    if (option.considered && strategy != Strategy::kNaoth &&
+        option.choice.evaluation.samples != evaluator.sample_count()) {
       option.choice.evaluation = evaluator.Evaluate(option.kick_index, option.choice.rotation_rad);
     }
   }

@@ -1,6 +1,13 @@
 #include "planner/hypothesis.h"
 
+#include <cmath>
+
 namespace foresight {
+
+int MaxOuts(const EvaluationParams& params, int samples) {
+  // The tolerance keeps T_out * N that should be whole from rounding down.
+  return static_cast<int>(std::floor(params.max_out_share * samples + 1e-9));
+}
 
 ActionEvaluation HypothesisAccumulator::Finish(const EvaluationParams& params) const {
   ActionEvaluation e;
@@ -20,6 +27,14 @@ ActionEvaluation HypothesisAccumulator::Finish(const EvaluationParams& params) c
   }
   e.utility = Utility(e.value_avg, e.p_infield, e.p_opp_goal, params);
   e.too_risky = e.p_out > params.max_out_share || e.Count(Category::kOwnGoal) > 0;
+  e.trimmed_utility = e.too_risky ? 0.0 : e.utility;
+  return e;
+}
+
+ActionEvaluation HypothesisAccumulator::FinishFirst(const EvaluationParams& params,
+                                                   int max_outs) const {
+  ActionEvaluation e = Finish(params);
+  e.too_risky = CertainlyTrimmed(max_outs);
   e.trimmed_utility = e.too_risky ? 0.0 : e.utility;
   return e;
 }

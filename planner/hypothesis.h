@@ -46,6 +46,9 @@ struct ActionEvaluation {
   int Count(Category c) const { return counts[static_cast<int>(c)]; }
 };
 
+// The most samples of N that may be out without trimming the hypothesis: floor(T_out * N).
+int MaxOuts(const EvaluationParams& params, int samples);
+
 // Sums the samples of one hypothesis; Finish() turns the sums into an ActionEvaluation.
 // `potential` is the potential at the sample's rest position whatever its category; `value`
 // counts only for infield samples.
@@ -61,6 +64,12 @@ class HypothesisAccumulator {
     potential_sum_ += infield ? potential : 0.0;
   }
   ActionEvaluation Finish(const EvaluationParams& params) const;
+  // The sums of the first n of a hypothesis's N samples (a search's coarse look): the utility of
+  // those n, trimmed only when the whole hypothesis is certain to be, whatever its other samples
+  // do (CertainlyTrimmed(max_outs), max_outs = MaxOuts(params, N)). A look at fewer samples then
+  // never trims an action that all N would keep: with 10 of 30 samples 2 outs would trim
+  // (p_out = 0.2 > 0.15), 4 of 30 do not.
+  ActionEvaluation FinishFirst(const EvaluationParams& params, int max_outs) const;
 
   // True once the hypothesis is trimmed whatever its remaining samples do: more than
   // `max_outs` samples out (max_outs = floor(T_out * N)) or an own goal.

@@ -18,6 +18,10 @@ int GridSize(const RotationSearchParams& params) {
   return 2 * static_cast<int>(std::ceil(kPi / params.grid_step_rad));
 }
 
+RotationChoice At(const SampledObjective& evaluate, double rotation_rad, int samples) {
+  return {rotation_rad, evaluate(rotation_rad, samples)};
+}
+
 RotationChoice At(const RotationObjective& evaluate, double rotation_rad) {
   return {rotation_rad, evaluate(rotation_rad)};
 }
@@ -70,31 +74,93 @@ void LocalMaxima(RotationSearchScratch& scratch) {
   }
 }
 
-RotationChoice Refine(const RotationObjective& evaluate, RotationChoice best, double step,
-                      int levels) {
+// The grid point k on all samples, evaluated once per search.
+const RotationChoice& Full(const SampledObjective& evaluate, int k, int samples,
+                           RotationSearchScratch& scratch) {
+  const auto i = static_cast<std::size_t>(k);
+  if (!scratch.has_full[i]) {
+    scratch.full[i] = At(evaluate, scratch.grid[i].rotation_rad, samples);
+    scratch.has_full[i] = 1;
+  }
+  return scratch.full[i];
+}
+
+// From grid point k, the grid's hill climbed on all samples: a look at few samples finds the
+// hill but may misplace its top by a grid step or take a point beside a trimming cliff for it.
+int Climb(const SampledObjective& evaluate, int k, int samples, RotationSearchScratch& scratch) {
+  const int n = static_cast<int>(scratch.grid.size());
+  for (int moves = 0; moves < n; ++moves) {
+    const RotationChoice& here = Full(evaluate, k, samples, scratch);
+    int next = k;
+    for (int side : {-1, 1}) {
+      const int j = (k + side + n) % n;
+      if (BetterRotation(Full(evaluate, j, samples, scratch),
+                         next == k ? here : Full(evaluate, next, samples, scratch))) {
+        next = j;
+      }
+    }
+    if (next == k) break;
+    k = next;
+  }
+  return k;
+}
+
+// Compass refinement: steps step/2, step/4, ... for `levels` levels, the left neighbour first;
+// when it wins, the right one is the old centre, already known to be worse, and is not probed.
+struct Refined {
+  RotationChoice best;
+  // The neighbour one finest step towards rho = 0 was probed and is worse.
+  bool worse_towards_zero = false;
+};
+
+Refined Refine(const SampledObjective& evaluate, RotationChoice best, double step, int levels,
+               int samples) {
+  Refined refined{best, false};
   for (int level = 0; level < levels; ++level) {
     step *= 0.5;
+    const RotationChoice centre = refined.best;
+    double moved = 0.0;  // the direction the centre moved in at this level, 0 if it stayed
     for (double direction : {-1.0, 1.0}) {
-      RotationChoice trial = At(evaluate, WrapAngle(best.rotation_rad + direction * step));
-      if (BetterRotation(trial, best)) best = trial;
+      RotationChoice trial =
+          At(evaluate, WrapAngle(centre.rotation_rad + direction * step), samples);
+      if (BetterRotation(trial, refined.best)) {
+        refined.best = trial;
+        moved = direction;
+        break;
+      }
     }
+    // Known worse: both neighbours when the centre stayed, else the old centre behind it.
+    const double rho = refined.best.rotation_rad;
+    const double towards_zero = rho > 0.0 ? -1.0 : 1.0;
+    refined.worse_towards_zero =
+        std::abs(rho) >= step && (moved == 0.0 || moved == -towards_zero);
   }
-  return best;
+  return refined;
 }
 
 // Walks `best` towards rho = 0 while the utility holds, then bisects the step where it drops.
-RotationChoice TowardsZero(const RotationObjective& evaluate, RotationChoice best, double step,
-                           int levels) {
+// The utility of an optimum is rarely flat (every infield sample's value changes with the turn),
+// so first one look `finest` towards 0 (usually the refinement's, else one probe): where the
+// utility drops there, `best` stays.
+RotationChoice TowardsZero(const SampledObjective& evaluate, const Refined& refined, double step,
+                           double finest, int levels, int samples) {
+  RotationChoice best = refined.best;
+  if (best.rotation_rad == 0.0 || refined.worse_towards_zero) return best;
   const double target = best.evaluation.trimmed_utility - kUtilityTolerance;
+  const auto toward_zero = [](double rho, double by) {
+    return rho > 0.0 ? std::max(0.0, rho - by) : std::min(0.0, rho + by);
+  };
+  RotationChoice first = At(evaluate, toward_zero(best.rotation_rad, finest), samples);
+  if (first.evaluation.trimmed_utility < target) return best;
+  best = first;
   while (best.rotation_rad != 0.0) {
-    const double toward = best.rotation_rad > 0.0 ? std::max(0.0, best.rotation_rad - step)
-                                                  : std::min(0.0, best.rotation_rad + step);
-    RotationChoice trial = At(evaluate, toward);
+    const double toward = toward_zero(best.rotation_rad, step);
+    RotationChoice trial = At(evaluate, toward, samples);
     if (trial.evaluation.trimmed_utility < target) {
       double fail = toward;
       for (int i = 0; i < levels + 2; ++i) {
         const double mid = 0.5 * (fail + best.rotation_rad);
-        RotationChoice probe = At(evaluate, mid);
+        RotationChoice probe = At(evaluate, mid, samples);
         if (probe.evaluation.trimmed_utility >= target)
           best = probe;
         else
@@ -118,29 +184,50 @@ bool BetterRotation(const RotationChoice& a, const RotationChoice& b) {
 void RotationSearchScratch::Reserve(const RotationSearchParams& params) {
   const auto n = static_cast<std::size_t>(GridSize(params));
   grid.reserve(n);
+  full.reserve(n);
+  has_full.reserve(n);
   maxima.reserve(n);
   distinct.reserve(n);
 }
 
-RotationChoice BestRotation(const RotationObjective& evaluate, const RotationSearchParams& params,
-                            RotationSearchScratch& scratch) {
+RotationChoice BestRotation(const SampledObjective& evaluate, int samples,
+                            const RotationSearchParams& params, RotationSearchScratch& scratch) {
   assert(params.grid_step_rad > 0.0 && params.refine_candidates >= 1);  // Validate() ensures it
+  assert(samples >= 1);
   const int n = GridSize(params);
   const double step = 2.0 * kPi / n;
+  const int coarse = params.CoarseSamples(samples);
   std::vector<RotationChoice>& grid = scratch.grid;
   grid.clear();
-  for (int k = -n / 2; k < n / 2; ++k) grid.push_back(At(evaluate, k * step));
+  for (int k = -n / 2; k < n / 2; ++k) grid.push_back(At(evaluate, k * step, coarse));
 
   LocalMaxima(scratch);
   const std::vector<int>& maxima = scratch.distinct;
-  RotationChoice best = grid[static_cast<std::size_t>(maxima.front())];
   const int candidates = std::min<int>(params.refine_candidates, static_cast<int>(maxima.size()));
-  for (int c = 0; c < candidates; ++c) {
-    RotationChoice refined =
-        Refine(evaluate, grid[static_cast<std::size_t>(maxima[c])], step, params.refine_levels);
-    if (BetterRotation(refined, best)) best = refined;
+  if (coarse < samples) {
+    scratch.full.assign(grid.size(), RotationChoice{});
+    scratch.has_full.assign(grid.size(), 0);
   }
-  return TowardsZero(evaluate, best, step, params.refine_levels);
+  // The grid on all samples: the points looked at with all of them.
+  const auto on_all = [&](int k) -> const RotationChoice& {
+    return coarse < samples ? scratch.full[static_cast<std::size_t>(k)]
+                            : grid[static_cast<std::size_t>(k)];
+  };
+  int best = -1;
+  for (int c = 0; c < candidates; ++c) {
+    const int k = coarse < samples ? Climb(evaluate, maxima[c], samples, scratch) : maxima[c];
+    if (best < 0 || BetterRotation(on_all(k), on_all(best))) best = k;
+  }
+  const Refined refined = Refine(evaluate, on_all(best), step, params.refine_levels, samples);
+  return TowardsZero(evaluate, refined, step, std::ldexp(step, -params.refine_levels),
+                     params.refine_levels, samples);
+}
+
+RotationChoice BestRotation(const RotationObjective& evaluate,
+                            const RotationSearchParams& params) {
+  RotationSearchScratch scratch;
+  // One sample in all: the coarse stages' count is the full one.
+  return BestRotation([&evaluate](double rho, int) { return evaluate(rho); }, 1, params, scratch);
 }
 
 std::optional<RotationChoice> LeastAcceptableRotation(

@@ -36,6 +36,14 @@ ActionEvaluation CandidateGridEvaluator::Evaluate(int kick_index, double rotatio
   return it->second;
 }
 
+ActionEvaluation CandidateGridEvaluator::EvaluateFirst(int kick_index, double rotation_rad,
+                                                       int samples) {
+  if (samples >= sample_count()) return Evaluate(kick_index, rotation_rad);
+  ++evaluations_;
+  return inner_.EvaluateFirst(kick_index, kick_index == kNoKick ? 0.0 : Snap(rotation_rad),
+                              samples);
+}
+
 std::vector<Outcome> CandidateGridEvaluator::Outcomes(int kick_index, double rotation_rad) const {
   return inner_.Outcomes(kick_index, kick_index == kNoKick ? 0.0 : Snap(rotation_rad));
 }

@@ -18,6 +18,9 @@ class CandidateGridEvaluator final : public ActionEvaluator {
   CandidateGridEvaluator(ActionEvaluator& inner, std::vector<double> rotations_rad);
 
   ActionEvaluation Evaluate(int kick_index, double rotation_rad) override;
+  // Fewer samples than all: the inner evaluator's, at the snapped rotation (not remembered).
+  ActionEvaluation EvaluateFirst(int kick_index, double rotation_rad, int samples) override;
+  int sample_count() const override { return inner_.sample_count(); }
   std::vector<Outcome> Outcomes(int kick_index, double rotation_rad) const override;
   double Snap(double rotation_rad) const;
 

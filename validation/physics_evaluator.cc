@@ -86,6 +86,19 @@ ActionEvaluation PhysicsActionEvaluator::Evaluate(int kick_index, double rotatio
   return Hypothesis(kick_index, rotation_rad).evaluation;
 }
 
+ActionEvaluation PhysicsActionEvaluator::EvaluateFirst(int kick_index, double rotation_rad,
+                                                       int samples) {
+  if (samples >= sample_count()) return Evaluate(kick_index, rotation_rad);
+  ++evaluations_;
+  const PhysicsHypothesis& h = Hypothesis(kick_index, rotation_rad);
+  HypothesisAccumulator hypothesis;
+  for (int i = 0; i < samples; ++i) {
+    AddOutcome(hypothesis, h.outcomes[static_cast<std::size_t>(i)], value_);
+  }
+  return hypothesis.FinishFirst(situation_.evaluation,
+                                MaxOuts(situation_.evaluation, sample_count()));
+}
+
 std::vector<Outcome> PhysicsActionEvaluator::Outcomes(int kick_index, double rotation_rad) const {
   const auto it = done_.find({kick_index, kick_index == kNoKick ? 0.0 : rotation_rad});
   return it != done_.end() ? it->second.outcomes : Run(kick_index, rotation_rad).outcomes;

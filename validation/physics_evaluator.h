@@ -33,6 +33,10 @@ class PhysicsActionEvaluator final : public ActionEvaluator {
                          const PositionValue& value, int trials, std::uint64_t seed, int threads);
 
   ActionEvaluation Evaluate(int kick_index, double rotation_rad) override;
+  // From the remembered hypothesis of all trials (physics runs every trial of a candidate once;
+  // the search's coarse looks are summaries of its first trials).
+  ActionEvaluation EvaluateFirst(int kick_index, double rotation_rad, int samples) override;
+  int sample_count() const override { return static_cast<int>(samples_.size()); }
   std::vector<Outcome> Outcomes(int kick_index, double rotation_rad) const override;
   // Runs the trials if they have not run yet.
   const PhysicsHypothesis& Hypothesis(int kick_index, double rotation_rad);

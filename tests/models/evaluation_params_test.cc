@@ -84,7 +84,21 @@ TEST(EvaluationParamsTest, RotationSearchStepIsConvertedToRadians) {
   const EvaluationParams p = LoadEvaluationParams(ModelsDir() / "evaluation" / "spl.json");
   EXPECT_NEAR(p.rotation_search.grid_step_rad, 20.0 * kDegToRad, 1e-15);
   EXPECT_EQ(p.rotation_search.refine_levels, 5);
-  EXPECT_EQ(p.rotation_search.refine_candidates, 2);
+  EXPECT_EQ(p.rotation_search.refine_candidates, 1);
+  EXPECT_EQ(p.rotation_search.coarse_sample_share, 0.25);
+  EXPECT_EQ(p.rotation_search.CoarseSamples(30), 8);  // ceil(7.5)
+  EXPECT_EQ(p.rotation_search.CoarseSamples(4), 1);
+  EXPECT_EQ(p.rotation_search.CoarseSamples(1), 1);
+  RotationSearchParams third = p.rotation_search;
+  third.coarse_sample_share = 1.0 / 3;
+  EXPECT_EQ(third.CoarseSamples(30), 10);  // not 11 from rounding
+}
+
+TEST(EvaluationParamsTest, CoarseShareOutsideItsRangeIsRejected) {
+  const auto file = BrokenSplEvaluation("coarse", "\"coarse_sample_share\": 0.25",
+                                        "\"coarse_sample_share\": 0");
+  EXPECT_THAT(LoadError(file),
+              StartsWith(file.string() + ": rotation_search.coarse_sample_share: must be in ["));
 }
 
 TEST(EvaluationParamsTest, ShippedFourLeggedIsTheSplStrategyScaled) {
@@ -162,7 +176,7 @@ TEST(EvaluationParamsTest, MissingRotationSearchIsNamed) {
   const std::string text = ReplaceOnce(
       ShippedText("evaluation/spl.json"),
       ",\n  \"rotation_search\": {\n    \"grid_step_deg\": 20.0,\n    \"refine_levels\": 5,\n"
-      "    \"refine_candidates\": 2\n  }",
+      "    \"refine_candidates\": 1,\n    \"coarse_sample_share\": 0.25\n  }",
       "");
   const auto file = WriteTempFile("evaluation_params_no_search.json", text);
   EXPECT_EQ(LoadError(file), file.string() + ": rotation_search: missing");

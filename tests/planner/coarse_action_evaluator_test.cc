@@ -159,14 +159,46 @@ TEST(CoarseActionEvaluatorTest, SearchEvaluationStopsOnlyWhenCertainlyTrimmed) {
   for (int kick = 0; kick < 3; ++kick) {
     for (double deg = -180; deg < 180; deg += 15) {
       const ActionEvaluation full = evaluator.Evaluate(kick, deg * kDegToRad);
-      const ActionEvaluation search = evaluator.EvaluateForSearch(kick, deg * kDegToRad);
+      const ActionEvaluation search = evaluator.EvaluateForSearch(kick, deg * kDegToRad, 30);
       EXPECT_EQ(full.too_risky, search.too_risky);
       EXPECT_EQ(full.trimmed_utility, search.trimmed_utility);
     }
   }
-  const ActionEvaluation partial = evaluator.EvaluateForSearch(1, 0.0);
+  const ActionEvaluation partial = evaluator.EvaluateForSearch(1, 0.0, 30);
   EXPECT_TRUE(partial.too_risky);
   EXPECT_LT(partial.samples, 30);  // it did stop early
+}
+
+TEST(CoarseActionEvaluatorTest, FirstSamplesAreThoseOfAnEvaluatorWithFewer) {
+  // The samples are drawn per index from the seed, so the first 8 of 30 are an evaluator's 8:
+  // the same counts and utility, only the trimming is the 30 samples' (certain trims only).
+  const Situation s = testing::MakeSituation(testing::Uncertain({.x_m = 2.5, .y_m = 1.9}));
+  const CoarsePlanner planner(s);
+  CoarseActionEvaluator all = planner.MakeEvaluator(30, 4);
+  CoarseActionEvaluator few = planner.MakeEvaluator(8, 4);
+  SeamActionEvaluator seam = planner.MakeSeamEvaluator(30, 4);
+  int differently_trimmed = 0;
+  for (int kick = -1; kick < 3; ++kick) {
+    for (double deg = -180; deg < 180; deg += 10) {
+      const double rho = deg * kDegToRad;
+      const ActionEvaluation first = all.EvaluateFirst(kick, rho, 8);
+      const ActionEvaluation alone = few.Evaluate(kick, rho);
+      EXPECT_EQ(first.counts, alone.counts);
+      EXPECT_EQ(first.utility, alone.utility);
+      EXPECT_EQ(first.potential_all_avg, alone.potential_all_avg);
+      const bool certain = first.Count(Category::kOwnGoal) > 0 || first.Count(Category::kOut) > 4;
+      EXPECT_EQ(first.too_risky, certain);
+      differently_trimmed += first.too_risky != alone.too_risky;
+      const ActionEvaluation through_seam = seam.EvaluateFirst(kick, rho, 8);
+      EXPECT_EQ(first.counts, through_seam.counts);
+      EXPECT_NEAR(first.utility, through_seam.utility, 1e-12);
+      EXPECT_EQ(first.too_risky, through_seam.too_risky);
+      const ActionEvaluation whole = all.EvaluateFirst(kick, rho, 30);
+      EXPECT_EQ(whole.utility, all.Evaluate(kick, rho).utility);
+      EXPECT_EQ(whole.too_risky, all.Evaluate(kick, rho).too_risky);
+    }
+  }
+  EXPECT_GT(differently_trimmed, 0);  // the pose has candidates with 2-4 outs in 8 samples
 }
 
 }  // namespace

@@ -32,6 +32,30 @@ TEST(HypothesisTest, UtilityIsValueTimesInfieldPlusGoalShare) {
   EXPECT_DOUBLE_EQ(e.trimmed_utility, e.utility);
 }
 
+TEST(HypothesisTest, FirstSamplesAreTrimmedOnlyWhenAllWouldBe) {
+  // 2 outs in the first 10 of 30 samples: a share of 0.2 > T_out, but all 30 may still hold
+  // only 4 (0.133): not trimmed. 5 outs, or an own goal, trim all 30 whatever the rest do.
+  const EvaluationParams params = Params();
+  const int max_outs = MaxOuts(params, 30);
+  EXPECT_EQ(max_outs, 4);
+  const auto first = [&](int infield, int own, int out) {
+    HypothesisAccumulator h;
+    for (int i = 0; i < infield; ++i) h.Add(Category::kInfield, 0.5, -0.5);
+    for (int i = 0; i < own; ++i) h.Add(Category::kOwnGoal, 0.0, 0.0);
+    for (int i = 0; i < out; ++i) h.Add(Category::kOut, 0.0, 0.0);
+    return h.FinishFirst(params, max_outs);
+  };
+  const ActionEvaluation two_out = first(8, 0, 2);
+  EXPECT_FALSE(two_out.too_risky);
+  EXPECT_DOUBLE_EQ(two_out.trimmed_utility, 0.5 * 8.0 / 10);
+  EXPECT_EQ(two_out.samples, 10);
+  EXPECT_TRUE(first(5, 0, 5).too_risky);
+  EXPECT_EQ(first(5, 0, 5).trimmed_utility, 0.0);
+  EXPECT_TRUE(first(9, 1, 0).too_risky);
+  // With all samples it is Finish's verdict.
+  EXPECT_FALSE(Make(26, 0.5, 0, 0, 4).too_risky);
+}
+
 TEST(HypothesisTest, TrimmedWhenOutShareExceedsThreshold) {
   // T_out = 0.15: 4 of 30 (0.133) is acceptable, 5 of 30 (0.167) is not.
   EXPECT_FALSE(Make(26, 0.5, 0, 0, 4).too_risky);

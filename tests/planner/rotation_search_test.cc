@@ -54,6 +54,34 @@ TEST(RotationSearchTest, FlatObjectiveNeedsNoTurn) {
   EXPECT_EQ(c.rotation_rad, 0.0);
 }
 
+// A look at few samples that misleads: it sees a hill top at 60 deg where all samples are
+// trimmed (a cliff beside the real top at 100 deg) and puts its second hill's top a grid step
+// off. The search climbs the grid on all samples and refines there.
+TEST(RotationSearchTest, CoarseLookIsClimbedOnAllSamples) {
+  RotationSearchParams params = Params();
+  params.coarse_sample_share = 0.25;
+  const int samples = 30;
+  int looks_at_few = 0;
+  const SampledObjective objective = [&](double rho, int n) {
+    const double d = rho * kRadToDeg;
+    ActionEvaluation e;
+    e.samples = n;
+    if (n < samples) {
+      ++looks_at_few;
+      e.utility = std::abs(d - 60.0) < 15.0 ? 0.95 : 0.5 - 0.001 * std::abs(d - 120.0);
+    } else {
+      e.utility = d > 50.0 && d < 75.0 ? 0.0 : 0.9 - 0.002 * std::abs(d - 101.5);
+      e.too_risky = e.utility == 0.0;
+    }
+    e.trimmed_utility = e.utility;
+    return e;
+  };
+  const RotationChoice c = BestRotation(objective, samples, params);
+  EXPECT_NEAR(c.rotation_rad * kRadToDeg, 101.5, 0.7);
+  EXPECT_EQ(c.evaluation.samples, samples);  // the chosen utility is all samples'
+  EXPECT_EQ(looks_at_few, 18);               // the grid, and nothing else
+}
+
 TEST(RotationSearchTest, LeastAcceptableRotationBisectsTheEdge) {
   auto objective = Synthetic(+[](double rho) { return rho * kRadToDeg >= 42.0 ? 1.0 : 0.0; });
   auto ok = [](const ActionEvaluation& e) { return e.trimmed_utility > 0.5; };
@@ -77,8 +105,12 @@ TEST(RotationSearchTest, RealObjectiveMatchesBruteForce) {
     const CoarsePlanner planner(s);
     for (int kick = 0; kick < 3; ++kick) {
       CoarseActionEvaluator evaluator = planner.MakeEvaluator(30, 7);
-      RotationObjective objective = [&](double rho) { return evaluator.Evaluate(kick, rho); };
-      const RotationChoice found = BestRotation(objective, s.evaluation.rotation_search);
+      // As a decision searches: the grid on the first samples, the rest on all of them.
+      const SampledObjective objective = [&](double rho, int samples) {
+        return evaluator.EvaluateForSearch(kick, rho, samples);
+      };
+      const RotationChoice found = BestRotation(objective, 30, s.evaluation.rotation_search);
+      ASSERT_LT(s.evaluation.rotation_search.CoarseSamples(30), 30);
       double brute = 0.0;
       for (double d = -180.0; d < 180.0; d += 0.25) {
         brute = std::max(brute, evaluator.Evaluate(kick, d * kDegToRad).trimmed_utility);
