@@ -29,6 +29,22 @@ DrawnSample DrawSample(const StateEstimate& estimate, std::uint64_t seed, std::u
 SampleLanes DrawSampleLanes(const StateEstimate& estimate, std::uint64_t seed,
                             std::uint64_t first) {
   SampleLanes s;
+#if !defined(__SSE4_1__)
+  // SSE2 alone has no 64-bit lane compares or blends, which the lanes' streams need: there the
+  // scalar draw per lane is faster (docs/PERFORMANCE.md), with the same bits.
+  for (int l = 0; l < kLanes; ++l) {
+    const DrawnSample d = DrawSample(estimate, seed, first + static_cast<std::uint64_t>(l));
+    s.stream[l] = d.stream;
+    s.robot_x[l] = d.state.robot.p_F.x();
+    s.robot_y[l] = d.state.robot.p_F.y();
+    s.robot_theta_rad[l] = d.state.robot.theta_rad;
+    s.ball_x[l] = d.state.p_F_ball.x();
+    s.ball_y[l] = d.state.p_F_ball.y();
+    s.z_speed[l] = d.z_speed;
+    s.z_direction[l] = d.z_direction;
+  }
+  return s;
+#else
   s.stream = StreamKeyLanes(seed, first);
   // DrawSample's draws in its order: robot x, y, heading, ball y, ball x, speed, direction.
   constexpr int kDraws = 7;
@@ -65,6 +81,7 @@ SampleLanes DrawSampleLanes(const StateEstimate& estimate, std::uint64_t seed,
   s.z_speed = normal[5];
   s.z_direction = normal[6];
   return s;
+#endif
 }
 
 void DrawSamples(const StateEstimate& estimate, std::uint64_t seed, int count,
