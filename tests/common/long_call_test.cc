@@ -28,7 +28,7 @@ class TestHost : public LongCallHost {
   void Progress(const std::string& label, int done, int total, const std::string& unit) override {
     heard.push_back(label + " " + std::to_string(done) + "/" + std::to_string(total) + " " + unit);
   }
-  int polls = 0;
+  std::atomic<int> polls{0};  // read by helper threads in one test
   std::vector<std::string> heard;
 
  private:
@@ -44,12 +44,24 @@ TEST(LongCallTest, TheHostStopsAParallelLoopOnTheCallingThread) {
   for (const int threads : {1, 3}) {
     TestHost host(5);
     ScopedLongCallHost installed(host, std::chrono::nanoseconds(0));
-    std::atomic<int> done{0};
-    EXPECT_THROW(ParallelFor(10000, threads, [&](int) { ++done; }), Stop) << threads;
-    // Stopped after the calling thread's fifth item; each helper finishes at most the item it
-    // had begun, and the hand-out ends.
-    EXPECT_EQ(host.polls, 5);
-    EXPECT_LT(done.load(), 10000);
+    const std::thread::id caller = std::this_thread::get_id();
+    int on_caller = 0;
+    // A helper's item lasts until the host has said stop, so the calling thread reaches its
+    // fifth item however the threads are scheduled (on a loaded machine the helpers could
+    // otherwise take all 10000 items before the calling thread takes its first).
+    const auto item = [&](int) {
+      if (std::this_thread::get_id() == caller) {
+        ++on_caller;
+        return;
+      }
+      while (host.polls.load() < 5) std::this_thread::yield();
+    };
+    EXPECT_THROW(ParallelFor(10000, threads, item), Stop) << threads;
+    // Stopped after the calling thread's fifth item, polled after each of its items. (How many
+    // items the helpers finish between the stop and the end of the hand-out depends on the
+    // scheduler; ParallelForTest checks that an exception ends the hand-out.)
+    EXPECT_EQ(host.polls.load(), 5) << threads;
+    EXPECT_EQ(on_caller, 5) << threads;
   }
 }
 
@@ -65,14 +77,14 @@ TEST(LongCallTest, HelperThreadsNeverPoll) {
     }
   });
   // Only the calling thread's own items polled (one poll each, inside ParallelFor).
-  EXPECT_EQ(host.polls, 400 - on_helpers.load());
+  EXPECT_EQ(host.polls.load(), 400 - on_helpers.load());
 }
 
 TEST(LongCallTest, PollsAreSpacedByTheInterval) {
   TestHost host(0);
   ScopedLongCallHost installed(host, std::chrono::hours(1));
   for (int i = 0; i < 1000; ++i) PollLongCall();
-  EXPECT_EQ(host.polls, 0);  // an hour has not passed
+  EXPECT_EQ(host.polls.load(), 0);  // an hour has not passed
 }
 
 TEST(LongCallTest, ScopesNestAndRestore) {
