@@ -1,5 +1,5 @@
 // `foresight experiment ablations`: the reactive team and every variant of the CBR team
-// (models/experiments/cbr_variants.json) from the same trial keys (issue 15), in one run or in
+// (models/experiments/cbr_variants.json) from the same trial keys, in one run or in
 // shards (--shard I/N: a slice of every team's trials, experiments/passing_shard.h) merged by
 // `foresight merge` into the same report.
 #pragma once

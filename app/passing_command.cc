@@ -61,7 +61,7 @@ const PassingRun& RunOf(const std::vector<PassingRun>& runs, const std::string& 
   return runs.front();  // unreachable: both teams play when there is a scorecard
 }
 
-// The scorecard of the two teams against the paper (issue 27): JSON, text and HTML.
+// The scorecard of the two teams against the paper: JSON, text and HTML.
 void AddScorecardFiles(const std::filesystem::path& dir, const PaperTables& paper,
                        const std::vector<PassingRun>& runs, const std::filesystem::path& models,
                        ReportFiles& files, std::string& text) {

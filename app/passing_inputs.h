@@ -1,6 +1,6 @@
 // What `foresight experiment passing` and `experiment ablations` share: their flags (which
 // trials, how kicks are executed, where to), the inputs loaded and checked from them, the
-// provenance of a run, and the flags as a shard records them (--shard I/N, issue 17).
+// provenance of a run, and the flags as a shard records them (--shard I/N).
 #pragma once
 
 #include <CLI/CLI.hpp>

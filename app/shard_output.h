@@ -1,4 +1,4 @@
-// `--shard I/N` on the long commands and what a shard writes (issue 17): instead of its report,
+// `--shard I/N` on the long commands and what a shard writes: instead of its report,
 // a sharded run writes DIR/shard.json (report/shard_file.h) into its --out folder, which is a
 // report folder like any other (written whole, only over a folder foresight made).
 #pragma once

@@ -1,4 +1,4 @@
-// How much of the attacking game the case base covers with retrieval (issue 13): the share of
+// How much of the attacking game the case base covers with retrieval: the share of
 // random 2-vs-2 attack situations for which Algorithm 2 retrieves a case, per region and overall.
 //
 // The situations (our assumptions; the paper gives the regions only as figures, Fig. 11, 12), for

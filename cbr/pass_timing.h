@@ -1,4 +1,4 @@
-// A timing-aware pass check (issue 15, beyond the paper). The free-path test of sec. 3.3.1 asks
+// A timing-aware pass check (beyond the paper). The free-path test of sec. 3.3.1 asks
 // only whether an opponent stands inside a pass's fuzzy corridor now; it ignores time: an
 // opponent just outside the corridor but fast enough to step in passes the test, a slow one far
 // down a long corridor fails it. This check forward-simulates each pass of a case's ball path

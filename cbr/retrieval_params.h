@@ -81,7 +81,7 @@ struct RetrievalParams {
   // z of the roll at which a kick's trajectory ends (planner/kick_reach.h), set per kick by
   // UseKickModelReach; absent: trajectories run to their targets (the paper's ball path).
   std::optional<double> reach_sigmas;
-  // Ablation switches (issue 15; the paper always uses both): without the free-path filter no
+  // Ablation switches (the paper always uses both): without the free-path filter no
   // case is rejected for an opponent on its ball path; without opponent similarity every
   // candidate fulfils 0 conditions, so that criterion never decides.
   bool free_path = true;

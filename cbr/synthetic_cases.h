@@ -1,4 +1,4 @@
-// Large synthetic case bases for benchmarks and tests of the ball-scope index (issue 13): the
+// Large synthetic case bases for benchmarks and tests of the ball-scope index: the
 // cases of a real case base (for one defending goal) copied `count` times, each copy mirrored in
 // y with probability 1/2 (same defending goal), moved so that its ball lands uniformly on the
 // field within `margin_m` of the lines, its teammates and opponents jittered by up to

@@ -1,4 +1,4 @@
-// One slice of a long run's work, for spreading it over processes or machines (issue 17).
+// One slice of a long run's work, for spreading it over processes or machines.
 //
 // A run of `items` independent work items (fidelity situations, stability poses, strategy
 // starts) split into `count` shards gives item i to shard i mod count: interleaved, so that

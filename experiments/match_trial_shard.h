@@ -1,5 +1,5 @@
 // One trial of the match simulator (match/trial_result.h) in a shard file (report/shard_file.h,
-// issue 17): everything the passing reports read from a trial (outcome, counters, the team's
+// everything the passing reports read from a trial (outcome, counters, the team's
 // own counters, events and the trace of the recorded trial), doubles written exactly, so that a
 // trial read back is the trial that was played, bit for bit.
 //

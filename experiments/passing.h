@@ -114,7 +114,7 @@ CbrTeamSetup CbrSetup(const PassingSetup& setup);
 PassingResult EmptyPassingResult(const PassingSetup& setup);
 
 // Plays every trial with `team` (one of setup.teams) attacking and `executor` carrying out the
-// kicks; progress(done, total) counts trials. With a shard other than the whole run (issue 17),
+// kicks; progress(done, total) counts trials. With a shard other than the whole run,
 // only the trials it owns are played, numbered scenario by scenario (trial i of the k-th
 // scenario is k * setup.trials + i); the others stay empty: experiments/passing_shard.h merges
 // the shards. A trial's random numbers and whether it is traced never depend on the shard.

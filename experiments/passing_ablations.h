@@ -1,4 +1,4 @@
-// The CBR team's ablations (issue 15): the reactive team and every variant of
+// The CBR team's ablations: the reactive team and every variant of
 // models/experiments/cbr_variants.json (experiments/passing_variants.h) play the same scenarios
 // from the same trial keys, so each variant is compared with the paper's team (the first
 // variant) and with the reactive team trial by trial (experiments/passing_comparison.h).

@@ -1,4 +1,4 @@
-// The reproduction scorecard (issue 27): the paper's Tables 1-5 (Ros et al. 2009, sec. 5.2;
+// The reproduction scorecard: the paper's Tables 1-5 (Ros et al. 2009, sec. 5.2;
 // experiments/paper_tables.h) cell by cell beside our run of both teams on one configuration,
 // with our intervals at the experiment's confidence and whether the paper's value lies inside,
 // and the tally of the paper's claims for CBR against the reactive team per scenario.

@@ -1,4 +1,4 @@
-// The passing experiment and its ablations in shards (issue 17): a shard's trials as the
+// The passing experiment and its ablations in shards: a shard's trials as the
 // results of its shard file (report/shard_file.h), and every team's result again from all
 // shards. The items of a run are the trials of its teams (`--team both`: cbr, reactive; the
 // ablations: reactive and every variant), team by team, scenario by scenario: trial i of the

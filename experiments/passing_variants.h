@@ -1,4 +1,4 @@
-// Variants of the CBR team for ablations (issue 15; the paper reports none). Each variant
+// Variants of the CBR team for ablations (the paper reports none). Each variant
 // changes a few parameters of the paper's team; models/experiments/cbr_variants.json lists them:
 //   {"notes": "...",
 //    "variants": [

@@ -1,4 +1,4 @@
-// The stability experiment in shards (issue 17): a shard's poses as the results of its shard
+// The stability experiment in shards: a shard's poses as the results of its shard
 // file (report/shard_file.h), and the whole result again from all shards. An item is a pose;
 // its result is, per sample count, the frequency of its most frequent decision and the number
 // of distinct decisions: integers, so the merge is exact.

@@ -1,4 +1,4 @@
-// The strategies experiment in shards (issue 17): a shard's starts as the results of its shard
+// The strategies experiment in shards: a shard's starts as the results of its shard
 // file (report/shard_file.h), and the whole result again from all shards. An item is a start;
 // its result is every strategy's run from it (and, for the example start, the runs' steps),
 // numbers written exactly, so the merged report has the bytes of an unsharded run.

@@ -50,7 +50,7 @@ struct RotationSearchParams {
   int CoarseSamples(int samples) const;
 };
 
-// The coarse roll's contacts with posts, nets and robots (issue 12). Off, the paper's model: the
+// The coarse roll's contacts with posts, nets and robots. Off, the paper's model: the
 // ball stops where it first touches one (fully inelastic). On: it rebounds, reflected about the
 // contact normal with its normal speed scaled by the pair's restitution (tangential speed kept),
 // and rolls on; after max_contacts rebounds the next contact stops it.

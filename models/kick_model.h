@@ -3,7 +3,7 @@
 // alpha ~ N(direction_rad, sigma_direction_rad^2), alpha in the robot frame R (0 = straight
 // ahead, +pi/2 = to the left). The ball then decelerates at rolling_deceleration_mps2.
 //
-// launch_offset_m (issue 12) is where free rolling starts, measured from where the ball lay along
+// launch_offset_m is where free rolling starts, measured from where the ball lay along
 // the launch direction: a kicked ball first slides (physics: about 5 cm for the NAO's forward
 // kick) and only then rolls at v0. The coarse roll covers the offset before it decelerates.
 // Calibration fits it (foresight calibrate, physics mode); the paper's models leave it 0.

@@ -62,7 +62,7 @@ struct RobotModel {
   double TotalMassKg() const;
 };
 
-// Plausibility ranges of a URDF's numbers (issue 16): far beyond any robot that kicks a ball
+// Plausibility ranges of a URDF's numbers: far beyond any robot that kicks a ball
 // (NAO 5.4 kg and 0.57 m, AIBO 1.6 kg; joint speeds up to 25 rad/s), far below what overflows
 // Bullet or hides a unit error (grams or millimetres read as kilograms or metres). Assumptions.
 inline constexpr double kMaxLinkMassKg = 100.0;

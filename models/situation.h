@@ -48,7 +48,7 @@ struct Situation {
   // Checks the situation against its field: sigmas, robot, ball and obstacles on the carpet, no
   // obstacle on the ball.
   void Validate() const;
-  // What physics cannot start from (issue 16): nothing standing in a goal post (the robot
+  // What physics cannot start from: nothing standing in a goal post (the robot
   // counted as a disc of the field's default obstacle radius), the ball neither in a goal nor in
   // a net. Situation files must pass it; states made in code (tests, experiment grids, whose
   // points may fall in a post) need not.

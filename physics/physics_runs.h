@@ -28,7 +28,7 @@ struct KickTrialsRequest {
   bool record_trace = false;
   double scene_rate_hz = 0.0;  // > 0: every trial records its scene at this rate
   std::function<void(int, int)> progress;  // (done, total)
-  // Only trials i with shard.Owns(i) run (issue 17); the results hold those, in trial order.
+  // Only trials i with shard.Owns(i) run; the results hold those, in trial order.
   Shard shard;
 };
 

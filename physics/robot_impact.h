@@ -6,7 +6,7 @@
 // link, aimed at the link frame's y, from `gap_m` in front of where it first touches the robot.
 // The roll is the roll phase's own (phases.h: its steps, carpet and contacts).
 //
-// Why a rolled ball does not come back at e * v (issue 29 measured 0.04-0.06 of v off the NAO's
+// Why a rolled ball does not come back at e * v (measured 0.04-0.06 of v off the NAO's
 // foot, the ball hopping up at half its speed). Newton's restitution e acts along the contact
 // normal n, Coulomb's friction mu in the tangent plane (models/physics_params.h). Two things
 // take the horizontal rebound away from e * v, and neither is a solver artefact:

@@ -5,7 +5,7 @@
 // starts: the ball covers L at v0 first (it slides there in physics), so it rests L + d away.
 // Static objects stop it fully inelastically (the paper's model): the path ends where the ball
 // first touches a goal post, a net or an obstacle (its centre one radius short of the surface).
-// With the world's rebounds on (issue 12) it rebounds instead (planner/first_hit.h: reflected
+// With the world's rebounds on it rebounds instead (planner/first_hit.h: reflected
 // about the contact normal, its normal speed scaled by the pair's restitution) and rolls on from
 // there at the speed it had left, until it rests or touches a shape after max_contacts rebounds.
 // The first field line the path crosses outward decides the category: a goal line between the

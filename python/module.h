@@ -1,4 +1,4 @@
-// The Python module `foresight` (issue 17): the commands' work as functions that return what the
+// The Python module `foresight`: the commands' work as functions that return what the
 // commands print or write as JSON, as Python objects. Every function takes the command's flags as
 // keyword arguments (None: the command's default) and checks them with the command's own code, so
 // bad input raises foresight.InputError (a ValueError) with the command's one-line message. Long

@@ -1,4 +1,4 @@
-// The partial result of one shard of a long run (DIR/shard.json, issue 17) and the checks that
+// The partial result of one shard of a long run (DIR/shard.json) and the checks that
 // make `foresight merge` exact.
 //
 // A run given `--shard I/N` computes only its items (common/shard.h) and writes, instead of its

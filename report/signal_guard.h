@@ -1,4 +1,4 @@
-// Holding back Ctrl-C while a result is put in place (issue 16). SIGINT and SIGTERM end a run at
+// Holding back Ctrl-C while a result is put in place. SIGINT and SIGTERM end a run at
 // once by default, which is what a user wants during the work: nothing has been written yet. The
 // only moment a signal could leave a temporary file or folder behind is the short write that puts
 // the finished result in place; a SignalGuard blocks both signals for that moment (in the calling

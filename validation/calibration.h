@@ -49,7 +49,7 @@ struct KickObservation {
   bool has_launch_offset = false;
 };
 
-// Where the coarse roll's free rolling starts for one kick (models/kick_model.h, issue 12),
+// Where the coarse roll's free rolling starts for one kick (models/kick_model.h),
 // fitted so that the coarse model's mean rest distance matches the observed one with the
 // calibrated deceleration a: offset = mean(D_i - v_i^2 / 2a) over the kicks that rested without
 // touching anything, D_i the distance from where the ball lay to where it rested (the launch

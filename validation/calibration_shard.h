@@ -1,4 +1,4 @@
-// Physics calibration in shards (issue 17): an item is a trial index; shard I plays trials i with
+// Physics calibration in shards: an item is a trial index; shard I plays trials i with
 // i mod N = I of every kick (each kick keeps its own seed stream, so a trial's result does not
 // depend on the split). Its result is, per kick, the observation (launch, roll distance, the
 // rolling samples of the deceleration fit) and the drawn perturbations, null when the robot

@@ -32,7 +32,7 @@ struct PhysicsCalibrationSettings {
   std::optional<TrialVariation> variation;  // replaces robot.json's trial_variation
   // Called before each kick's trials with the kick's name; what it returns sees (done, total).
   std::function<std::function<void(int, int)>(const std::string& kick)> progress;
-  // Only trials i with shard.Owns(i) of every kick run (issue 17; validation/calibration_shard.h).
+  // Only trials i with shard.Owns(i) of every kick run (validation/calibration_shard.h).
   Shard shard;
 };
 

@@ -1,4 +1,4 @@
-"""Worked example of the Python module (issue 17): calibrate the NAO's kicks from physics, then
+"""Worked example of the Python module: calibrate the NAO's kicks from physics, then
 plot the launch speeds of new physics trials of each kick (another seed) against the fitted
 normal: the fit should predict them.
 

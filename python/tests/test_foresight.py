@@ -1,4 +1,4 @@
-"""The Python module `foresight` (issue 17) as a researcher uses it: the same answers as the
+"""The Python module `foresight` as a researcher uses it: the same answers as the
 command line, arrays of the documented shape and units, bad input as foresight.InputError with
 the command's one-line message, and the worked example run end to end (Agg backend)."""
 import json
