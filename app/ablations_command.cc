@@ -4,7 +4,6 @@
 
 #include "app/cli_values.h"
 #include "app/experiment_output.h"
-#include "app/report_text.h"
 #include "app/shard_output.h"
 #include "experiments/passing_ablations.h"
 #include "experiments/passing_shard.h"

@@ -5,9 +5,10 @@
 #include <vector>
 
 #include "app/cbr_drawing.h"
-#include "app/report_text.h"
 #include "cbr/own_situation.h"
+#include "models/model_paths.h"
 #include "report/html_report.h"
+#include "report/report_format.h"
 
 namespace foresight {
 

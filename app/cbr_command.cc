@@ -7,7 +7,6 @@
 #include "app/cbr_drawing.h"
 #include "app/cbr_retrieve_output.h"
 #include "app/cli_values.h"
-#include "app/report_text.h"
 #include "cbr/case_base.h"
 #include "cbr/case_holding.h"
 #include "cbr/case_reach.h"
@@ -20,6 +19,7 @@
 #include "experiments/passing.h"
 #include "models/model_paths.h"
 #include "report/output_set.h"
+#include "report/report_format.h"
 
 namespace foresight {
 

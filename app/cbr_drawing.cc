@@ -4,11 +4,11 @@
 #include <string>
 #include <vector>
 
-#include "app/report_text.h"
-#include "cbr/own_situation.h"
 #include "cbr/free_path.h"
+#include "cbr/own_situation.h"
 #include "cbr/similarity.h"
 #include "report/field_svg.h"
+#include "report/report_format.h"
 
 namespace foresight {
 

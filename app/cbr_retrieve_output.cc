@@ -4,9 +4,10 @@
 #include <cmath>
 #include <string>
 
-#include "app/report_text.h"
 #include "cbr/similarity.h"
 #include "common/one_line.h"
+#include "models/model_paths.h"
+#include "report/report_format.h"
 
 namespace foresight {
 

@@ -4,7 +4,6 @@
 
 #include "app/base_flag.h"
 #include "app/cli_values.h"
-#include "app/report_text.h"
 #include "common/error.h"
 #include "models/model_paths.h"
 #include "report/output_set.h"

@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <memory>
 
-#include "app/report_text.h"
 #include "common/checks.h"
 #include "common/error.h"
 #include "common/long_call.h"
@@ -48,15 +47,6 @@ double ParseNumber(const std::string& flag, const std::string& text, double lo, 
                      "], got '" + text + "'");
   }
   return value;
-}
-
-std::string DisplayPath(const std::filesystem::path& file,
-                        const std::filesystem::path& models_dir) {
-  const std::filesystem::path relative =
-      std::filesystem::absolute(file).lexically_normal().lexically_relative(
-          std::filesystem::absolute(models_dir).lexically_normal());
-  if (!relative.empty() && *relative.begin() != "..") return relative.generic_string();
-  return file.generic_string();
 }
 
 std::function<void(int, int)> CommandProgress(const std::string& label, const std::string& unit) {

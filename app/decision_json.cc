@@ -1,8 +1,8 @@
 #include "app/decision_json.h"
+#include "models/model_paths.h"
 
 #include <string>
 
-#include "app/report_text.h"
 
 namespace foresight {
 

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "app/report_text.h"
 #include "report/field_svg.h"
+#include "report/report_format.h"
 
 namespace foresight {
 

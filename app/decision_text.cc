@@ -1,10 +1,10 @@
 #include "app/decision_text.h"
+#include "report/report_format.h"
 
 #include <cmath>
 #include <cstdio>
 #include <string>
 
-#include "app/report_text.h"
 
 namespace foresight {
 

@@ -2,7 +2,6 @@
 
 #include <iostream>
 
-#include "app/report_text.h"
 #include "common/error.h"
 #include "models/model_paths.h"
 

@@ -5,7 +5,6 @@
 
 #include "app/base_flag.h"
 #include "app/cli_values.h"
-#include "app/report_text.h"
 #include "app/shard_output.h"
 #include "common/error.h"
 #include "models/model_paths.h"

@@ -5,7 +5,6 @@
 
 #include "app/cli_values.h"
 #include "app/experiment_output.h"
-#include "app/report_text.h"
 #include "app/passing_view.h"
 #include "app/shard_output.h"
 #include "experiments/passing_comparison.h"
@@ -16,6 +15,7 @@
 #include "experiments/passing_scorecard.h"
 #include "experiments/passing_scorecard_report.h"
 #include "experiments/passing_shard.h"
+#include "models/model_paths.h"
 
 namespace foresight {
 

@@ -3,10 +3,10 @@
 #include "app/base_flag.h"
 #include "app/cli_values.h"
 #include "app/passing_physics.h"
-#include "app/report_text.h"
 #include "app/shard_output.h"
 #include "common/error.h"
 #include "experiments/experiment_params.h"
+#include "models/model_paths.h"
 
 namespace foresight {
 

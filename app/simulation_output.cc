@@ -2,10 +2,11 @@
 
 #include <sstream>
 
-#include "app/report_text.h"
 #include "common/geometry.h"
+#include "models/model_paths.h"
 #include "report/field_svg.h"
 #include "report/provenance.h"
+#include "report/report_format.h"
 #include "report/viewer_page.h"
 #include "validation/trial_view.h"
 

@@ -2,11 +2,11 @@
 
 #include "app/cli_values.h"
 #include "app/experiment_output.h"
-#include "app/report_text.h"
 #include "app/shard_output.h"
 #include "common/error.h"
 #include "experiments/stability_report.h"
 #include "experiments/stability_shard.h"
+#include "models/model_paths.h"
 
 namespace foresight {
 

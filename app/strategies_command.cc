@@ -6,11 +6,11 @@
 #include "app/base_flag.h"
 #include "app/cli_values.h"
 #include "app/experiment_output.h"
-#include "app/report_text.h"
 #include "app/shard_output.h"
 #include "common/error.h"
 #include "experiments/strategies_report.h"
 #include "experiments/strategies_shard.h"
+#include "models/model_paths.h"
 #include "physics/physics_setup.h"
 
 namespace foresight {

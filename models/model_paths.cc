@@ -29,6 +29,15 @@ constexpr EnumNames<DataFolder, 14> kFolderNames{{{
 
 }  // namespace
 
+std::string DisplayPath(const std::filesystem::path& file,
+                        const std::filesystem::path& models_dir) {
+  const std::filesystem::path relative =
+      std::filesystem::absolute(file).lexically_normal().lexically_relative(
+          std::filesystem::absolute(models_dir).lexically_normal());
+  if (!relative.empty() && *relative.begin() != "..") return relative.generic_string();
+  return file.generic_string();
+}
+
 std::filesystem::path DefaultModelsDir() {
   if (const char* env = std::getenv("FORESIGHT_MODELS_DIR"); env != nullptr && *env != '\0') {
     return env;

@@ -19,6 +19,10 @@ namespace foresight {
 
 std::filesystem::path DefaultModelsDir();
 
+// A data file as reports show it: relative to the models folder when inside it, so the same
+// run gives the same bytes in every checkout.
+std::string DisplayPath(const std::filesystem::path& file, const std::filesystem::path& models_dir);
+
 // The folders of MODELS_DIR, by what they hold; the one place their names are spelled.
 enum class DataFolder {
   kFields,

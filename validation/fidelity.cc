@@ -88,7 +88,7 @@ SituationFidelity RunOne(const FidelityCase& fc, const std::vector<double>& rota
                                  settings.physics_trials, settings.seed, settings.threads);
   SituationFidelity s;
   s.situation_class = fc.situation_class;
-  s.file = fc.file.string();
+  s.file = fc.shown_file;
   s.situation = situation;
   for (int k = 0; k < static_cast<int>(situation.kicks.kicks.size()); ++k) {
     for (double rotation : rotations) {

@@ -71,6 +71,7 @@ FidelitySet LoadFidelitySet(const std::string& set, const std::filesystem::path&
     if (!std::filesystem::is_regular_file(c.file, ec)) {
       item.Fail("file", "refers to " + c.file.string() + ", which does not exist");
     }
+    c.shown_file = DisplayPath(c.file, models_dir);
     c.situation = LoadSituation(c.file, models_dir, overrides);
     result.cases.push_back(std::move(c));
   }

@@ -19,6 +19,7 @@ namespace foresight {
 struct FidelityCase {
   std::string situation_class;
   std::filesystem::path file;
+  std::string shown_file;  // as reports show it (DisplayPath): the same bytes in every checkout
   Situation situation;
 };
 

@@ -146,7 +146,7 @@ StrategyAgreement ReadAgreement(const ShardValue& v, int kicks) {
 SituationFidelity ReadSituation(const ShardValue& v, const FidelityCase& fc) {
   SituationFidelity s;
   s.situation_class = fc.situation_class;
-  s.file = fc.file.string();
+  s.file = fc.shown_file;
   s.situation = fc.situation;
   const std::string name = fc.file.filename().string();
   if (v["file"].String() != name) v["file"].Fail("must be " + name + " (another set?)");

@@ -323,7 +323,7 @@ TEST_F(CbrCommandTest, CheckGroupsIdenticalCasesAndCapsItsOutput) {
   EXPECT_LE(CountOf(copies.out, "warning: "), 8) << copies.out;
   base["cases"] = nlohmann::json::array();
   for (int i = 0; i < 30; ++i) {  // 30 pairs of twins, each pair elsewhere
-    for (const std::string twin : {"a", "b"}) {
+    for (const std::string& twin : {std::string("a"), std::string("b")}) {
       nlohmann::json copy = c;
       copy["name"] = twin + std::to_string(i);
       copy["ball"]["y_m"] = copy["ball"]["y_m"].get<double>() + 0.01 * i;
@@ -341,7 +341,7 @@ TEST_F(CbrCommandTest, ControlCharactersInCaseNamesArePrintedEscaped) {
   const nlohmann::json c = nlohmann::json::parse(ReadFile(ShippedCase("center_individual")));
   nlohmann::json base = nlohmann::json::parse(ReadFile(SmallBase({})));
   base["cases"] = nlohmann::json::array();
-  for (const std::string name : {std::string("evil\x1b[2J"), std::string("twin")}) {
+  for (const std::string& name : {std::string("evil\x1b[2J"), std::string("twin")}) {
     nlohmann::json copy = c;
     copy["name"] = name;
     const std::string file = name == "twin" ? "twin.json" : "evil.json";

@@ -95,7 +95,8 @@ TEST_F(MergeCommandTest, AnOutThatIsOrHoldsAShardFolderIsRefusedAndTheShardKept)
   Shard("runs/p", {"experiment", "passing", "--config", "dg", "--team", "reactive",
                    "--scenarios", "1", "--trials", "1"});
   const std::string shard = ReadFile(work() / "runs" / "p" / "shard.json");
-  for (const std::string& out : {"runs/p", "./runs/p/", "runs"}) {
+  for (const std::string& out :
+       {std::string("runs/p"), std::string("./runs/p/"), std::string("runs")}) {
     const RunResult r = Run({"merge", "--out", out, "runs/p"});
     EXPECT_EQ(r.exit_code, 2) << out;
     EXPECT_EQ(r.err, "foresight: error: --out: " + out + (out == "runs" ? " holds" : " is") +

@@ -396,6 +396,7 @@ TEST(FidelitySetTest, SituationFilesAreRelativeToTheSet) {
   EXPECT_EQ(set.name, file.stem().string());  // no name: the file's
   ASSERT_EQ(set.cases.size(), 1u);
   EXPECT_EQ(set.cases[0].file, situation);
+  EXPECT_EQ(set.cases[0].shown_file, situation.generic_string());  // outside MODELS: as it is
   EXPECT_EQ(set.cases[0].situation_class, "c");
   ASSERT_EQ(set.rotations_rad.size(), 3u);
   EXPECT_NEAR(set.rotations_rad[0], std::numbers::pi, 1e-12);
@@ -421,6 +422,10 @@ TEST(FidelitySetTest, TheSameTurnListedTwiceIsAnInputError) {
 TEST(FidelitySetTest, ShippedSetsLoad) {
   const FidelitySet quick = LoadFidelitySet("quick", testing::ModelsDir());
   EXPECT_EQ(quick.name, "quick");
+  // Reports show shipped situations relative to MODELS: the same bytes in every checkout.
+  for (const FidelityCase& c : quick.cases) {
+    EXPECT_EQ(c.shown_file.rfind("situations/", 0), 0u) << c.shown_file;
+  }
   EXPECT_EQ(quick.cases.size(), 6u);
   EXPECT_EQ(quick.rotations_rad.size(), 12u);
   const FidelitySet def = LoadFidelitySet("default", testing::ModelsDir());
