@@ -30,7 +30,7 @@
 namespace foresight {
 
 // One round: `candidates` motions drawn around the centre (the start motion in the first round,
-// the best motion found so far in the others), each played `trials` times.
+// the best candidate of the round before in the others), each played `trials` times.
 struct SearchRound {
   int candidates = 0;
   int trials = 0;

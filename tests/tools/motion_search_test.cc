@@ -92,6 +92,29 @@ TEST(MotionSearchTest, SameSeedSameBytesWhateverTheThreadsAndTheBaselineIsTheShi
     EXPECT_LE(one.result.candidates[one.result.best[k - 1]].score,
               one.result.candidates[one.result.best[k]].score);
   }
+  // The second round's candidate 0 is the first round's best, scored again on the second
+  // round's trials, and the best list ranks the last round's candidates only.
+  const int first_best = [&] {
+    int best = -1;
+    for (int i = 0; i < 3; ++i) {
+      const SearchCandidate& c = one.result.candidates[static_cast<std::size_t>(i)];
+      if (c.refusal == Refusal::kNone &&
+          (best < 0 || c.score < one.result.candidates[static_cast<std::size_t>(best)].score)) {
+        best = i;
+      }
+    }
+    return best;
+  }();
+  ASSERT_GE(first_best, 0);
+  const SearchCandidate& incumbent = one.result.candidates[3];
+  EXPECT_EQ(incumbent.round, 1);
+  EXPECT_EQ(incumbent.index, 0);
+  const KickMotion& round_best = one.result.candidates[static_cast<std::size_t>(first_best)].motion;
+  for (std::size_t k = 0; k < round_best.keyframes.size(); ++k) {
+    EXPECT_EQ(incumbent.motion.keyframes[k].time_s, round_best.keyframes[k].time_s);
+    EXPECT_EQ(incumbent.motion.keyframes[k].positions_rad, round_best.keyframes[k].positions_rad);
+  }
+  for (int index : one.result.best) EXPECT_EQ(one.result.candidates[index].round, 1);
   // Another seed draws other candidates.
   const Search other = RunSearch(TinySettings("fixed", 4), 1);
   EXPECT_NE(bytes, SearchJson(other.settings, other.result).dump());
@@ -309,8 +332,11 @@ TEST(MotionSearchCommandTest, OutIsCheckedFirstAndReplacedWhole) {
       << read(out / "err.txt");
 
   const std::filesystem::path dir = out / "search";
-  ASSERT_EQ(run(testing::ReplaceOnce(TinySettings(), R"("keep": 2)", R"("keep": 3)"), dir), 0)
-      << read(out / "err.txt");
+  // At least three of the last round's four candidates are scored (the best list ranks that round).
+  const std::string keep_three = testing::ReplaceOnce(
+      testing::ReplaceOnce(TinySettings(), R"("keep": 2)", R"("keep": 3)"),
+      R"({"candidates": 2, "trials": 2)", R"({"candidates": 4, "trials": 2)");
+  ASSERT_EQ(run(keep_three, dir), 0) << read(out / "err.txt");
   EXPECT_TRUE(std::filesystem::exists(dir / "best_3.json"));
   { std::ofstream(dir / "notes.txt") << "the user's"; }
   ASSERT_EQ(run(testing::ReplaceOnce(TinySettings(), R"("keep": 2)", R"("keep": 1)"), dir), 0)
