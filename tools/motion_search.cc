@@ -97,7 +97,8 @@ void Evaluate(const MotionSearchRun& run, Robot& robot, int motion_index, int ki
     low += r.touched && r.launch_speed_mps < settings.objective.min_speed_mps;
   }
   c.low_share = c.summary.touched > 0 ? static_cast<double>(low) / c.summary.touched : 0.0;
-  if (static_cast<double>(c.summary.fell) > settings.constraints.max_fall_share * c.summary.trials) {
+  if (static_cast<double>(c.summary.fell) > settings.constraints.max_fall_share * c.summary.trials ||
+      c.summary.max_tilt_rad > settings.constraints.max_tilt_rad) {
     c.refusal = Refusal::kBalance;
     return;
   }

@@ -31,7 +31,8 @@
 //                         (FindPlayedSpeedShare, physics/played_speed.h): a joint carried on
 //                         by the links around it can outrun what its target asks;
 //   refused for balance   when the robot falls while shifting its weight, or falls in more
-//                         than max_fall_share of its trials (floating base);
+//                         than max_fall_share of its trials, or its torso tilts more than
+//                         max_tilt_deg in any of them (floating base);
 // and otherwise scored by the objective over `trials` physics trials (lower is better).
 //
 // Determinism: candidate c of round r draws from StreamKey(seed, r * 2^20 + c, domain); the

@@ -165,6 +165,14 @@ TEST(MotionSearchTest, FloatingBaseShiftsTheBalanceAndCountsFalls) {
     EXPECT_EQ(std::signbit(drawn.balance.offsets_rad[k].second),
               std::signbit(shipped.balance.offsets_rad[k].second));
   }
+  // A robot that stands but sways past max_tilt_deg is refused for balance, after its trials.
+  EXPECT_GT(baseline.summary.max_tilt_rad, 0.0);
+  const Search strict = RunSearch(
+      testing::ReplaceOnce(text, R"("max_duration_s": 3.0})", R"("max_duration_s": 3.0, "max_tilt_deg": 0})"), 1);
+  const SearchCandidate& swayed = strict.result.candidates[0];
+  EXPECT_EQ(swayed.refusal, Refusal::kBalance);
+  EXPECT_EQ(swayed.summary.fell, 0);
+  EXPECT_EQ(swayed.summary.trials, 1);
 }
 
 // A motion too fast for its joints is slowed where it is too fast, its poses kept.
@@ -231,6 +239,10 @@ TEST(MotionSearchTest, BadSettingsNameTheFileAndField) {
   EXPECT_NE(message.find("constraints.max_speed_share: must be in [0.01, 1], got 1.2"),
             std::string::npos)
       << message;
+  EXPECT_NE(error_of(testing::ReplaceOnce(TinySettings(), R"("max_duration_s": 3.0})",
+                                          R"("max_duration_s": 3.0, "max_tilt_deg": 91})"))
+                .find("constraints.max_tilt_deg: must be in [0, 90], got 91"),
+            std::string::npos);
   // An unknown kick is named with the file.
   const MotionSearchSettings settings = LoadMotionSearchSettings(
       WriteTempFile("kick_search.json",
