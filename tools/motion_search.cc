@@ -97,18 +97,20 @@ void Evaluate(const MotionSearchRun& run, Robot& robot, int motion_index, int ki
     low += r.touched && r.launch_speed_mps < settings.objective.min_speed_mps;
   }
   c.low_share = c.summary.touched > 0 ? static_cast<double>(low) / c.summary.touched : 0.0;
-  if (static_cast<double>(c.summary.fell) > settings.constraints.max_fall_share * c.summary.trials) {
+  if (static_cast<double>(c.summary.fell) > settings.constraints.max_fall_share * c.summary.trials ||
+      c.summary.max_tilt_rad > settings.constraints.max_tilt_rad) {
     c.refusal = Refusal::kBalance;
     return;
   }
   c.score = ScoreCandidate(settings.objective, c.summary, c.low_share);
 }
 
-// Scored candidates, best first (ties by round and index, so the order is total).
-std::vector<int> Rank(const std::vector<SearchCandidate>& candidates) {
+// The scored candidates of `round`, best first (ties by index, so the order is total).
+std::vector<int> Rank(const std::vector<SearchCandidate>& candidates, int round) {
   std::vector<int> order;
   for (int i = 0; i < static_cast<int>(candidates.size()); ++i) {
-    if (candidates[static_cast<std::size_t>(i)].refusal == Refusal::kNone) order.push_back(i);
+    const SearchCandidate& c = candidates[static_cast<std::size_t>(i)];
+    if (c.round == round && c.refusal == Refusal::kNone) order.push_back(i);
   }
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
     return candidates[static_cast<std::size_t>(a)].score <
@@ -227,14 +229,19 @@ MotionSearchResult RunMotionSearch(const MotionSearchRun& run) {
       candidate.index = c;
       const std::uint64_t index = static_cast<std::uint64_t>(r) * kRoundStride +
                                   static_cast<std::uint64_t>(c);
-      candidate.motion = (r == 0 && c == 0)
-                             ? start
-                             : DrawCandidate(centre, robot.model, round,
-                                             StreamKey(settings.seed, index, kCandidateDomain));
+      // Candidate 0 is the centre itself: in the first round the start motion (the baseline),
+      // in the others the incumbent, scored again on this round's trials.
+      candidate.motion = c == 0 ? centre
+                                : DrawCandidate(centre, robot.model, round,
+                                                StreamKey(settings.seed, index, kCandidateDomain));
       Evaluate(run, robot, motion_index, kick_index, round, trial_seed, candidate);
       result.candidates.push_back(std::move(candidate));
     }
-    result.best = Rank(result.candidates);
+    // Ranked within the round only: its candidates met the same trials (common random numbers),
+    // the earlier rounds' scores came from fewer trials and other draws. A round whose
+    // candidates were all refused keeps the ranking before it.
+    std::vector<int> ranked = Rank(result.candidates, r);
+    if (!ranked.empty()) result.best = std::move(ranked);
     if (run.round_done) run.round_done(r, result);
   }
   return result;

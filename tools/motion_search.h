@@ -3,9 +3,19 @@
 // own robot. Settings (seed, rounds, refusal rules, objective) come from a file
 // (tools/motion_search_settings.h).
 //
-// Round r draws its candidates around a centre: the robot's shipped motion in the first round
-// (whose candidate 0 is that motion unchanged, the baseline), the best motion found so far in
-// the others. A candidate moves every joint of every inner keyframe (the first and the last,
+// Round r draws its candidates around a centre: the robot's shipped motion in the first round,
+// the best candidate of the round before in the others. Candidate 0 of every round is the
+// centre unchanged (the baseline in the first round, the incumbent after it), scored again on
+// the round's own trials, and the candidates are ranked within their round only. Why: the best
+// of many candidates scored on a few trials is the luckiest as often as the best (a candidate
+// at 1.583 m/s over 8 trials launched 1.480 over 200); ranked across rounds, it stayed "best so
+// far" and the later rounds, with more trials per candidate, centred on it. Scored again with
+// the round's trials it keeps its place only by beating the round's other candidates on the
+// same placements, playback speeds and carpets (common random numbers, so the difference between
+// two candidates is measured with less noise than either score). A lower confidence bound on
+// the score was the alternative; the score is not a mean (|mean - target| plus shares and an
+// sd), so its bound would need an error model of its own, and it would still compare scores
+// measured on different trials. A candidate moves every joint of every inner keyframe (the first and the last,
 // the stance, stay) by a normal draw, clamped to the joint's limits; stretches every segment's
 // duration by a normal factor; and adds one normal draw to the magnitude of every balance offset
 // (equal and opposite offsets stay so). A segment in which a joint would pass max_speed_share of
@@ -21,7 +31,8 @@
 //                         (FindPlayedSpeedShare, physics/played_speed.h): a joint carried on
 //                         by the links around it can outrun what its target asks;
 //   refused for balance   when the robot falls while shifting its weight, or falls in more
-//                         than max_fall_share of its trials (floating base);
+//                         than max_fall_share of its trials, or its torso tilts more than
+//                         max_tilt_deg in any of them (floating base);
 // and otherwise scored by the objective over `trials` physics trials (lower is better).
 //
 // Determinism: candidate c of round r draws from StreamKey(seed, r * 2^20 + c, domain); the
@@ -58,7 +69,7 @@ struct SearchCandidate {
 
 struct MotionSearchResult {
   std::vector<SearchCandidate> candidates;  // every candidate, in round and index order
-  std::vector<int> best;                    // indices into candidates, best first (scored only)
+  std::vector<int> best;  // indices into candidates, best first: the last round's scored ones
 };
 
 // The score of a summary under the objective (lower is better); low_share as in SearchCandidate.

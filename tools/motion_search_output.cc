@@ -76,7 +76,7 @@ std::string RoundText(int round, const MotionSearchResult& result, int keep) {
   out << "round " << round << ": " << in_round << " candidates, " << scored
       << " scored, refused: speed " << refused[static_cast<int>(Refusal::kSpeed)]
       << ", clearance " << refused[static_cast<int>(Refusal::kClearance)] << ", balance "
-      << refused[static_cast<int>(Refusal::kBalance)] << "; best so far:\n";
+      << refused[static_cast<int>(Refusal::kBalance)] << "; best, ranked on the round's own trials:\n";
   for (int k = 0; k < keep && k < static_cast<int>(result.best.size()); ++k) {
     out << "  " << CandidateLine(result.candidates[static_cast<std::size_t>(result.best[k])])
         << "\n";

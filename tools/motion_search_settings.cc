@@ -47,12 +47,14 @@ SearchRound ReadRound(const JsonObject& obj) {
 }
 
 SearchConstraints ReadConstraints(const JsonObject& obj) {
-  obj.RejectUnknownKeys({"min_clearance_m", "max_speed_share", "max_fall_share", "max_duration_s"});
+  obj.RejectUnknownKeys(
+      {"min_clearance_m", "max_speed_share", "max_fall_share", "max_duration_s", "max_tilt_deg"});
   SearchConstraints c;
   c.min_clearance_m = NumberIn(obj, "min_clearance_m", -1.0, 1.0);
   c.max_speed_share = NumberIn(obj, "max_speed_share", 0.01, 1.0);
   c.max_fall_share = NumberIn(obj, "max_fall_share", 0.0, 1.0);
   c.max_duration_s = NumberIn(obj, "max_duration_s", 0.01, 60.0);
+  if (obj.Has("max_tilt_deg")) c.max_tilt_rad = NumberIn(obj, "max_tilt_deg", 0.0, 90.0) * kDegToRad;
   return c;
 }
 

@@ -13,7 +13,7 @@
 //   "rounds": [{"candidates": 200, "trials": 20, "keyframe_sigma_deg": 8, "time_sigma_rel": 0.1,
 //               "balance_sigma_deg": 1}, ...],
 //   "constraints": {"min_clearance_m": 0.005, "max_speed_share": 1.0, "max_fall_share": 0.0,
-//                   "max_duration_s": 3.0},
+//                   "max_duration_s": 3.0, "max_tilt_deg": 22.5},   max_tilt_deg optional
 //   "objective": {"target_speed_mps": 1.6, "target_direction_deg": 0, ...},
 //   "keep": 5
 // }
@@ -25,12 +25,13 @@
 #include <string>
 #include <vector>
 
+#include "common/geometry.h"
 #include "models/physics_params.h"
 
 namespace foresight {
 
 // One round: `candidates` motions drawn around the centre (the start motion in the first round,
-// the best motion found so far in the others), each played `trials` times.
+// the best candidate of the round before in the others), each played `trials` times.
 struct SearchRound {
   int candidates = 0;
   int trials = 0;
@@ -45,6 +46,9 @@ struct SearchConstraints {
   double max_speed_share = 1.0;   // peak joint speed / URDF limit at the fastest playback
   double max_fall_share = 0.0;    // trials in which the robot fell, share
   double max_duration_s = 0.0;    // the motion as written, after FitToSpeedLimit slowed it
+  // Optional: the torso's largest tilt over a candidate's trials (floating base); a candidate
+  // that stands but sways past it has no margin left against falling. 90 deg: no limit.
+  double max_tilt_rad = 0.5 * kPi;
 };
 
 // Lower is better: |mean launch - target| (m/s) plus weighted penalties.

@@ -92,6 +92,29 @@ TEST(MotionSearchTest, SameSeedSameBytesWhateverTheThreadsAndTheBaselineIsTheShi
     EXPECT_LE(one.result.candidates[one.result.best[k - 1]].score,
               one.result.candidates[one.result.best[k]].score);
   }
+  // The second round's candidate 0 is the first round's best, scored again on the second
+  // round's trials, and the best list ranks the last round's candidates only.
+  const int first_best = [&] {
+    int best = -1;
+    for (int i = 0; i < 3; ++i) {
+      const SearchCandidate& c = one.result.candidates[static_cast<std::size_t>(i)];
+      if (c.refusal == Refusal::kNone &&
+          (best < 0 || c.score < one.result.candidates[static_cast<std::size_t>(best)].score)) {
+        best = i;
+      }
+    }
+    return best;
+  }();
+  ASSERT_GE(first_best, 0);
+  const SearchCandidate& incumbent = one.result.candidates[3];
+  EXPECT_EQ(incumbent.round, 1);
+  EXPECT_EQ(incumbent.index, 0);
+  const KickMotion& round_best = one.result.candidates[static_cast<std::size_t>(first_best)].motion;
+  for (std::size_t k = 0; k < round_best.keyframes.size(); ++k) {
+    EXPECT_EQ(incumbent.motion.keyframes[k].time_s, round_best.keyframes[k].time_s);
+    EXPECT_EQ(incumbent.motion.keyframes[k].positions_rad, round_best.keyframes[k].positions_rad);
+  }
+  for (int index : one.result.best) EXPECT_EQ(one.result.candidates[index].round, 1);
   // Another seed draws other candidates.
   const Search other = RunSearch(TinySettings("fixed", 4), 1);
   EXPECT_NE(bytes, SearchJson(other.settings, other.result).dump());
@@ -142,6 +165,14 @@ TEST(MotionSearchTest, FloatingBaseShiftsTheBalanceAndCountsFalls) {
     EXPECT_EQ(std::signbit(drawn.balance.offsets_rad[k].second),
               std::signbit(shipped.balance.offsets_rad[k].second));
   }
+  // A robot that stands but sways past max_tilt_deg is refused for balance, after its trials.
+  EXPECT_GT(baseline.summary.max_tilt_rad, 0.0);
+  const Search strict = RunSearch(
+      testing::ReplaceOnce(text, R"("max_duration_s": 3.0})", R"("max_duration_s": 3.0, "max_tilt_deg": 0})"), 1);
+  const SearchCandidate& swayed = strict.result.candidates[0];
+  EXPECT_EQ(swayed.refusal, Refusal::kBalance);
+  EXPECT_EQ(swayed.summary.fell, 0);
+  EXPECT_EQ(swayed.summary.trials, 1);
 }
 
 // A motion too fast for its joints is slowed where it is too fast, its poses kept.
@@ -208,6 +239,10 @@ TEST(MotionSearchTest, BadSettingsNameTheFileAndField) {
   EXPECT_NE(message.find("constraints.max_speed_share: must be in [0.01, 1], got 1.2"),
             std::string::npos)
       << message;
+  EXPECT_NE(error_of(testing::ReplaceOnce(TinySettings(), R"("max_duration_s": 3.0})",
+                                          R"("max_duration_s": 3.0, "max_tilt_deg": 91})"))
+                .find("constraints.max_tilt_deg: must be in [0, 90], got 91"),
+            std::string::npos);
   // An unknown kick is named with the file.
   const MotionSearchSettings settings = LoadMotionSearchSettings(
       WriteTempFile("kick_search.json",
@@ -309,8 +344,11 @@ TEST(MotionSearchCommandTest, OutIsCheckedFirstAndReplacedWhole) {
       << read(out / "err.txt");
 
   const std::filesystem::path dir = out / "search";
-  ASSERT_EQ(run(testing::ReplaceOnce(TinySettings(), R"("keep": 2)", R"("keep": 3)"), dir), 0)
-      << read(out / "err.txt");
+  // At least three of the last round's four candidates are scored (the best list ranks that round).
+  const std::string keep_three = testing::ReplaceOnce(
+      testing::ReplaceOnce(TinySettings(), R"("keep": 2)", R"("keep": 3)"),
+      R"({"candidates": 2, "trials": 2)", R"({"candidates": 4, "trials": 2)");
+  ASSERT_EQ(run(keep_three, dir), 0) << read(out / "err.txt");
   EXPECT_TRUE(std::filesystem::exists(dir / "best_3.json"));
   { std::ofstream(dir / "notes.txt") << "the user's"; }
   ASSERT_EQ(run(testing::ReplaceOnce(TinySettings(), R"("keep": 2)", R"("keep": 1)"), dir), 0)
