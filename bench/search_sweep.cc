@@ -17,6 +17,37 @@
 namespace foresight {
 namespace {
 
+// A case of the shipped search (its loss on the 30 samples it searched, and where).
+struct Case {
+  int pose = 0, kick = 0;
+  double loss = 0.0, brute_deg = 0.0, found_deg = 0.0;
+  double better_deg = 0.0;  // how much of the circle beats the found rotation on the 30 samples
+  double brute_heldout = 0.0, found_heldout = 0.0;  // both rotations on held-out samples
+  double best_heldout = -1.0;  // the best over the circle on the held-out samples (when looked at)
+};
+
+// The best trimmed utility over the circle in 0.5 deg steps on kHeldOutSamples held-out samples
+// of pose `pose`: what the two rotations are both measured against.
+double HeldOutBest(const Situation& s, int pose, int kick);
+
+// Held-out samples: another seed, many samples, so that the utilities of two rotations are
+// compared without the 30 samples the search and the brute force both looked at.
+constexpr int kHeldOutSamples = 3000;
+
+CoarseActionEvaluator HeldOutEvaluator(const CoarsePlanner& planner, int pose) {
+  return planner.MakeEvaluator(kHeldOutSamples, 1000003 + static_cast<std::uint64_t>(pose));
+}
+
+double HeldOutBest(const Situation& s, int pose, int kick) {
+  const CoarsePlanner planner(s);
+  CoarseActionEvaluator heldout = HeldOutEvaluator(planner, pose);
+  double best = 0.0;
+  for (double d = -180.0; d < 180.0; d += 0.5) {
+    best = std::max(best, heldout.Evaluate(kick, d * kDegToRad).trimmed_utility);
+  }
+  return best;
+}
+
 struct Variant {
   RotationSearchParams params;
   double worst = 0.0, total = 0.0;
@@ -34,18 +65,27 @@ int Run(int poses, std::uint64_t seed) {
       Make(20, 5, 2, 1.0),  Make(20, 5, 1, 1.0 / 3), Make(20, 5, 2, 1.0 / 3),
       Make(20, 5, 1, 0.25), Make(20, 5, 2, 0.25),    Make(20, 5, 3, 0.25),
       Make(20, 5, 2, 0.2),  Make(20, 4, 2, 0.25),    Make(24, 5, 2, 0.25)};
+  // The shipped parameter set (models/evaluation/spl.json) among the variants.
+  constexpr std::size_t kShipped = 3;  // Make(20, 5, 1, 0.25)
+  std::vector<Case> shipped;
   RandomStream rng(StreamKey(seed, 0));
   int cases = 0;
+  std::vector<Situation> situations;
+  situations.reserve(static_cast<std::size_t>(poses));
   for (int t = 0; t < poses; ++t) {
-    const Situation s = testing::MakeSituation(testing::RandomPose(rng, 4.0, 2.8));
+    situations.push_back(testing::MakeSituation(testing::RandomPose(rng, 4.0, 2.8)));
+    const Situation& s = situations.back();
     const CoarsePlanner planner(s);
     for (int kick = 0; kick < 3; ++kick) {
       CoarseActionEvaluator evaluator = planner.MakeEvaluator(30, 7 + t);
-      double brute = 0.0;
+      double brute = 0.0, brute_deg = 0.0;
+      std::vector<double> circle;
       for (double d = -180.0; d < 180.0; d += 0.25) {
-        brute = std::max(brute, evaluator.Evaluate(kick, d * kDegToRad).trimmed_utility);
+        circle.push_back(evaluator.Evaluate(kick, d * kDegToRad).trimmed_utility);
+        if (circle.back() > brute) brute = circle.back(), brute_deg = d;
       }
-      for (Variant& v : variants) {
+      for (std::size_t vi = 0; vi < variants.size(); ++vi) {
+        Variant& v = variants[vi];
         const long long before = evaluator.evaluations();
         const long long samples_before = evaluator.samples_simulated();
         const RotationChoice c = BestRotation(
@@ -57,6 +97,14 @@ int Run(int poses, std::uint64_t seed) {
         const double loss = std::max(0.0, brute - found);
         v.worst = std::max(v.worst, loss);
         v.total += loss;
+        if (vi == kShipped) {
+          Case k{t, kick, loss, brute_deg, c.rotation_rad * kRadToDeg};
+          for (double u : circle) k.better_deg += u > found ? 0.25 : 0.0;
+          CoarseActionEvaluator heldout = HeldOutEvaluator(planner, t);
+          k.brute_heldout = heldout.Evaluate(kick, brute_deg * kDegToRad).trimmed_utility;
+          k.found_heldout = heldout.Evaluate(kick, c.rotation_rad).trimmed_utility;
+          shipped.push_back(k);
+        }
       }
       ++cases;
     }
@@ -72,6 +120,54 @@ int Run(int poses, std::uint64_t seed) {
         static_cast<double>(v.hypotheses) / cases,
         static_cast<double>(v.samples) / cases, v.worst, v.total / cases);
   }
+  // The shipped search's worst cases, and its loss measured on held-out samples: the brute
+  // force's best rotation on the 30 samples against the search's, each valued with
+  // kHeldOutSamples other samples (a difference below zero: the search's rotation is better).
+  std::vector<Case> worst = shipped;
+  std::sort(worst.begin(), worst.end(), [](const Case& a, const Case& b) { return a.loss > b.loss; });
+  std::printf("shipped search's worst cases (30-sample loss; both rotations on %d held-out samples):\n",
+              kHeldOutSamples);
+  for (std::size_t i = 0; i < std::min<std::size_t>(8, worst.size()); ++i) {
+    Case& k = worst[i];
+    k.best_heldout = HeldOutBest(situations[static_cast<std::size_t>(k.pose)], k.pose, k.kick);
+    std::printf(
+        "  pose %3d kick %d: loss %.4f, brute %7.2f deg, found %7.2f deg, %5.2f deg of the circle "
+        "better; held out: brute %.4f found %.4f (brute - found %+.4f), best %.4f\n",
+        k.pose, k.kick, k.loss, k.brute_deg, k.found_deg, k.better_deg, k.brute_heldout,
+        k.found_heldout, k.brute_heldout - k.found_heldout, k.best_heldout);
+  }
+  // Every 10th case against the held-out best: how far each choice of the 30 samples falls
+  // short of the best rotation for the held-out samples (the sampling noise both searches share).
+  double brute_regret = 0.0, found_regret = 0.0, brute_regret_worst = 0.0,
+         found_regret_worst = 0.0;
+  int looked = 0;
+  for (std::size_t i = 0; i < shipped.size(); i += 10, ++looked) {
+    const Case& k = shipped[i];
+    const double best = HeldOutBest(situations[static_cast<std::size_t>(k.pose)], k.pose, k.kick);
+    brute_regret += best - k.brute_heldout;
+    found_regret += best - k.found_heldout;
+    brute_regret_worst = std::max(brute_regret_worst, best - k.brute_heldout);
+    found_regret_worst = std::max(found_regret_worst, best - k.found_heldout);
+  }
+  std::printf(
+      "every 10th case (%d), short of the held-out best rotation: brute force's choice mean %.4f "
+      "worst %.4f, the search's mean %.4f worst %.4f\n",
+      looked, brute_regret / looked, brute_regret_worst, found_regret / looked,
+      found_regret_worst);
+  double heldout_worst = 0.0, heldout_total = 0.0, heldout_signed = 0.0;
+  int above_001 = 0;
+  for (const Case& k : shipped) {
+    const double d = k.brute_heldout - k.found_heldout;
+    heldout_worst = std::max(heldout_worst, d);
+    heldout_total += std::max(0.0, d);
+    heldout_signed += d;
+    above_001 += d > 0.01;
+  }
+  std::printf(
+      "held out (%d samples): brute force's rotation better than the search's by worst %.4f, mean "
+      "%.2e (signed mean %+.2e), above 0.01 in %d of %zu cases\n",
+      kHeldOutSamples, heldout_worst, heldout_total / shipped.size(),
+      heldout_signed / shipped.size(), above_001, shipped.size());
   return 0;
 }
 

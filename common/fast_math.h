@@ -63,6 +63,22 @@ inline T CosPoly(T r) {
   return 1.0 - 0.5 * r2 + r2 * r2 * p;
 }
 
+// exp(r) for |r| <= ln2 / 2 (Exp's series up to r^13), a template for the lanes as above.
+template <typename T>
+inline T ExpPoly(T r) {
+  T p = T{} + 1.0 / 6227020800.0;  // 1/13!, then Horner down to 1/2!
+  for (double c : {1.0 / 479001600, 1.0 / 39916800, 1.0 / 3628800, 1.0 / 362880, 1.0 / 40320,
+                   1.0 / 5040, 1.0 / 720, 1.0 / 120, 1.0 / 24, 1.0 / 6, 0.5}) {
+    p = p * r + c;
+  }
+  return 1.0 + r + r * r * p;
+}
+
+// exp's reduction constants: ln2 split so that k * kLn2Hi is exact for |k| < 2^20.
+inline constexpr double kLn2Hi = 6.93147180369123816490e-01;
+inline constexpr double kLn2Lo = 1.90821492927058770002e-10;
+inline constexpr double kInvLn2 = 1.44269504088896338700e+00;
+
 }  // namespace fast_math_detail
 
 // sin(x) and cos(x) together.
@@ -95,19 +111,12 @@ inline void SinCos(double x, double* sin_x, double* cos_x) {
 
 // exp(x); underflows to 0 below -708, overflows to +inf above 709.
 inline double Exp(double x) {
-  constexpr double kLn2Hi = 6.93147180369123816490e-01;
-  constexpr double kLn2Lo = 1.90821492927058770002e-10;
-  constexpr double kInvLn2 = 1.44269504088896338700e+00;
+  using fast_math_detail::kInvLn2, fast_math_detail::kLn2Hi, fast_math_detail::kLn2Lo;
   if (x < -708.0) return 0.0;
   if (x > 709.0) return INFINITY;
   const double k = fast_math_detail::RoundToInt(x * kInvLn2);
   const double r = (x - k * kLn2Hi) - k * kLn2Lo;  // |r| <= ln2 / 2
-  double p = 1.0 / 6227020800.0;                   // 1/13!, then Horner down to 1/2!
-  for (double c : {1.0 / 479001600, 1.0 / 39916800, 1.0 / 3628800, 1.0 / 362880, 1.0 / 40320,
-                   1.0 / 5040, 1.0 / 720, 1.0 / 120, 1.0 / 24, 1.0 / 6, 0.5}) {
-    p = p * r + c;
-  }
-  const double e = 1.0 + r + r * r * p;
+  const double e = fast_math_detail::ExpPoly(r);
   // Scale by 2^k through the exponent bits (k in [-1022, 1023] here, or nearly).
   const std::int64_t ki = static_cast<std::int64_t>(k);
   if (ki < -1021) return std::ldexp(e, static_cast<int>(ki));
@@ -137,8 +146,7 @@ inline const ExpTable& GetExpTable() {
 // exp(x) = 2^k 2^(j/64) exp(r), exp(r) by its Taylor series up to r^6 (remainder < 2e-19).
 // Within 3 ulp of the correctly rounded value (tested).
 inline double ExpFast(double x) {
-  constexpr double kLn2Hi = 6.93147180369123816490e-01;
-  constexpr double kLn2Lo = 1.90821492927058770002e-10;
+  using fast_math_detail::kLn2Hi, fast_math_detail::kLn2Lo;
   constexpr double k64OverLn2 = 92.332482616893656877;
   if (x < -700.0) return x < -745.0 ? 0.0 : Exp(x);
   if (x > 700.0) return Exp(x);
@@ -174,8 +182,7 @@ inline double Log(double x) {
                    1.0 / 7, 1.0 / 5, 1.0 / 3}) {
     p = p * s2 + c;
   }
-  constexpr double kLn2Hi = 6.93147180369123816490e-01;
-  constexpr double kLn2Lo = 1.90821492927058770002e-10;
+  using fast_math_detail::kLn2Hi, fast_math_detail::kLn2Lo;
   return k * kLn2Hi + (2.0 * s + 2.0 * s * s2 * p + k * kLn2Lo);
 }
 

@@ -156,12 +156,25 @@ inline void SinCosLanes(Lanes x, Lanes* sin_x, Lanes* cos_x) {
   *cos_x = Select(((quadrant + 1) & 2) != 0, -cos_swapped, cos_swapped);
 }
 
+// Exp (common/fast_math.h) in lanes, operation for operation: the same reduction to |r| <= ln2/2
+// and series, no table. Lanes beyond +-700 take the scalar one.
+inline Lanes ExpLanes(Lanes x) {
+  using namespace fast_math_detail;
+  if (Any((x < -700.0) | (x > 700.0))) {
+    Lanes e{};
+    for (int l = 0; l < kLanes; ++l) e[l] = Exp(x[l]);
+    return e;
+  }
+  const Lanes k = RoundToIntLanes(x * kInvLn2);
+  const Lanes r = (x - k * kLn2Hi) - k * kLn2Lo;
+  return reinterpret_cast<Lanes>(reinterpret_cast<LaneBits>(ExpPoly(r)) + (IntegerBits(k) << 52));
+}
+
 // ExpFast (common/fast_math.h) in lanes, operation for operation: the same reduction
 // x = (64 k + j) ln2 / 64 + r (n = 64 k + j rounded as RoundToInt), the same table 2^(j/64)
 // and series. Lanes beyond +-700 (never met by the potential on a field) take the scalar one.
 inline Lanes ExpFastLanes(Lanes x) {
-  constexpr double kLn2Hi = 6.93147180369123816490e-01;
-  constexpr double kLn2Lo = 1.90821492927058770002e-10;
+  using fast_math_detail::kLn2Hi, fast_math_detail::kLn2Lo;
   constexpr double k64OverLn2 = 92.332482616893656877;
   if (Any((x < -700.0) | (x > 700.0))) {
     Lanes e{};

@@ -8,7 +8,10 @@
 namespace foresight {
 
 PositionValue::PositionValue(const PotentialParams& potential, const FieldSpec& field)
-    : potential_(potential) {
+    : inverse_linear_x_scale_(1.0 / potential.linear_x_scale_m) {
+  for (const GaussianTerm& g : potential.gaussians) {
+    terms_.push_back({g.centre_x_m, g.centre_y_m, 1.0 / g.sigma_x_m, 1.0 / g.sigma_y_m, g.weight});
+  }
   Vec2 p_min_F, p_max_F;
   GridExtremes(field, &p_min_F, &p_max_F);
   potential_min_ = Refine(field, p_min_F, -1.0);
@@ -18,21 +21,21 @@ PositionValue::PositionValue(const PotentialParams& potential, const FieldSpec& 
 }
 
 double PositionValue::Potential(const Vec2& p_F) const {
-  double f = -p_F.x() / potential_.linear_x_scale_m;
-  for (const GaussianTerm& g : potential_.gaussians) {
-    const double dx = (p_F.x() - g.centre_x_m) / g.sigma_x_m;
-    const double dy = (p_F.y() - g.centre_y_m) / g.sigma_y_m;
+  double f = -p_F.x() * inverse_linear_x_scale_;
+  for (const Term& g : terms_) {
+    const double dx = (p_F.x() - g.centre_x_m) * g.inverse_sigma_x;
+    const double dy = (p_F.y() - g.centre_y_m) * g.inverse_sigma_y;
     f += g.weight * ExpFast(-0.5 * (dx * dx + dy * dy));
   }
   return f;
 }
 
 void PositionValue::PotentialLanes(const Lanes* x, const Lanes* y, Lanes* f, int groups) const {
-  for (int i = 0; i < groups; ++i) f[i] = -x[i] / potential_.linear_x_scale_m;
-  for (const GaussianTerm& g : potential_.gaussians) {
+  for (int i = 0; i < groups; ++i) f[i] = -x[i] * inverse_linear_x_scale_;
+  for (const Term& g : terms_) {
     for (int i = 0; i < groups; ++i) {
-      const Lanes dx = (x[i] - g.centre_x_m) / g.sigma_x_m;
-      const Lanes dy = (y[i] - g.centre_y_m) / g.sigma_y_m;
+      const Lanes dx = (x[i] - g.centre_x_m) * g.inverse_sigma_x;
+      const Lanes dy = (y[i] - g.centre_y_m) * g.inverse_sigma_y;
       f[i] += g.weight * ExpFastLanes(-0.5 * (dx * dx + dy * dy));
     }
   }

@@ -1,8 +1,8 @@
 // common/random.h's streams in SIMD lanes (planner/lanes.h): lane l holds its own stream, and a
-// draw gives lane l exactly the bits RandomStream gives that stream. Only the ziggurat's fast path
-// (a point inside a layer's rectangle, about 99 % of normals) is computed in lanes; a lane whose
-// draw would take the slow path is reported, and its caller redraws that lane with the scalar
-// stream (the slow path draws more numbers from the stream, which shifts every later draw).
+// draw gives lane l exactly the bits RandomStream gives that stream. The ziggurat's fast path (a
+// point inside a layer's rectangle, about 97 % of normals) and its wedge (the slow path's usual
+// case, which draws more numbers from the stream) are computed in lanes; only a lane that reaches
+// the tail is reported, for its caller to draw with the scalar stream.
 #pragma once
 
 #include <cstdint>
@@ -42,6 +42,18 @@ inline LaneBits StreamBitsLanes(LaneBits key, std::uint64_t draw) {
   return Mix64Lanes(key + draw * kGoldenGamma);
 }
 
+// RandomStream::NextBits in the lanes of `active`: `state` is each lane's RandomStream state (its
+// key plus its draws times the golden gamma); inactive lanes keep theirs.
+inline LaneBits NextBitsLanes(LaneBits& state, LaneMask active) {
+  state += reinterpret_cast<LaneBits>(active) & kGoldenGamma;
+  return Mix64Lanes(state);
+}
+
+// RandomStream::NextUniform of `bits` in each lane: b 2^-53 with b = bits >> 11 < 2^53, exact.
+inline Lanes UniformLanes(LaneBits bits) {
+  return __builtin_convertvector(bits >> 11, Lanes) * 0x1.0p-53;
+}
+
 // RandomStream::NextNormal's fast path for `bits` in each lane; lanes whose point falls outside
 // its layer's rectangle are cleared in `fast` (their value is then meaningless).
 //
@@ -59,6 +71,53 @@ inline Lanes NormalFastLanes(LaneBits bits, LaneMask& fast) {
   const Lanes ratio = Gather(t.ratio, layer);
   fast &= (u < ratio) & (u > -ratio);
   return u * Gather(t.x, layer);
+}
+
+// RandomStream::NormalEdge in the lanes of `pending`, whose draw `bits` fell outside its layer's
+// rectangle: the wedge test (Exp's bits, ExpLanes), the uniform it draws and the fresh draws
+// after a rejection, each lane from its own stream as the scalar code draws, so `state` ends
+// where the scalar stream's would. The tail (layer 0, about 6 in 10,000 normals) needs logs and
+// a loop: a lane that reaches it is set in `tail`, its value and state left meaningless, for the
+// caller to draw that normal with the scalar stream. Out of line: about 2.8 % of normals come
+// here.
+[[gnu::noinline]] inline void NormalEdgeLanes(LaneBits bits, LaneMask pending, LaneBits& state,
+                                              Lanes& value, LaneMask& tail) {
+  const random_detail::ZigguratTables& t = random_detail::kZiggurat;
+  for (;;) {
+    const LaneBits layer = bits & static_cast<std::uint64_t>(random_detail::kZigguratLayers - 1);
+    const LaneMask at_tail = pending & (reinterpret_cast<LaneMask>(layer) == 0);
+    tail |= at_tail;
+    pending &= ~at_tail;
+    if (!Any(pending)) return;
+    // NormalFastLanes's u and x = u x[layer], then the wedge test in the lanes still pending.
+    LaneMask unused = pending;
+    const Lanes x = NormalFastLanes(bits, unused);
+    const Lanes x_layer = Gather(t.x, layer), x_next = Gather(t.x, layer + 1);
+    const Lanes f0 = ExpLanes(-0.5 * (x_layer * x_layer - x * x));
+    const Lanes f1 = ExpLanes(-0.5 * (x_next * x_next - x * x));
+    const Lanes uniform = UniformLanes(NextBitsLanes(state, pending));
+    const LaneMask accept = pending & (f1 + uniform * (f0 - f1) < 1.0);
+    value = Select(accept, x, value);
+    pending &= ~accept;
+    if (!Any(pending)) return;
+    // Rejected: a fresh draw, accepted when it lands in its layer's rectangle.
+    bits = NextBitsLanes(state, pending);
+    LaneMask fast = pending;
+    const Lanes fresh = NormalFastLanes(bits, fast);
+    value = Select(fast, fresh, value);
+    pending &= ~fast;
+    if (!Any(pending)) return;
+  }
+}
+
+// RandomStream::NextNormal of each lane's stream (`state` as in NextBitsLanes); lanes that reach
+// the normal's tail are set in `tail` (see NormalEdgeLanes).
+inline Lanes NextNormalLanes(LaneBits& state, LaneMask& tail) {
+  const LaneBits bits = NextBitsLanes(state, BroadcastMask(-1));
+  LaneMask fast = BroadcastMask(-1);
+  Lanes value = NormalFastLanes(bits, fast);
+  if (!All(fast)) NormalEdgeLanes(bits, ~fast, state, value, tail);
+  return value;
 }
 
 }  // namespace foresight

@@ -26,12 +26,9 @@ DrawnSample DrawSample(const StateEstimate& estimate, std::uint64_t seed, std::u
   return sample;
 }
 
-SampleLanes DrawSampleLanes(const StateEstimate& estimate, std::uint64_t seed,
-                            std::uint64_t first) {
+SampleLanes DrawSampleLanesScalar(const StateEstimate& estimate, std::uint64_t seed,
+                                  std::uint64_t first) {
   SampleLanes s;
-#if !defined(__SSE4_1__)
-  // SSE2 alone has no 64-bit lane compares or blends, which the lanes' streams need: there the
-  // scalar draw per lane is faster (docs/PERFORMANCE.md), with the same bits.
   for (int l = 0; l < kLanes; ++l) {
     const DrawnSample d = DrawSample(estimate, seed, first + static_cast<std::uint64_t>(l));
     s.stream[l] = d.stream;
@@ -44,28 +41,35 @@ SampleLanes DrawSampleLanes(const StateEstimate& estimate, std::uint64_t seed,
     s.z_direction[l] = d.z_direction;
   }
   return s;
-#else
+}
+
+SampleLanes DrawSampleLanesVector(const StateEstimate& estimate, std::uint64_t seed,
+                                  std::uint64_t first) {
+  SampleLanes s;
   s.stream = StreamKeyLanes(seed, first);
   // DrawSample's draws in its order: robot x, y, heading, ball y, ball x, speed, direction.
   constexpr int kDraws = 7;
   Lanes normal[kDraws];
-  LaneMask fast[kDraws];
-  LaneMask all_fast = BroadcastMask(-1);
+  LaneBits state = s.stream;
+  LaneMask tail = BroadcastMask(0);
+  std::uint64_t tail_state[kLanes];  // a tail lane's stream state before its first tail normal
+  int tail_draw[kLanes];             // and that normal's place in the order
   for (int k = 0; k < kDraws; ++k) {
-    fast[k] = BroadcastMask(-1);
-    normal[k] =
-        NormalFastLanes(StreamBitsLanes(s.stream, static_cast<std::uint64_t>(k + 1)), fast[k]);
-    all_fast &= fast[k];
+    const LaneBits before = state;
+    const LaneMask tail_before = tail;
+    normal[k] = NextNormalLanes(state, tail);
+    if (__builtin_expect(Any(tail & ~tail_before), 0)) {
+      for (int l = 0; l < kLanes; ++l) {
+        if (tail[l] && !tail_before[l]) tail_state[l] = before[l], tail_draw[l] = k;
+      }
+    }
   }
-  if (!All(all_fast)) {
-    // A lane's first slow-path draw and every later one from its scalar stream: the slow path
-    // draws more numbers, which moves the later draws along the stream.
+  if (__builtin_expect(Any(tail), 0)) {
+    // The tail normal and every later one of that sample from its scalar stream.
     for (int l = 0; l < kLanes; ++l) {
-      if (all_fast[l]) continue;
-      int k = 0;
-      while (fast[k][l]) ++k;
-      RandomStream rng(s.stream[l], static_cast<std::uint64_t>(k));
-      for (; k < kDraws; ++k) normal[k][l] = rng.NextNormal();
+      if (!tail[l]) continue;
+      RandomStream rng(tail_state[l]);
+      for (int k = tail_draw[l]; k < kDraws; ++k) normal[k][l] = rng.NextNormal();
     }
   }
   s.robot_x = estimate.robot.p_F.x() + estimate.sigma_robot_x_m * normal[0];
@@ -81,7 +85,20 @@ SampleLanes DrawSampleLanes(const StateEstimate& estimate, std::uint64_t seed,
   s.z_speed = normal[5];
   s.z_direction = normal[6];
   return s;
+}
+
+// SSE2 alone has no 64-bit lane compares or blends, which the lanes' streams need: there the
+// scalar draw per lane is faster (docs/PERFORMANCE.md), with the same bits.
+#if defined(__SSE4_1__)
+constexpr bool kDrawInLanes = true;
+#else
+constexpr bool kDrawInLanes = false;
 #endif
+
+SampleLanes DrawSampleLanes(const StateEstimate& estimate, std::uint64_t seed,
+                            std::uint64_t first) {
+  return kDrawInLanes ? DrawSampleLanesVector(estimate, seed, first)
+                      : DrawSampleLanesScalar(estimate, seed, first);
 }
 
 void DrawSamples(const StateEstimate& estimate, std::uint64_t seed, int count,

@@ -35,8 +35,7 @@ void DrawSamples(const StateEstimate& estimate, std::uint64_t seed, int count,
                  std::vector<DrawnSample>& out);
 
 // Samples first .. first + kLanes - 1 in SIMD lanes (planner/lanes.h), lane l with the bits of
-// DrawSample(estimate, seed, first + l): the draws' fast paths in lanes (planner/random_lanes.h),
-// and the rare lane with a slow-path draw drawn again by DrawSample.
+// DrawSample(estimate, seed, first + l).
 struct SampleLanes {
   LaneBits stream;
   Lanes robot_x, robot_y, robot_theta_rad;
@@ -44,6 +43,13 @@ struct SampleLanes {
   Lanes z_speed, z_direction;
 };
 SampleLanes DrawSampleLanes(const StateEstimate& estimate, std::uint64_t seed, std::uint64_t first);
+// DrawSampleLanes's two ways, with the same bits: the draws in lanes (planner/random_lanes.h;
+// what builds with SSE4.1 or more use) and DrawSample per lane (what SSE2 alone uses, being
+// faster there). Both compile on every target, so the tests compare them in every build.
+SampleLanes DrawSampleLanesVector(const StateEstimate& estimate, std::uint64_t seed,
+                                  std::uint64_t first);
+SampleLanes DrawSampleLanesScalar(const StateEstimate& estimate, std::uint64_t seed,
+                                  std::uint64_t first);
 
 // The drawn launch of `kick` for a sample's standard normals (common random numbers: every kick
 // scales the same z by its own sigmas). T is double or SIMD lanes (planner/lanes.h).

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
+#include <vector>
 
 #include "common/random.h"
 #include "planner/random_lanes.h"
@@ -100,6 +102,65 @@ TEST(LanesTest, NormalFastPathInLanesHasTheScalarBits) {
   // About 2.8 % of the 128-layer ziggurat's points lie outside their rectangle.
   EXPECT_GT(rejected, draws / 50);
   EXPECT_LT(rejected, draws / 25);
+}
+
+// Exp in lanes (no table) against the scalar Exp: every bit, over the range the normals' wedge
+// and the potential use and beyond, and the scalar fallback past +-700.
+TEST(LanesTest, ExpInLanesHasExpsBits) {
+  int compared = 0;
+  for (double x0 = -40.0; x0 < 40.0; x0 += 0.0137 * kLanes) {
+    const Lanes x = Fill([x0, l = 0]() mutable { return x0 + 0.0137 * l++; });
+    const Lanes e = ExpLanes(x);
+    for (int l = 0; l < kLanes; ++l, ++compared) {
+      const double expected = Exp(x[l]);
+      ASSERT_EQ(std::memcmp(&e[l], &expected, sizeof expected), 0) << x[l];
+    }
+  }
+  EXPECT_GT(compared, 5000);
+  const Lanes far = Fill([v = -1080.0]() mutable { return v += 360.0; });
+  const Lanes e = ExpLanes(far);
+  for (int l = 0; l < kLanes; ++l) EXPECT_EQ(e[l], Exp(far[l])) << far[l];
+}
+
+// Whole normals in lanes (fast path, wedge, fresh draws after a rejection) against
+// RandomStream::NextNormal, 40 normals deep into each of 16,000 streams: every lane that is not
+// reported at the tail has the scalar normal's bits and its stream stands where the scalar
+// stream stands; a lane reported at the tail is one whose scalar normal lies beyond the tail's
+// start (the scalar stream draws it; that stream is then left).
+TEST(LanesTest, NormalsInLanesHaveTheScalarBits) {
+  const random_detail::ZigguratTables& t = random_detail::kZiggurat;
+  int slow = 0, tails = 0, normals = 0;
+  for (std::uint64_t first = 0; first < 16000; first += kLanes) {
+    const LaneBits key = StreamKeyLanes(11, first);
+    LaneBits state = key;
+    std::vector<RandomStream> scalar;
+    for (int l = 0; l < kLanes; ++l) scalar.emplace_back(key[l]);
+    LaneMask gone = BroadcastMask(0);
+    for (int k = 0; k < 40; ++k) {
+      LaneMask tail = BroadcastMask(0);
+      const LaneBits before = state;
+      const Lanes normal = NextNormalLanes(state, tail);
+      for (int l = 0; l < kLanes; ++l) {
+        const double expected = scalar[static_cast<std::size_t>(l)].NextNormal();
+        if (gone[l]) continue;
+        if (tail[l]) {
+          // Drawn by the scalar stream in DrawSampleLanes; this stream is not compared further.
+          ++tails;
+          gone[l] = -1;
+          ASSERT_GT(std::abs(expected), t.x[1]) << first + l;
+          continue;
+        }
+        ASSERT_EQ(std::memcmp(&normal[l], &expected, sizeof expected), 0) << first + l << " " << k;
+        ++normals;
+        slow += state[l] != before[l] + kGoldenGamma;
+        // The stream stands where the scalar one does.
+        RandomStream lane(state[l]), copy = scalar[static_cast<std::size_t>(l)];
+        ASSERT_EQ(lane.NextBits(), copy.NextBits()) << first + l << " " << k;
+      }
+    }
+  }
+  EXPECT_GT(slow, normals / 200);  // wedges (each draws a uniform) and rejections
+  EXPECT_GT(tails, 0);
 }
 
 TEST(LanesTest, GatherAnyAndAll) {

@@ -100,18 +100,24 @@ bool SameBits(double a, double b) {
 }
 
 // The drawing in lanes against DrawSample, sample by sample and bit by bit, over enough samples
-// that many lanes have a draw on the ziggurat's slow path (drawn again by the scalar stream).
+// that many lanes have a draw on the ziggurat's slow path (the wedge in lanes, the rare tail by
+// the scalar stream): both ways of DrawSampleLanes, whichever the build uses, so the default
+// (SSE2) build tests the lanes too.
 TEST(SamplingTest, DrawingInLanesHasDrawSamplesBits) {
   const Situation s = testing::MakeSituation(testing::Uncertain({.x_m = -2.0, .theta_deg = 170}));
-  int slow_lanes = 0, compared = 0;
+  int slow_lanes = 0, tail_lanes = 0, compared = 0;
+  for (auto* draw : {&DrawSampleLanesVector, &DrawSampleLanesScalar, &DrawSampleLanes})
   for (std::uint64_t seed : {3ULL, 1234567ULL}) {
-    for (std::uint64_t first = 0; first < 4000; first += kLanes) {
-      const SampleLanes lanes = DrawSampleLanes(s.state, seed, first);
+    for (std::uint64_t first = 0; first < 16000; first += kLanes) {
+      const SampleLanes lanes = (*draw)(s.state, seed, first);
       LaneMask fast = BroadcastMask(-1);
       for (int k = 1; k <= 7; ++k) NormalFastLanes(StreamBitsLanes(lanes.stream, k), fast);
       for (int l = 0; l < kLanes; ++l) {
         const DrawnSample d = DrawSample(s.state, seed, first + l);
         slow_lanes += fast[l] == 0;
+        // A tail normal lies beyond the ziggurat's first edge (the noise draws are normals).
+        tail_lanes += std::abs(d.z_speed) > random_detail::kZiggurat.x[1] ||
+                      std::abs(d.z_direction) > random_detail::kZiggurat.x[1];
         ++compared;
         ASSERT_EQ(lanes.stream[l], d.stream);
         ASSERT_TRUE(SameBits(lanes.robot_x[l], d.state.robot.p_F.x())) << first + l;
@@ -125,6 +131,7 @@ TEST(SamplingTest, DrawingInLanesHasDrawSamplesBits) {
     }
   }
   EXPECT_GT(slow_lanes, compared / 10);  // about 18 % of samples have a slow-path draw
+  EXPECT_GT(tail_lanes, 3 * 10);  // about 1.1 in 1,000 samples has a tail in its two noise draws
   // DrawSamples uses the lanes and stops at any count.
   std::vector<DrawnSample> some;
   DrawSamples(s.state, 5, 13, some);
