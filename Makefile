@@ -5,6 +5,9 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 SITUATION ?= models/situations/near_goal_corner.json
 STRATEGY ?= optimal_all
+# The robot's base in `make main`'s physics (fixed: the shipped default; floating: the robot on
+# its own feet, about ten times the cost, docs/PERFORMANCE.md).
+BASE ?= fixed
 
 FUZZ_RUNS ?= 20000
 FUZZ_TIMEOUT ?= 10
@@ -30,12 +33,13 @@ test: build
 
 # The main job on the shipped defaults: calibrate the NAO's kicks from physics, write the
 # calibrated kick model, compare the coarse model (with that model) against physics on the
-# quick situation set, and write both reports.
+# quick situation set, and write both reports. `make main BASE=floating` does it all on the
+# floating base.
 main: build
 	@mkdir -p out
-	@$(BUILD)/app/foresight calibrate --robot nao --all --trials 1000 --out out/nao_calibrated.json --report out/calibration
+	@$(BUILD)/app/foresight calibrate --robot nao --all --trials 1000 --base $(BASE) --out out/nao_calibrated.json --report out/calibration
 	@echo
-	@$(BUILD)/app/foresight fidelity --situations quick --kicks out/nao_calibrated.json --trials 30 --out out/fidelity
+	@$(BUILD)/app/foresight fidelity --situations quick --kicks out/nao_calibrated.json --trials 30 --base $(BASE) --out out/fidelity
 	@echo
 	@echo "calibrated kick model: out/nao_calibrated.json"
 	@echo "reports: out/calibration/calibration.html and out/fidelity/fidelity.html"
