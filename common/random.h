@@ -49,7 +49,7 @@ class RandomStream {
   }
   // Uniform in [0, 1) with 53 random bits.
   double NextUniform() { return static_cast<double>(NextBits() >> 11) * 0x1.0p-53; }
-  // Standard normal N(0, 1). The fast path (about 99 % of draws) is inline.
+  // Standard normal N(0, 1). The fast path (about 97 % of draws here) is inline.
   double NextNormal() {
     const std::uint64_t bits = NextBits();
     const int layer = static_cast<int>(bits & (random_detail::kZigguratLayers - 1));

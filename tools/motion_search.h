@@ -35,7 +35,7 @@
 //                         max_tilt_deg in any of them (floating base);
 // and otherwise scored by the objective over `trials` physics trials (lower is better).
 //
-// Determinism: candidate c of round r draws from StreamKey(seed, r * 2^20 + c, domain); the
+// Determinism: candidate c >= 1 of round r draws from StreamKey(seed, r * 2^20 + c, domain); the
 // trials of every candidate of round r use the physics streams of seed StreamKey(seed, r, ...)
 // (common random numbers: the candidates of a round meet the same placements, playback speeds
 // and carpets). Same settings, same results, whatever the thread count.
@@ -69,7 +69,9 @@ struct SearchCandidate {
 
 struct MotionSearchResult {
   std::vector<SearchCandidate> candidates;  // every candidate, in round and index order
-  std::vector<int> best;  // indices into candidates, best first: the last round's scored ones
+  // Indices into candidates, best first: the scored ones of the last round that scored any (a
+  // round whose candidates were all refused leaves the ranking of the round before).
+  std::vector<int> best;
 };
 
 // The score of a summary under the objective (lower is better); low_share as in SearchCandidate.

@@ -101,7 +101,7 @@ nlohmann::ordered_json SearchJson(const MotionSearchSettings& settings,
     item["clearance_m"] = c.clearance_m;
     if (c.summary.trials > 0) {
       const TrialSummary& s = c.summary;
-      item["score"] = c.score;
+      if (c.refusal == Refusal::kNone) item["score"] = c.score;  // a refused one has none
       item["trials"] = s.trials;
       item["launched"] = s.launched;
       item["fell"] = s.fell;

@@ -21,11 +21,11 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "common/geometry.h"
 #include "models/physics_params.h"
 
 namespace foresight {
@@ -47,8 +47,8 @@ struct SearchConstraints {
   double max_fall_share = 0.0;    // trials in which the robot fell, share
   double max_duration_s = 0.0;    // the motion as written, after FitToSpeedLimit slowed it
   // Optional: the torso's largest tilt over a candidate's trials (floating base); a candidate
-  // that stands but sways past it has no margin left against falling. 90 deg: no limit.
-  double max_tilt_rad = 0.5 * kPi;
+  // that stands but sways past it has no margin left against falling. Not given: no limit.
+  double max_tilt_rad = std::numeric_limits<double>::infinity();
 };
 
 // Lower is better: |mean launch - target| (m/s) plus weighted penalties.

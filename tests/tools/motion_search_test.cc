@@ -35,7 +35,7 @@ std::string TinySettings(const std::string& base = "fixed", int seed = 3,
     "seed": )" + std::to_string(seed) + R"(,
     "rounds": [
       {"candidates": 3, "trials": 2, "keyframe_sigma_deg": 3, "time_sigma_rel": 0.05, "balance_sigma_deg": 1},
-      {"candidates": 2, "trials": 2, "keyframe_sigma_deg": 1, "time_sigma_rel": 0.02, "balance_sigma_deg": 0.5}
+      {"candidates": 2, "trials": 3, "keyframe_sigma_deg": 1, "time_sigma_rel": 0.02, "balance_sigma_deg": 0.5}
     ],
     "constraints": )" + constraints + R"(,
     "objective": {"target_speed_mps": 1.1, "target_direction_deg": 0, "speed_sd_max_mps": 0.05,
@@ -109,6 +109,7 @@ TEST(MotionSearchTest, SameSeedSameBytesWhateverTheThreadsAndTheBaselineIsTheShi
   const SearchCandidate& incumbent = one.result.candidates[3];
   EXPECT_EQ(incumbent.round, 1);
   EXPECT_EQ(incumbent.index, 0);
+  EXPECT_EQ(incumbent.summary.trials, 3);  // its own round's trials, not the first round's 2
   const KickMotion& round_best = one.result.candidates[static_cast<std::size_t>(first_best)].motion;
   for (std::size_t k = 0; k < round_best.keyframes.size(); ++k) {
     EXPECT_EQ(incumbent.motion.keyframes[k].time_s, round_best.keyframes[k].time_s);
@@ -145,7 +146,7 @@ TEST(MotionSearchTest, RefusalRulesRefuseBeforeAnyTrial) {
 TEST(MotionSearchTest, FloatingBaseShiftsTheBalanceAndCountsFalls) {
   std::string text = TinySettings("floating");
   text = testing::ReplaceOnce(text, R"("candidates": 3, "trials": 2)", R"("candidates": 2, "trials": 1)");
-  text = testing::ReplaceOnce(text, R"("candidates": 2, "trials": 2)", R"("candidates": 1, "trials": 1)");
+  text = testing::ReplaceOnce(text, R"("candidates": 2, "trials": 3)", R"("candidates": 1, "trials": 1)");
   const Search s = RunSearch(text, 1);
   ASSERT_EQ(s.result.candidates.size(), 3u);
   const KickMotion& shipped = s.setup->robot.motions[*s.setup->robot.FindMotion("forward")];
@@ -347,7 +348,7 @@ TEST(MotionSearchCommandTest, OutIsCheckedFirstAndReplacedWhole) {
   // At least three of the last round's four candidates are scored (the best list ranks that round).
   const std::string keep_three = testing::ReplaceOnce(
       testing::ReplaceOnce(TinySettings(), R"("keep": 2)", R"("keep": 3)"),
-      R"({"candidates": 2, "trials": 2)", R"({"candidates": 4, "trials": 2)");
+      R"({"candidates": 2, "trials": 3)", R"({"candidates": 4, "trials": 3)");
   ASSERT_EQ(run(keep_three, dir), 0) << read(out / "err.txt");
   EXPECT_TRUE(std::filesystem::exists(dir / "best_3.json"));
   { std::ofstream(dir / "notes.txt") << "the user's"; }

@@ -424,8 +424,11 @@ TEST(FidelitySetTest, ShippedSetsLoad) {
   EXPECT_EQ(quick.name, "quick");
   // Reports show shipped situations relative to MODELS: the same bytes in every checkout.
   for (const FidelityCase& c : quick.cases) {
-    EXPECT_EQ(c.shown_file.rfind("situations/", 0), 0u) << c.shown_file;
+    EXPECT_TRUE(std::filesystem::path(c.shown_file).is_relative()) << c.shown_file;
+    EXPECT_TRUE(std::filesystem::equivalent(testing::ModelsDir() / c.shown_file, c.file))
+        << c.shown_file;
   }
+  EXPECT_EQ(quick.cases[0].shown_file, "fidelity/situations/open_centre.json");
   EXPECT_EQ(quick.cases.size(), 6u);
   EXPECT_EQ(quick.rotations_rad.size(), 12u);
   const FidelitySet def = LoadFidelitySet("default", testing::ModelsDir());
