@@ -1,6 +1,6 @@
-// Speed of the coarse model (the targets on one core: a plain decision <= 1 us, an optimal_all
-// decision with the rotation search <= 40 us; the first targets were >= 15 M samples/s, <= 10 us
-// and <= 300 us). Run:
+// Speed of the coarse model (the targets on one core: a plain decision <= 2 us native, an
+// optimal_all decision with the rotation search <= 40 us native and <= 80 us silvermont;
+// docs/PERFORMANCE.md). Run:
 //   build/bench/planner_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 // Scenes are the shared test scenes (tests/support), so tests and benchmarks agree on them.
 #include <benchmark/benchmark.h>
@@ -121,8 +121,8 @@ BENCHMARK_CAPTURE(BM_Decision, optimal_all_rebounds, Strategy::kOptimalAll, Cont
     ->Unit(benchmark::kMicrosecond);
 
 // The same through CoarsePlanner::Decide(strategy, samples, seed), which makes a fresh evaluator
-// and Decision each time (about 15 heap allocations): what the benchmark timed before a robot
-// kept one evaluator and one Decision.
+// and Decision each time (about 15 heap allocations), against a robot that keeps one evaluator
+// and one Decision (BM_Decision).
 void BM_DecisionFresh(benchmark::State& state, Strategy strategy) {
   const std::vector<Situation> situations = Field(16);
   std::vector<CoarsePlanner> planners(situations.begin(), situations.end());

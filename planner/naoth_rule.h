@@ -4,8 +4,8 @@
 //      <= min_acceptable_share;
 //   2. if some remaining kick has a goal share >= goal_preference_share, take the one with the
 //      most goal samples; on a tie, the lowest mean potential over all samples, goal samples
-//      included (ActionEvaluation::potential_all_avg), as NaoTH does (found by comparing
-//      with NaoTH's own implementation);
+//      included (ActionEvaluation::potential_all_avg), as NaoTH's own implementation
+//      does;
 //   3. otherwise take the lowest mean potential among the remaining kicks and `none` (which
 //      passes the same filter). This mean is over the infield samples only: below the goal
 //      preference goal samples do not count.

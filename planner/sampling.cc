@@ -104,6 +104,12 @@ SampleLanes DrawSampleLanes(const StateEstimate& estimate, std::uint64_t seed,
 void DrawSamples(const StateEstimate& estimate, std::uint64_t seed, int count,
                  std::vector<DrawnSample>& out) {
   out.resize(static_cast<std::size_t>(count));
+  if constexpr (!kDrawInLanes) {  // scalar draws: no packing into lanes and out again
+    for (int i = 0; i < count; ++i) {
+      out[static_cast<std::size_t>(i)] = DrawSample(estimate, seed, static_cast<std::uint64_t>(i));
+    }
+    return;
+  }
   for (int first = 0; first < count; first += kLanes) {
     const SampleLanes s = DrawSampleLanes(estimate, seed, static_cast<std::uint64_t>(first));
     for (int l = 0; l < kLanes && first + l < count; ++l) {

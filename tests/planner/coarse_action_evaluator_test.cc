@@ -14,7 +14,7 @@ namespace foresight {
 namespace {
 
 // The coarse model's variants: the paper's (no rebounds, no launch offset), and rebounds with the
-// shipped restitution plus launch offsets on two kicks (issue 12).
+// shipped restitution plus launch offsets on two kicks.
 enum class Variant { kPaper, kReboundsAndOffsets };
 
 Situation Configure(Situation s, Variant variant) {

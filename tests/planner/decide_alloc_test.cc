@@ -1,4 +1,4 @@
-// A robot's decision must not touch the heap (issue 18): CoarsePlanner::Decide with a kept
+// A robot's decision must not touch the heap: CoarsePlanner::Decide with a kept
 // evaluator and Decision, for every strategy, many poses, seeds and sample counts, counted by a
 // replacement of the global operator new. In a test binary of its own (planner_alloc_tests), so
 // the replacement touches no other test.

@@ -36,7 +36,7 @@ TEST(NaothRuleTest, MostGoalSamplesWinAboveThePreference) {
 }
 
 // NaoTH breaks a tie on goal samples by the lowest mean potential over all samples, goal samples
-// included (issue 18), not by the utility and not by the infield samples' potential alone.
+// included, not by the utility and not by the infield samples' potential alone.
 TEST(NaothRuleTest, ATieOnGoalSamplesGoesToTheLowestPotentialOverAllSamples) {
   // Both kicks: 12 goal samples (40 %), 18 infield. Kick 0 has the higher utility (infield
   // value 0.9 against 0.5) and the lower infield potential (-1.0 against -0.5), but its goal

@@ -1,4 +1,4 @@
-// Exact answers of the coarse roll with rebounds (issue 12) and with a launch offset: a head-on
+// Exact answers of the coarse roll with rebounds and with a launch offset: a head-on
 // hit leaves at e times the speed it arrived with, an oblique one is reflected about the contact
 // normal, the category is the first line crossed, and the contact count is bounded.
 #include <gtest/gtest.h>
