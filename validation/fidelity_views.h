@@ -11,7 +11,7 @@
 // The worst shown of a whole run are among the worst shown of every shard's own situations
 // (WorseSituation is a strict weak order), so a shard file carries the recordings its situations
 // may need, and merging the shards and writing the pages runs no physics. The price: at most
-// kFidelityViewSituations x 2 x kFidelityViewTrials extra trials per situation, usually fewer.
+// 2 x kFidelityViewTrials extra trials per situation (each records only itself), usually fewer.
 #pragma once
 
 #include <string>

@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 
 #include "common/geometry.h"
 #include "common/random.h"
@@ -247,9 +246,8 @@ TEST(PowerKickTest, StandsThroughAFixedSeedBatchAndLaunchesAboveThePublishedFloo
   const TrialSummary summary = Summarize(results);
   EXPECT_EQ(summary.fell, 0);
   EXPECT_EQ(summary.launched, 8);
-  std::printf("power: launch %.3f m/s mean over %d trials, largest tilt %.1f deg\n",
-              summary.launch_speed_mean_mps, summary.launched, summary.max_tilt_rad * kRadToDeg);
-  EXPECT_GT(summary.launch_speed_mean_mps, PublishedFloorMps());
+  EXPECT_GT(summary.launch_speed_mean_mps, PublishedFloorMps())
+      << "largest tilt " << summary.max_tilt_rad * kRadToDeg << " deg";
   for (const TrialResult& r : results) EXPECT_EQ(r.outcome.status, OutcomeStatus::kOk);
 }
 
@@ -272,8 +270,7 @@ TEST(PowerKickTest, PlacementDrawsRarelyReachIntoTheBody) {
     inside += clearance.DepthInsideM(p_R_ball) > 0.0;
     nearest_m = std::min(nearest_m, p_R_ball.x());
   }
-  std::printf("power: %d of 1000 unfiltered placement draws reach into the body\n", inside);
-  EXPECT_LE(inside, 10);
+  EXPECT_LE(inside, 10) << "of 1000 unfiltered placement draws reach into the body";
   EXPECT_EQ(clearance.DepthInsideM(motion.p_R_ball), 0.0);
   // The test can fail: the ball 3 cm nearer, at the clip, touches the paw.
   EXPECT_GT(clearance.DepthInsideM(motion.p_R_ball - Vec2(0.031, 0.0)), 0.0);

@@ -62,9 +62,6 @@ TEST(OutputSetTest, AFileInsideAReportFolderBecomesOneOfItsFiles) {
               HasSubstr("sub-folders"));
 }
 
-// A disk that fills up while the set is staged (here a file-size limit, RLIMIT_FSIZE, as
-// `ulimit -f` sets it): no output is written, no temporary is left, and the message names the
-// user's path, not the temporary's.
 // An output may not name an input: a file that is one, or a report folder that is or holds one
 // (through a symbolic link too), in whichever order the two are declared.
 TEST(OutputSetTest, AnOutputThatIsOrHoldsAnInputIsRefused) {
@@ -107,6 +104,9 @@ TEST(OutputSetTest, AnOutputThatIsOrHoldsAnInputIsRefused) {
   }
 }
 
+// A disk that fills up while the set is staged (here a file-size limit, RLIMIT_FSIZE, as
+// `ulimit -f` sets it): no output is written, no temporary is left, and the message names the
+// user's path, not the temporary's.
 TEST(OutputSetTest, AFullDiskWritesNoOutputOfTheSetAndNamesTheUsersPath) {
   const fs::path dir = testing::FreshTempDir("full");
   const pid_t child = ::fork();
