@@ -15,6 +15,7 @@
 #include "report/output_set.h"
 #include "tools/motion_mirror.h"
 #include "tools/motion_search_output.h"
+#include "tools/tool_main.h"
 
 namespace foresight {
 namespace {
@@ -76,10 +77,5 @@ int Run(int argc, char** argv) {
 }  // namespace foresight
 
 int main(int argc, char** argv) {
-  try {
-    return foresight::Run(argc, argv);
-  } catch (const std::exception& e) {
-    std::cerr << "foresight_mirror_motion: " << e.what() << "\n";
-    return 2;
-  }
+  return foresight::ToolMain("foresight_mirror_motion", [&] { return foresight::Run(argc, argv); });
 }

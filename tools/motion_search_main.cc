@@ -16,6 +16,7 @@
 #include "report/output_set.h"
 #include "tools/motion_search.h"
 #include "tools/motion_search_output.h"
+#include "tools/tool_main.h"
 
 namespace foresight {
 namespace {
@@ -100,13 +101,5 @@ int Run(int argc, char** argv) {
 }  // namespace foresight
 
 int main(int argc, char** argv) {
-  try {
-    return foresight::Run(argc, argv);
-  } catch (const foresight::InputError& e) {
-    std::cerr << "foresight_motion_search: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "foresight_motion_search: " << e.what() << "\n";
-    return 2;
-  }
+  return foresight::ToolMain("foresight_motion_search", [&] { return foresight::Run(argc, argv); });
 }
