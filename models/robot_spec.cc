@@ -184,7 +184,7 @@ RobotSpec LoadRobotSpec(const std::filesystem::path& file) {
   const JsonObject root = doc.Root();
   root.RejectUnknownKeys(
       {"name", "urdf", "base_height_m", "standing_pose_deg", "kicks", "trial_variation", "motors",
-       "support_joints"});
+       "support_joints", "mirror_prefixes"});
   const std::filesystem::path dir = file.parent_path();
   const std::string where = file.string();
   RobotSpec spec;
@@ -225,6 +225,15 @@ RobotSpec LoadRobotSpec(const std::filesystem::path& file) {
   spec.variation.Validate(where);
   spec.motors = ReadMotorTable(root.Object("motors"));
   if (root.Has("support_joints")) spec.support_joints = root.StringArray("support_joints");
+  if (root.Has("mirror_prefixes")) {
+    const std::vector<std::string> prefixes = root.StringArray("mirror_prefixes");
+    if (prefixes.size() != 2 || prefixes[0].empty() || prefixes[1].empty() ||
+        prefixes[0] == prefixes[1]) {
+      root.Fail("mirror_prefixes", "must list two different non-empty prefixes, left then right");
+    }
+    spec.left_prefix = prefixes[0];
+    spec.right_prefix = prefixes[1];
+  }
   return spec;
 }
 
@@ -307,16 +316,25 @@ Robot LoadRobot(const std::string& name, const std::filesystem::path& models_dir
   robot.motors = JointMotors(robot.spec.motors, robot.model, spec_file.string());
   CheckSupportJoints(robot, spec_file.string());
   for (const auto& [kick_name, motion_file] : robot.spec.kick_motion_files) {
-    robot.motions.push_back(LoadKickMotion(motion_file));
-    const KickMotion& motion = robot.motions.back();
-    if (motion.name != kick_name) {
-      throw InputError(motion_file.string() + ": name: must be '" + kick_name + "' (the kick in " +
-                       spec_file.string() + "), got '" + motion.name + "'");
-    }
-    CheckMotion(motion, robot.model, robot.spec.variation.MaxSpeedFactor(), motion_file.string());
-    CheckBalance(robot, motion, motion_file.string());
+    robot.motions.push_back(LoadRobotKickMotion(robot, kick_name, motion_file));
   }
   return robot;
+}
+
+KickMotion LoadRobotKickMotion(const Robot& robot, const std::string& kick_name,
+                               const std::filesystem::path& file) {
+  KickMotion motion = LoadKickMotion(file);
+  if (motion.name != kick_name) {
+    throw InputError(file.string() + ": name: must be '" + kick_name + "' (the kick of robot '" +
+                     robot.spec.name + "'), got '" + motion.name + "'");
+  }
+  CheckRobotKickMotion(robot, motion, file.string());
+  return motion;
+}
+
+void CheckRobotKickMotion(const Robot& robot, const KickMotion& motion, const std::string& where) {
+  CheckMotion(motion, robot.model, robot.spec.variation.MaxSpeedFactor(), where);
+  CheckBalance(robot, motion, where);
 }
 
 }  // namespace foresight

@@ -41,6 +41,10 @@ struct RobotSpec {
   // legs, which carry the robot); the others are welded at the stance (a fixed base welds
   // every joint the motion does not move).
   std::vector<std::string> support_joints;
+  // Optional: the name prefixes of the left and the right side's joints ("L", "R" for the
+  // NAO's LHipRoll and RHipRoll), which pair them for mirroring a motion (tools/motion_mirror.h).
+  // Empty: the robot's motions cannot be mirrored.
+  std::string left_prefix, right_prefix;
 };
 
 RobotSpec LoadRobotSpec(const std::filesystem::path& file);
@@ -88,6 +92,15 @@ struct Robot {
 
 // Loads models_dir/robots/<name>/robot.json and everything it names.
 Robot LoadRobot(const std::string& name, const std::filesystem::path& models_dir);
+
+// Loads the motion of kick `kick_name` from `file` and checks it against `robot` as LoadRobot
+// checks the shipped ones (its name, joints, limits, speeds and weight shift); InputError
+// "FILE: FIELD: problem" otherwise. A motion search starts from such a file.
+KickMotion LoadRobotKickMotion(const Robot& robot, const std::string& kick_name,
+                               const std::filesystem::path& file);
+// The checks of LoadRobotKickMotion but the name's, on a motion made in memory; `where` begins
+// the message.
+void CheckRobotKickMotion(const Robot& robot, const KickMotion& motion, const std::string& where);
 
 // MODELS_DIR/robots/NAME/robot.json; InputError listing the robots there when NAME is none.
 std::filesystem::path RobotSpecFile(const std::string& name,

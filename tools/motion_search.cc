@@ -98,7 +98,7 @@ void Evaluate(const MotionSearchRun& run, Robot& robot, int motion_index, int ki
   }
   c.low_share = c.summary.touched > 0 ? static_cast<double>(low) / c.summary.touched : 0.0;
   if (static_cast<double>(c.summary.fell) > settings.constraints.max_fall_share * c.summary.trials ||
-      c.summary.max_tilt_rad > settings.constraints.max_tilt_rad) {
+      c.summary.max_tilt_rad > round.max_tilt_rad.value_or(settings.constraints.max_tilt_rad)) {
     c.refusal = Refusal::kBalance;
     return;
   }
@@ -200,9 +200,14 @@ std::unique_ptr<PhysicsSetup> LoadSearchSetup(const MotionSearchSettings& settin
                      situation.kicks_file.string() + " (one of: " + situation.kicks.Names() + ")");
   }
   auto setup = LoadPhysicsSetup(std::move(situation), models_dir, {}, settings.base);
-  if (!setup->robot.FindMotion(settings.kick)) {
+  const std::optional<int> motion_index = setup->robot.FindMotion(settings.kick);
+  if (!motion_index) {
     throw InputError(settings.file.string() + ": kick: robot '" + setup->robot.spec.name +
                      "' has no motion for kick '" + settings.kick + "'");
+  }
+  if (!settings.start_file.empty()) {
+    setup->robot.motions[static_cast<std::size_t>(*motion_index)] =
+        LoadRobotKickMotion(setup->robot, settings.kick, settings.start_file);
   }
   return setup;
 }

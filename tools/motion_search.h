@@ -1,12 +1,14 @@
 // A random search with refinement over one kick motion's keyframes and its weight shift, in the
-// project's physics: how every shipped motion was fitted, so that a team can fit motions to its
+// project's physics: how the NAO's shipped forward_long and side kicks were fitted (their
+// settings and start motions in models/motion_search/), so that a team can fit motions to its
 // own robot. Settings (seed, rounds, refusal rules, objective) come from a file
 // (tools/motion_search_settings.h).
 //
-// Round r draws its candidates around a centre: the robot's shipped motion in the first round,
-// the best candidate of the round before in the others. Candidate 0 of every round is the
-// centre unchanged (the baseline in the first round, the incumbent after it), scored again on
-// the round's own trials, and the candidates are ranked within their round only. Why: the best
+// Round r draws its candidates around a centre: the settings' start motion (or the robot's
+// shipped one) in the first round, the best candidate of the round before in the others.
+// Candidate 0 of every round is the centre unchanged (the baseline in the first round, the
+// incumbent after it), scored again on the round's own trials, and the candidates are ranked
+// within their round only. Why: the best
 // of many candidates scored on a few trials is the luckiest as often as the best (a candidate
 // at 1.583 m/s over 8 trials launched 1.480 over 200); ranked across rounds, it stayed "best so
 // far" and the later rounds, with more trials per candidate, centred on it. Scored again with
@@ -32,7 +34,8 @@
 //                         by the links around it can outrun what its target asks;
 //   refused for balance   when the robot falls while shifting its weight, or falls in more
 //                         than max_fall_share of its trials, or its torso tilts more than
-//                         max_tilt_deg in any of them (floating base);
+//                         max_tilt_deg (the round's own, if it names one) in any of them
+//                         (floating base);
 // and otherwise scored by the objective over `trials` physics trials (lower is better).
 //
 // Determinism: candidate c >= 1 of round r draws from StreamKey(seed, r * 2^20 + c, domain); the

@@ -16,6 +16,7 @@
 #include "report/output_set.h"
 #include "tools/motion_search.h"
 #include "tools/motion_search_output.h"
+#include "tools/tool_main.h"
 
 namespace foresight {
 namespace {
@@ -66,6 +67,7 @@ int Run(int argc, char** argv) {
   const auto setup = LoadSearchSetup(settings, models);
   OutputSet outputs;  // checked before the search, written as one commit after it
   outputs.AddInput("the settings file", args.settings);
+  if (!settings.start_file.empty()) outputs.AddInput("the start motion", settings.start_file);
   outputs.AddFolder("--out", args.out);
   MotionSearchRun run;
   run.settings = &settings;
@@ -76,9 +78,12 @@ int Run(int argc, char** argv) {
   };
   const MotionSearchResult result = RunMotionSearch(run);
   // Everything is made before anything is written.
+  // The motion files written keep everything but the keyframes and the shift from the start's.
   const int motion_index = *setup->robot.FindMotion(settings.kick);
   const std::filesystem::path start_file =
-      setup->robot.spec.kick_motion_files[static_cast<std::size_t>(motion_index)].second;
+      !settings.start_file.empty()
+          ? settings.start_file
+          : setup->robot.spec.kick_motion_files[static_cast<std::size_t>(motion_index)].second;
   std::vector<ReportFile> files = {{"search.json", SearchJson(settings, result).dump(2) + "\n"}};
   for (int k = 0; k < settings.keep && k < static_cast<int>(result.best.size()); ++k) {
     const SearchCandidate& c = result.candidates[static_cast<std::size_t>(result.best[k])];
@@ -96,13 +101,5 @@ int Run(int argc, char** argv) {
 }  // namespace foresight
 
 int main(int argc, char** argv) {
-  try {
-    return foresight::Run(argc, argv);
-  } catch (const foresight::InputError& e) {
-    std::cerr << "foresight_motion_search: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "foresight_motion_search: " << e.what() << "\n";
-    return 2;
-  }
+  return foresight::ToolMain("foresight_motion_search", [&] { return foresight::Run(argc, argv); });
 }

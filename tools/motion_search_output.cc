@@ -31,12 +31,14 @@ nlohmann::ordered_json KeyframesJson(const KickMotion& motion) {
   return keyframes;
 }
 
+nlohmann::ordered_json DegreesJson(const std::vector<std::pair<std::string, double>>& angles_rad) {
+  nlohmann::ordered_json degrees = nlohmann::ordered_json::object();
+  for (const auto& [name, angle_rad] : angles_rad) degrees[name] = Rounded(angle_rad * kRadToDeg, 4);
+  return degrees;
+}
+
 nlohmann::ordered_json OffsetsJson(const KickMotion& motion) {
-  nlohmann::ordered_json offsets = nlohmann::ordered_json::object();
-  for (const auto& [name, offset_rad] : motion.balance.offsets_rad) {
-    offsets[name] = Rounded(offset_rad * kRadToDeg, 4);
-  }
-  return offsets;
+  return DegreesJson(motion.balance.offsets_rad);
 }
 
 }  // namespace
@@ -128,14 +130,30 @@ nlohmann::ordered_json SearchJson(const MotionSearchSettings& settings,
   return j;
 }
 
-std::string MotionFileText(const std::filesystem::path& start_file, const KickMotion& motion) {
-  // Read as every data file is (a FIFO in its place is refused, not waited on); the search's
-  // setup read it strictly already, and ordered_json keeps its keys in the file's order.
+std::string MotionFileText(const std::filesystem::path& template_file, const KickMotion& motion) {
+  // Read as every data file is (a FIFO in its place is refused, not waited on); the caller read
+  // it strictly already, and ordered_json keeps its keys in the file's order.
   nlohmann::ordered_json j =
-      nlohmann::ordered_json::parse(ReadDataFile(start_file), nullptr, false);
-  if (j.is_discarded()) throw InputError(start_file.string() + ": not JSON");
+      nlohmann::ordered_json::parse(ReadDataFile(template_file), nullptr, false);
+  if (j.is_discarded()) throw InputError(template_file.string() + ": not JSON");
+  j["name"] = motion.name;
+  j["ball_x_m"] = motion.p_R_ball.x();
+  j["ball_y_m"] = motion.p_R_ball.y();
+  if (motion.stance.IsOwn()) {
+    j["stance"]["base_height_m"] = motion.stance.base_height_m;
+    j["stance"]["pose_deg"] = DegreesJson(motion.stance.pose_rad);
+  } else {
+    j.erase("stance");
+  }
+  if (motion.balance.Has()) {
+    j["balance"]["shift_s"] = motion.balance.shift_s;
+    j["balance"]["settle_s"] = motion.balance.settle_s;
+    j["balance"]["offsets_deg"] = OffsetsJson(motion);
+  } else {
+    j.erase("balance");
+  }
+  j["joints"] = motion.joints;
   j["keyframes"] = KeyframesJson(motion);
-  if (motion.balance.Has()) j["balance"]["offsets_deg"] = OffsetsJson(motion);
   return j.dump(2) + "\n";
 }
 

@@ -1,7 +1,7 @@
 // What the motion search prints and writes: a line per candidate for the terminal, the whole
 // search as JSON (every candidate's figures, the best ones' keyframes and balance), and the best
-// candidates as motion files in the shipped format (the start motion's file with its keyframes
-// and balance offsets replaced: notes, stance and ball placement as they were).
+// candidates as motion files in the shipped format (the start motion's file with the motion's
+// figures written over it, notes as they were).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -20,8 +20,10 @@ std::string RoundText(int round, const MotionSearchResult& result, int keep);
 nlohmann::ordered_json SearchJson(const MotionSearchSettings& settings,
                                   const MotionSearchResult& result);
 
-// The candidate as a motion file: `start_file`'s JSON with keyframes (degrees rounded to
-// 1e-4, times to 1e-6 s) and balance offsets replaced.
-std::string MotionFileText(const std::filesystem::path& start_file, const KickMotion& motion);
+// `motion` as a motion file in the layout of `template_file` (a motion file: the start motion of
+// a search, the file a mirror replaces): its notes and key order kept, every figure of the
+// motion written over it (name, ball spot, the stance's pose, the shift's offsets, joints and
+// keyframes; degrees rounded to 1e-4, times to 1e-6 s).
+std::string MotionFileText(const std::filesystem::path& template_file, const KickMotion& motion);
 
 }  // namespace foresight

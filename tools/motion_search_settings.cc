@@ -34,15 +34,31 @@ int IntegerIn(const JsonObject& obj, std::string_view key, int lo, int hi) {
   return value;
 }
 
+// A motion file named from the settings' folder; it must exist (its content is checked against
+// the robot when the search loads it).
+std::filesystem::path StartFile(const JsonObject& root, const std::filesystem::path& dir) {
+  const std::filesystem::path start = root.String("start");
+  if (start.empty() || start.extension() != ".json") {
+    root.Fail("start", "must be a motion file (.json), got '" + start.string() + "'");
+  }
+  const std::filesystem::path file = start.is_absolute() ? start : dir / start;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) {
+    root.Fail("start", "no motion file " + file.string());
+  }
+  return file;
+}
+
 SearchRound ReadRound(const JsonObject& obj) {
-  obj.RejectUnknownKeys(
-      {"candidates", "trials", "keyframe_sigma_deg", "time_sigma_rel", "balance_sigma_deg"});
+  obj.RejectUnknownKeys({"candidates", "trials", "keyframe_sigma_deg", "time_sigma_rel",
+                         "balance_sigma_deg", "max_tilt_deg"});
   SearchRound round;
   round.candidates = IntegerIn(obj, "candidates", 1, kMaxCandidates);
   round.trials = IntegerIn(obj, "trials", 1, kMaxTrials);
   round.keyframe_sigma_rad = NumberIn(obj, "keyframe_sigma_deg", 0.0, 90.0) * kDegToRad;
   round.time_sigma_rel = NumberIn(obj, "time_sigma_rel", 0.0, 0.5);
   round.balance_sigma_rad = NumberIn(obj, "balance_sigma_deg", 0.0, 45.0) * kDegToRad;
+  if (obj.Has("max_tilt_deg")) round.max_tilt_rad = NumberIn(obj, "max_tilt_deg", 0.0, 90.0) * kDegToRad;
   return round;
 }
 
@@ -83,8 +99,8 @@ MotionSearchSettings LoadMotionSearchSettings(const std::filesystem::path& file,
                                               const std::filesystem::path& models_dir) {
   const JsonDocument doc = JsonDocument::Load(file);
   const JsonObject root = doc.Root();
-  root.RejectUnknownKeys({"notes", "situation", "kicks", "kick", "base", "seed", "rounds",
-                          "constraints", "objective", "keep"});
+  root.RejectUnknownKeys({"notes", "situation", "kicks", "kick", "start", "base", "seed",
+                          "rounds", "constraints", "objective", "keep"});
   if (root.String("notes").empty()) root.Fail("notes", "must say why the numbers are what they are");
   MotionSearchSettings s;
   s.file = file;
@@ -96,6 +112,7 @@ MotionSearchSettings LoadMotionSearchSettings(const std::filesystem::path& file,
   }
   s.kick = root.String("kick");
   if (s.kick.empty()) root.Fail("kick", "must name a kick");
+  if (root.Has("start")) s.start_file = StartFile(root, dir);
   const std::string base = root.String("base");
   const std::optional<RobotBase> parsed = ParseRobotBase(base);
   if (!parsed) root.Fail("base", "must be one of " + RobotBaseList() + ", got '" + base + "'");

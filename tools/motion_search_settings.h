@@ -8,10 +8,12 @@
 //   "situation": "nao",              a calibration situation (models/calibration/<name>.json or a path)
 //   "kicks": "nao_calibrated",       optional: the kick model (models/kicks/<name>.json or a path)
 //   "kick": "forward_long",          the kick whose motion is searched
+//   "start": "start/x.json",         optional: the first round's centre, a motion file (a path
+//                                    from this file's folder); absent: the robot's shipped motion
 //   "base": "floating",              fixed | floating
 //   "seed": 1,
 //   "rounds": [{"candidates": 200, "trials": 20, "keyframe_sigma_deg": 8, "time_sigma_rel": 0.1,
-//               "balance_sigma_deg": 1}, ...],
+//               "balance_sigma_deg": 1, "max_tilt_deg": 22.5}, ...],   max_tilt_deg optional
 //   "constraints": {"min_clearance_m": 0.005, "max_speed_share": 1.0, "max_fall_share": 0.0,
 //                   "max_duration_s": 3.0, "max_tilt_deg": 22.5},   max_tilt_deg optional
 //   "objective": {"target_speed_mps": 1.6, "target_direction_deg": 0, ...},
@@ -38,6 +40,11 @@ struct SearchRound {
   double keyframe_sigma_rad = 0.0;  // per joint and inner keyframe, normal
   double time_sigma_rel = 0.0;      // per segment duration, relative, normal
   double balance_sigma_rad = 0.0;   // one draw added to every balance offset's magnitude
+  // Optional: this round's tilt refusal (SearchConstraints::max_tilt_rad) instead of the
+  // constraints'. A tilt refusal comes after a candidate's trials, so a limit in the last round
+  // only ranks the same candidates as the search without it, leaving out those that swayed:
+  // how the shipped side kicks were picked.
+  std::optional<double> max_tilt_rad;
 };
 
 // A candidate is refused (not scored) when it breaks one of these.
@@ -69,6 +76,7 @@ struct MotionSearchSettings {
   std::filesystem::path file;           // where they were read
   std::filesystem::path situation_file;  // resolved
   std::filesystem::path kicks_file;      // resolved; empty: the situation's
+  std::filesystem::path start_file;      // resolved; empty: the robot's shipped motion
   std::string kick;
   RobotBase base = RobotBase::kFloating;
   std::uint64_t seed = 1;

@@ -418,8 +418,8 @@ TEST(RobotSpecTest, MotionMustCarryItsKicksName) {
   const std::filesystem::path models = TesterModels(
       "motion_name", {"motions/side.json", "\"name\": \"side\"", "\"name\": \"forward\""});
   const std::filesystem::path motion = models / "robots" / "tester" / "motions" / "side.json";
-  EXPECT_EQ(RobotError(models), motion.string() + ": name: must be 'side' (the kick in " +
-                                    SpecFile(models).string() + "), got 'forward'");
+  EXPECT_EQ(RobotError(models),
+            motion.string() + ": name: must be 'side' (the kick of robot 'tester'), got 'forward'");
 }
 
 TEST(RobotSpecTest, NotesAreNotAJointOfTheStandingPose) {

@@ -252,11 +252,82 @@ TEST(MotionSearchTest, BadSettingsNameTheFileAndField) {
   EXPECT_THROW(LoadSearchSetup(settings, ModelsDir()), InputError);
 }
 
+// A start motion replaces the shipped one as the first round's centre, and a file that is not
+// the kick's motion is refused with its field.
+TEST(MotionSearchTest, AStartMotionIsTheFirstCentre) {
+  const std::filesystem::path shipped =
+      ModelsDir() / "robots" / "nao" / "motions" / "forward.json";
+  std::ifstream in(shipped);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The ball 1 mm nearer: a motion the robot does not ship.
+  const KickMotion original = LoadKickMotion(shipped);
+  nlohmann::ordered_json j = nlohmann::ordered_json::parse(text);
+  j["ball_x_m"] = original.p_R_ball.x() - 0.001;
+  const std::filesystem::path moved = WriteTempFile("start_forward.json", j.dump(2));
+  const std::string settings = testing::ReplaceOnce(
+      TinySettings(), R"("kick": "forward",)", R"("kick": "forward", "start": ")" + moved.string() + R"(",)");
+  const Search s = RunSearch(settings, 1);
+  EXPECT_EQ(s.settings.start_file, moved);
+  EXPECT_EQ(s.result.candidates[0].motion.p_R_ball.x(), original.p_R_ball.x() - 0.001);
+  // The files written take the start's layout and notes, with the candidate's figures.
+  const KickMotion written = LoadKickMotion(
+      WriteTempFile("start_best.json", MotionFileText(moved, s.result.candidates[0].motion)));
+  EXPECT_EQ(written.p_R_ball.x(), original.p_R_ball.x() - 0.001);
+
+  const auto setup_error = [](const std::string& text) {
+    try {
+      LoadSearchSetup(LoadMotionSearchSettings(WriteTempFile("start_search.json", text), ModelsDir()),
+                      ModelsDir());
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(setup_error(testing::ReplaceOnce(TinySettings(), R"("kick": "forward",)",
+                                             R"("kick": "forward", "start": "no_such_motion.json",)"))
+                .find("start: no motion file"),
+            std::string::npos);
+  const std::filesystem::path side = ModelsDir() / "robots" / "nao" / "motions" / "side_kick_left.json";
+  EXPECT_NE(setup_error(testing::ReplaceOnce(TinySettings(), R"("kick": "forward",)",
+                                             R"("kick": "forward", "start": ")" + side.string() + R"(",)"))
+                .find("name: must be 'forward' (the kick of robot 'nao'), got 'side_kick_left'"),
+            std::string::npos);
+}
+
+// A round's own tilt limit refuses in that round only, after the trials: the candidates are
+// drawn and played as without it, so the last round's limit only leaves the swaying ones out
+// of the ranking (how the shipped side kicks were picked).
+TEST(MotionSearchTest, ARoundsTiltLimitRefusesAfterTheTrialsInThatRoundOnly) {
+  const std::string free = TinySettings("floating");
+  const std::string limited = testing::ReplaceOnce(
+      free, R"("balance_sigma_deg": 0.5})", R"("balance_sigma_deg": 0.5, "max_tilt_deg": 0.001})");
+  const Search a = RunSearch(free, 2);
+  const Search b = RunSearch(limited, 2);
+  ASSERT_EQ(a.result.candidates.size(), b.result.candidates.size());
+  int refused = 0;
+  for (std::size_t i = 0; i < a.result.candidates.size(); ++i) {
+    const SearchCandidate& x = a.result.candidates[i];
+    const SearchCandidate& y = b.result.candidates[i];
+    EXPECT_EQ(x.summary.launch_speed_mean_mps, y.summary.launch_speed_mean_mps) << i;
+    EXPECT_EQ(x.summary.max_tilt_rad, y.summary.max_tilt_rad) << i;
+    if (x.round == 0 || x.refusal != Refusal::kNone) {
+      EXPECT_EQ(x.refusal, y.refusal) << i;
+    } else {
+      EXPECT_EQ(y.refusal, Refusal::kBalance) << i;  // every robot tilts a little
+      ++refused;
+    }
+  }
+  EXPECT_GT(refused, 0);
+  // All of the last round refused: the ranking is the first round's, as the file says.
+  for (int index : b.result.best) EXPECT_EQ(b.result.candidates[index].round, 0);
+}
+
 // Every shipped settings file (models/motion_search/) loads and sets up its search (the setup
-// refuses a kick its robot has no motion for).
+// refuses a kick its robot has no motion for, and checks a start motion as a shipped one).
 TEST(MotionSearchTest, EveryShippedSettingsFileLoads) {
   int files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(ModelsDir() / "motion_search")) {
+    if (!entry.is_regular_file()) continue;  // start/ holds the searches' start motions
     const MotionSearchSettings settings = LoadMotionSearchSettings(entry.path(), ModelsDir());
     EXPECT_NO_THROW(LoadSearchSetup(settings, ModelsDir())) << entry.path();
     ++files;
