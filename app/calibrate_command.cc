@@ -9,6 +9,7 @@
 #include "app/shard_output.h"
 #include "app/variation_fit_output.h"
 #include "common/error.h"
+#include "common/input_log.h"
 #include "models/model_paths.h"
 #include "models/robot_spec.h"
 #include "report/atomic_file.h"
@@ -145,6 +146,17 @@ OutputSet CalibrationOutputs(const CalibrateOptions& options) {
   return outputs;
 }
 
+// The kick model the calibration starts from (--kicks, or the robot's shipped one). --out may
+// replace it although the run reads it: a model recalibrated on itself (docs/PHYSICS.md).
+std::filesystem::path BaseKicksFile(const CalibrateOptions& options,
+                                    const std::filesystem::path& models) {
+  const std::filesystem::path file = options.kicks_file.empty()
+                                         ? DataFile(models, DataFolder::kKicks, options.robot)
+                                         : std::filesystem::path(options.kicks_file);
+  InputLog::Allow(file);
+  return file;
+}
+
 std::string ModelNotes(const CalibrationRun& run) {
   std::string kicks;
   for (const CalibratedKick& k : run.kicks) kicks += (kicks.empty() ? "" : ", ") + k.fit.kick;
@@ -206,9 +218,7 @@ int RunVariationFit(const CalibrateOptions& options, const std::filesystem::path
   if (options.from_csv.empty()) throw InputError("--fit-variation: needs --from-csv LOG");
   if (!options.report_dir.empty()) throw InputError("--report: not with --fit-variation");
   OutputSet outputs = CalibrationOutputs(options);
-  const KickModel base = LoadKickModel(options.kicks_file.empty()
-                                           ? DataFile(models, DataFolder::kKicks, options.robot)
-                                           : std::filesystem::path(options.kicks_file));
+  const KickModel base = LoadKickModel(BaseKicksFile(options, models));
   ObservedKicks observed = ReadObservedKicks(options.from_csv, base.rolling_deceleration_mps2);
   CheckObservedKicks(observed, base, options.from_csv);
   // Rest-only rows' speeds with the log's own deceleration, as calibrate fits it.
@@ -258,9 +268,7 @@ CalibrationRun CalibrateInMemory(const CalibrateOptions& options,
   run.settings.seed = run.provenance.seed;
   run.settings.confidence = ParseNumber("--confidence", options.confidence, 0.5, 0.999);
   run.settings.resamples = ParseCount("--resamples", options.resamples, 100, 100000);
-  const std::filesystem::path base_file = options.kicks_file.empty()
-                                              ? DataFile(models, DataFolder::kKicks, options.robot)
-                                              : std::filesystem::path(options.kicks_file);
+  const std::filesystem::path base_file = BaseKicksFile(options, models);
   run.base = LoadKickModel(base_file);
   if (run.base.robot != options.robot) {
     throw InputError(base_file.string() + ": robot: the kick model is for '" + run.base.robot +

@@ -4,6 +4,7 @@
 #include <new>
 
 #include "common/error.h"
+#include "common/input_log.h"
 #include "common/one_line.h"
 #include "models/model_paths.h"
 
@@ -85,6 +86,7 @@ std::optional<int> ParseCommandLine(CLI::App& app, int argc, char** argv) {
 
 int RunReportingErrors(const std::function<int()>& command) {
   try {
+    const InputLog read;  // no output may replace a file the command read
     return command();
   } catch (const InputError& e) {
     return FailBadInput(e.what());

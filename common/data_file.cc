@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "common/error.h"
+#include "common/input_log.h"
 
 namespace foresight {
 
@@ -49,6 +50,7 @@ std::string ReadDataFile(const std::filesystem::path& file, std::uintmax_t max_b
     }
   }
   ::close(fd);
+  InputLog::Record(file);
   return text;
 }
 

@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "common/error.h"
+#include "common/input_log.h"
 #include "report/atomic_file.h"
 #include "report/signal_guard.h"
 #include "report/temporary_name.h"
@@ -118,6 +119,7 @@ void OutputSet::AddFolder(const std::string& flag, const fs::path& dir) {
     }
   }
   for (const Input& input : inputs_) RequireNotInput(*output, input);
+  RequireNoneRead(*output);
   CheckReportFolder(dir, flag);
   outputs_.push_back(std::move(output));
 }
@@ -140,6 +142,7 @@ void OutputSet::AddFile(const std::string& flag, const fs::path& file) {
     }
   }
   for (const Input& input : inputs_) RequireNotInput(*output, input);
+  RequireNoneRead(*output);
   if (!output->member_of) output->file = LocateOutputFile(file, output->Shown());
   outputs_.push_back(std::move(output));
 }
@@ -157,6 +160,22 @@ void OutputSet::RequireNotInput(const Output& output, const Input& input) const 
   throw InputError(output.Shown() + (is ? " is " : " holds ") + input.what + " " +
                    input.path.string() +
                    ", which the output would replace; write the output elsewhere");
+}
+
+void OutputSet::RequireNoneRead(const Output& output) const {
+  for (const fs::path& file : InputLog::Files()) {
+    const fs::path key = KeyOf(file);
+    if (output.key == key) {
+      throw InputError(output.Shown() +
+                       " is a file this run read, which the output would replace; write the "
+                       "output elsewhere");
+    }
+    if (output.folder && Inside(key, output.key)) {
+      throw InputError(output.Shown() + " holds " + file.string() +
+                       ", a file this run read, which the output would replace; write the "
+                       "output elsewhere");
+    }
+  }
 }
 
 bool OutputSet::Has(const std::string& flag) const {
@@ -185,6 +204,8 @@ void OutputSet::Put(const std::string& flag, std::vector<ReportFile> files) {
 
 void OutputSet::Commit() {
   std::vector<Output*> files, folders, streams;
+  // Files read after the outputs were declared (the work reads some) are checked now.
+  for (const auto& output : outputs_) RequireNoneRead(*output);
   for (const auto& output : outputs_) {
     if (!(output->folder ? output->files.has_value() : output->content.has_value())) {
       throw std::logic_error("OutputSet: no content for " + output->Shown());

@@ -8,7 +8,9 @@
 // Two outputs may not be one path, and a file inside a report folder becomes one of its files.
 // An output may not name one of the command's inputs declared with AddInput (the input file
 // itself, or a report folder that holds it, would be replaced), in whichever order they are
-// declared.
+// declared, nor any data file the run has read while an InputLog is open (common/input_log.h:
+// a situation's kick model, an experiment's --params), checked when the output is declared and
+// again at Commit for the files read since.
 //
 // Commit() then writes the set: every regular file and folder is first staged as a temporary
 // beside its target (a disk that fills up fails here, and the message names the user's path),
@@ -58,6 +60,7 @@ class OutputSet {
   struct Input;
   Output& Find(const std::string& flag);
   void RequireNotInput(const Output& output, const Input& input) const;
+  void RequireNoneRead(const Output& output) const;  // common/input_log.h
   std::vector<std::unique_ptr<Output>> outputs_;
   std::vector<Input> inputs_;
 };

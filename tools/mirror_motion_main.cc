@@ -11,6 +11,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "common/input_log.h"
 #include "models/model_paths.h"
 #include "report/output_set.h"
 #include "tools/motion_mirror.h"
@@ -56,6 +57,7 @@ Arguments Parse(int argc, char** argv) {
 int Run(int argc, char** argv) {
   const Arguments args = Parse(argc, argv);
   const std::filesystem::path models = args.models.empty() ? DefaultModelsDir() : args.models;
+  InputLog::Allow(args.like);  // --out may be the --like file (which the robot reads too)
   const Robot robot = LoadRobot(args.robot, models);
   OutputSet outputs;  // checked before anything is made
   outputs.AddInput("--in", args.in);

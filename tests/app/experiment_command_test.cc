@@ -137,6 +137,21 @@ TEST_F(ExperimentCommandTest, BadInputIsOneLineExitTwoAndNoFolder) {
   ExpectBadInput({"strategies", "--kicks", "missing.json", "--out", "out"}, "missing.json");
 }
 
+// No output may replace a file the run read: --params kept in the report folder it would
+// replace is refused before the work, and the folder and the file stay as they were.
+TEST_F(ExperimentCommandTest, AnOutputHoldingAFileTheRunReadIsRefused) {
+  ASSERT_EQ(Experiment({"stability", "--params", TinyStability().string(), "--out", "out"}).exit_code, 0);
+  const std::string before = ReadFile(work() / "out" / "stability.json");
+  fs::copy_file(TinyStability(), work() / "out" / "mine.json");
+  const RunResult r = Experiment({"stability", "--params", "out/mine.json", "--out", "out"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("--out: out holds "));
+  EXPECT_THAT(r.err, HasSubstr("mine.json, a file this run read, which the output would replace"));
+  EXPECT_EQ(CountOf(r.err, "\n"), 1) << r.err;
+  EXPECT_EQ(ReadFile(work() / "out" / "stability.json"), before);
+  EXPECT_TRUE(fs::exists(work() / "out" / "mine.json"));
+}
+
 TEST_F(ExperimentCommandTest, PassingWritesJsonCsvEventsAndFigures) {
   const RunResult r = Experiment({"passing", "--config", "dg", "--scenarios", "3-4", "--trials",
                                   "6", "--threads", "2", "--out", "out"});

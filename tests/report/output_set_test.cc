@@ -16,7 +16,9 @@
 #include <thread>
 #include <vector>
 
+#include "common/data_file.h"
 #include "common/error.h"
+#include "common/input_log.h"
 #include "tests/support/model_test_util.h"
 
 namespace foresight {
@@ -60,6 +62,41 @@ TEST(OutputSetTest, AFileInsideAReportFolderBecomesOneOfItsFiles) {
   nested.AddFolder("--report", dir);
   EXPECT_THAT(ErrorOf([&] { nested.AddFile("--out", dir / "sub" / "model.json"); }),
               HasSubstr("sub-folders"));
+}
+
+// With an InputLog open, no output may replace a file the run read: declared after the read,
+// it is refused at once; read after the outputs were declared, the commit refuses it and
+// writes nothing. An allowed file may be replaced.
+TEST(OutputSetTest, AFileTheRunReadIsRefusedWhenDeclaredOrAtCommit) {
+  const fs::path dir = testing::FreshTempDir("read_inputs");
+  { std::ofstream(dir / "params.json") << "{}"; }
+  WriteReportFolder(dir / "report", std::vector<ReportFile>{{"old.html", "x"}}, "--out");
+  { std::ofstream(dir / "report" / "cases.json") << "{}"; }  // a user's file in the report
+  const InputLog log;
+  ReadDataFile(dir / "params.json");
+  OutputSet early;
+  EXPECT_EQ(ErrorOf([&] { early.AddFile("--out", dir / "params.json"); }),
+            "--out: " + (dir / "params.json").string() +
+                " is a file this run read, which the output would replace; write the output "
+                "elsewhere");
+  OutputSet late;
+  late.AddFolder("--out", dir / "report");
+  late.Put("--out", std::vector<ReportFile>{{"index.html", "x"}});
+  ReadDataFile(dir / "report" / "cases.json");
+  EXPECT_EQ(ErrorOf([&] { late.Commit(); }),
+            "--out: " + (dir / "report").string() + " holds " +
+                (dir / "report" / "cases.json").string() +
+                ", a file this run read, which the output would replace; write the output "
+                "elsewhere");
+  EXPECT_FALSE(fs::exists(dir / "report" / "index.html"));
+  EXPECT_TRUE(fs::exists(dir / "report" / "old.html"));
+  InputLog::Allow(dir / "params.json");
+  OutputSet allowed;
+  allowed.AddFile("--out", dir / "params.json");
+  allowed.Put("--out", std::string("{\"new\": 1}"));
+  allowed.Commit();
+  std::ifstream in(dir / "params.json");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "{\"new\": 1}");
 }
 
 // An output may not name an input: a file that is one, or a report folder that is or holds one
