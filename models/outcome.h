@@ -26,9 +26,7 @@ enum class Contact : std::uint8_t { kNone, kPost, kNet, kObstacle, kRobot };
 inline constexpr int kContactCount = 5;
 
 // Whether the outcome is what the action asked for. A physics trial can go wrong in ways the
-// coarse model cannot: the robot's foot missed the ball (it then lies where it was; also when a
-// robot standing on its own feet could not take its stance because a post, net or robot stands
-// there, and the kick was not played: physics/phases.h), the
+// coarse model cannot: the robot's foot missed the ball (it then lies where it was), the
 // ball did not come to rest within the time limit (it is reported where it was then), or the
 // robot, standing on its own feet, fell during the kick (the ball is reported where it rested). Such
 // outcomes still count as what physically happened; the status lets a reader count them.
