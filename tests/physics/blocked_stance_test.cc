@@ -7,6 +7,8 @@
 // post).
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "common/geometry.h"
 #include "common/random.h"
 #include "models/kick_model.h"
@@ -42,19 +44,23 @@ class BlockedStanceTest : public ::testing::Test {
     data_ = testing::LoadPhysicsFixture("spl", false, "nao");
     kicks_ = LoadKickModel(testing::ModelsDir() / "kicks" / "nao_calibrated.json");
   }
+  // The kick with the ball at `offset_from_post_m` from the post, on `base`.
+  std::pair<Kick, TrialResult> Play(RobotBase base, const Vec2& offset_from_post_m,
+                                    std::uint64_t trial) {
+    data_->params.robot.base = base;
+    const PhysicsSimulator simulator(testing::SceneOf(*data_), kicks_);
+    const Kick k = AtThePost(data_->field, kicks_, offset_from_post_m, StreamKey(29, trial));
+    return {k, simulator.Run(k.state, k.action, false)};
+  }
   std::unique_ptr<testing::PhysicsFixtureData> data_;
   KickModel kicks_;
 };
 
 TEST_F(BlockedStanceTest, AStanceInsideAPostIsBlockedNotAFall) {
-  data_->params.robot.base = RobotBase::kFloating;
-  const PhysicsSimulator simulator(testing::SceneOf(*data_), kicks_);
-  const Vec2 beside_post(-0.066, -0.102);
   for (std::uint64_t trial = 0; trial < 4; ++trial) {
-    const Kick k = AtThePost(data_->field, kicks_, beside_post, StreamKey(29, trial));
-    const TrialResult r = simulator.Run(k.state, k.action, false);
+    const auto [k, r] = Play(RobotBase::kFloating, Vec2(-0.066, -0.102), trial);
     // The placement error (1 cm sigma) moves the stance by less than it overlaps (1.5-3.3 cm in
-    // the experiment's nine trials at this pose).
+    // the experiment's nine trials at this pose); without the check all four trials fall.
     EXPECT_TRUE(r.blocked) << "trial " << trial;
     EXPECT_GT(r.stance_overlap_m, 0.005) << "trial " << trial;
     EXPECT_FALSE(r.fell);
@@ -66,11 +72,8 @@ TEST_F(BlockedStanceTest, AStanceInsideAPostIsBlockedNotAFall) {
 }
 
 TEST_F(BlockedStanceTest, TheSameKickClearOfThePostIsPlayed) {
-  data_->params.robot.base = RobotBase::kFloating;
-  const PhysicsSimulator simulator(testing::SceneOf(*data_), kicks_);
   // 40 cm further into the field: nothing stands where the robot must.
-  const Kick k = AtThePost(data_->field, kicks_, Vec2(-0.466, -0.102), StreamKey(29, 0));
-  const TrialResult r = simulator.Run(k.state, k.action, false);
+  const TrialResult r = Play(RobotBase::kFloating, Vec2(-0.466, -0.102), 0).second;
   EXPECT_FALSE(r.blocked);
   EXPECT_EQ(r.stance_overlap_m, 0.0);
   EXPECT_FALSE(r.fell);
@@ -81,10 +84,7 @@ TEST_F(BlockedStanceTest, TheSameKickClearOfThePostIsPlayed) {
 TEST_F(BlockedStanceTest, AFixedBaseRobotPassesThroughThePost) {
   // The fixed base's documented approximation: its robot touches only the ball, so its stance is
   // never blocked (and it kicks through the post).
-  data_->params.robot.base = RobotBase::kFixed;
-  const PhysicsSimulator simulator(testing::SceneOf(*data_), kicks_);
-  const Kick k = AtThePost(data_->field, kicks_, Vec2(-0.066, -0.102), StreamKey(29, 0));
-  const TrialResult r = simulator.Run(k.state, k.action, false);
+  const TrialResult r = Play(RobotBase::kFixed, Vec2(-0.066, -0.102), 0).second;
   EXPECT_FALSE(r.blocked);
   EXPECT_EQ(r.stance_overlap_m, 0.0);
   EXPECT_TRUE(r.touched);
