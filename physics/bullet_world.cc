@@ -4,9 +4,9 @@
 #include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
-
 #include <LinearMath/btAlignedAllocator.h>
 
+#include <algorithm>
 #include <cassert>
 #include <cstdlib>
 #include <mutex>
@@ -100,6 +100,46 @@ class ContactDispatcher final : public btCollisionDispatcher {
 };
 
 }  // namespace
+
+namespace {
+
+// The deepest overlap among the contacts a pair test reports (negative distances).
+struct DeepestOverlap final : btCollisionWorld::ContactResultCallback {
+  double depth_m = 0.0;
+  btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper*, int, int,
+                           const btCollisionObjectWrapper*, int, int) override {
+    depth_m = std::max(depth_m, -static_cast<double>(point.getDistance()));
+    return 0;
+  }
+};
+
+bool IsStaticObstruction(BodyTag tag) {
+  return tag == BodyTag::kPost || tag == BodyTag::kNet || tag == BodyTag::kObstacle;
+}
+
+}  // namespace
+
+double KickerStaticOverlapM(btCollisionWorld& world) {
+  std::vector<btCollisionObject*> kicker, statics;
+  btCollisionObjectArray& objects = world.getCollisionObjectArray();
+  for (int i = 0; i < objects.size(); ++i) {
+    btCollisionObject* object = objects[i];
+    const btBroadphaseProxy* proxy = object->getBroadphaseHandle();
+    if (TagOf(*object) == BodyTag::kKicker && proxy != nullptr &&
+        (proxy->m_collisionFilterMask & kGroupStatic) != 0) {
+      kicker.push_back(object);
+    } else if (IsStaticObstruction(TagOf(*object))) {
+      statics.push_back(object);
+    }
+  }
+  // Pair tests, not the world's collision pass: they leave the world's contact caches as they
+  // were, so a trial whose robot stands clear steps exactly as without the test.
+  DeepestOverlap deepest;
+  for (btCollisionObject* link : kicker) {
+    for (btCollisionObject* body : statics) world.contactPairTest(link, body, deepest);
+  }
+  return deepest.depth_m;
+}
 
 void MakeStriking(btCollisionObject& object, const Material* robot_contact) {
   // Bullet has one process-wide hook; it is set once, to a function without state, before any

@@ -29,12 +29,12 @@ BodyTag TagOf(const btCollisionObject& object);
 // What the ball bounces off (posts, nets, robots: everything but the carpet) gets no speculative
 // contacts (for statics through this function; for the ball's pairs with the kicking robot
 // through the world's dispatcher, ContactDispatcher in bullet_world.cc, so that the robot's
-// own soles stay speculative on the carpet). Bullet otherwise reports a contact while a gap remains and aims at a separation
-// speed e*v - gap/dt, so the ball arrives too slowly to bounce (restitution lost, or random with
-// where in the step the contact falls). Such contacts are solved once the bodies overlap; the
-// roll's time steps keep the overlap small (physics_scene.h, RollTimeStep). A pair's threshold
-// is the smaller of its bodies', so the carpet keeps Bullet's default and the ball rests on it
-// without falling in and out of contact every step.
+// own soles stay speculative on the carpet). Bullet otherwise reports a contact while a gap remains
+// and aims at a separation speed e*v - gap/dt, so the ball arrives too slowly to bounce
+// (restitution lost, or random with where in the step the contact falls). Such contacts are solved
+// once the bodies overlap; the roll's time steps keep the overlap small (physics_scene.h,
+// RollTimeStep). A pair's threshold is the smaller of its bodies', so the carpet keeps Bullet's
+// default and the ball rests on it without falling in and out of contact every step.
 void MakeContactsNonSpeculative(btCollisionObject& object);
 
 // The kicking robot's links strike the ball. Bullet's multibody contacts have no split impulse:
@@ -45,9 +45,10 @@ void MakeContactsNonSpeculative(btCollisionObject& object);
 // strike. Their other contacts (a robot standing on its own feet) keep Bullet's Baumgarte
 // correction, and with the carpet speculative contacts, which hold a sole resting on it (the
 // other statics, posts, nets and obstacles, are made non-speculative for the ball, AddStatic,
-// and Bullet takes the pair's smaller threshold, so the robot's contacts with them are too) (without them a standing NAO crept 16 mm and tilted 2.8 deg in 2 s),
-// and get the friction and restitution of `robot_contact`, which must outlive the world's
-// steps (models/physics_params.h, RobotContactParams).
+// and Bullet takes the pair's smaller threshold, so the robot's contacts with them are too)
+// (without them a standing NAO crept 16 mm and tilted 2.8 deg in 2 s), and get the friction and
+// restitution of `robot_contact`, which must outlive the world's steps (models/physics_params.h,
+// RobotContactParams).
 struct Material;
 void MakeStriking(btCollisionObject& object, const Material* robot_contact = nullptr);
 
@@ -58,6 +59,13 @@ enum CollisionGroup : int {
   kGroupBall = 1 << 1,
   kGroupKicker = 1 << 2,
 };
+
+// How deep the kicking robot, as its colliders stand now, reaches into a post, net or obstacle
+// robot (metres; 0 when clear). Only colliders that collide with statics count (a floating
+// robot's; a fixed-base robot passes through them). A robot created overlapping a static body is
+// thrown out of it by the contact solver in its first step (several N s), which no real robot
+// standing there could survive or would be in: it could not have got there.
+double KickerStaticOverlapM(btCollisionWorld& world);
 
 struct Material {
   double restitution = 0.0;

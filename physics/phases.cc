@@ -57,12 +57,19 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
     if (settled != nullptr) robot.Restore(settled->state, pose_F_root);
     robot.ShiftWeight(motion, motion.balance.shift_s);  // held through the motion
   }
+  PhaseEnd end;
+  end.ball = ball_start;
+  end.stance_overlap_m = KickerStaticOverlapM(world.world());
+  if (end.stance_overlap_m > 0.0) {
+    end.blocked = true;
+    if (recorder != nullptr)
+      recorder->ObserveKick(0.0, 0.0, robot, ball, *world.world().getDispatcher());
+    return end;
+  }
   const double motion_end_s = motion.DurationS() / speed_factor;
   // A floating robot must still stand this long after its motion.
   const double stand_end_s = motion_end_s + (floating ? motion.balance.settle_s : 0.0);
   const double deceleration = scene.params.carpet.rolling_deceleration_mps2;
-  PhaseEnd end;
-  end.ball = ball_start;
   double last_touch_s = 0.0;
   bool struck = false;
   // The kick phase ends by max_kick_time_s; a floating robot is watched on until it has stood

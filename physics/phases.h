@@ -34,6 +34,11 @@ struct PhaseEnd {
   bool touched = false;   // kick: the robot touched the ball
   bool launched = false;  // kick: it left the robot and rolls without sliding
   bool fell = false;      // kick: the robot's torso tilted past the fall tilt (floating base)
+  // kick: the robot could not take its stance, a post, net or obstacle robot standing where it
+  // must (floating base; KickerStaticOverlapM, bullet_world.h): the motion was not played and
+  // the ball lies untouched.
+  bool blocked = false;
+  double stance_overlap_m = 0.0;  // kick: how deep the stance reached into them
   double t_first_touch_s = 0.0;
   // kick: the strike, the first step in which the robot's touch gave the ball a launch's speed
   // (one that would roll it min_launch_roll_m: slower, a touch is a graze); the first touch if
@@ -55,8 +60,7 @@ using RollStepObserver =
     std::function<void(btDispatcher& dispatcher, const btCollisionObject& ball)>;
 
 PhaseEnd RunRollPhase(const PhysicsScene& scene, const Carpet& carpet, const BallState& ball,
-                      double t_start_s, BallMonitor& monitor,
-                      const RollStepObserver& observer = {},
+                      double t_start_s, BallMonitor& monitor, const RollStepObserver& observer = {},
                       SceneRecorder* recorder = nullptr);
 
 }  // namespace foresight

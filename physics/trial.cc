@@ -100,6 +100,8 @@ TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request) 
   result.touched = kick.touched;
   result.launched = kick.launched;
   result.fell = kick.fell;
+  result.blocked = kick.blocked;
+  result.stance_overlap_m = kick.stance_overlap_m;
   result.max_tilt_rad = kick.max_tilt_rad;
   const double t_zero = kick.touched ? kick.t_first_touch_s : kick.t_s;
   result.t_first_touch_s = t_zero;

@@ -49,7 +49,11 @@ struct TrialResult {
   bool launched = false;  // ... and it left the foot rolling without sliding within the kick phase
   bool settled = false;   // it came to rest within the time limit
   bool fell = false;      // the robot fell during the kick (floating base)
-  double max_tilt_rad = 0.0;  // the robot torso's largest tilt in the kick (floating base)
+  // The robot could not take its stance: a post, net or obstacle robot stood where it must
+  // (floating base). The motion was not played; the ball lies untouched (status missed).
+  bool blocked = false;
+  double stance_overlap_m = 0.0;  // how deep the stance reached into them
+  double max_tilt_rad = 0.0;      // the robot torso's largest tilt in the kick (floating base)
   // The launch: the ball's speed and direction once it rolls freely after the kick. The
   // direction is in the intended robot frame (the robot's heading after the turn around the
   // ball, before the placement error), so placement errors show up in it as they would on a
@@ -57,12 +61,12 @@ struct TrialResult {
   double launch_speed_mps = 0.0;
   double launch_direction_rad = 0.0;
   Vec2 p_F_launch{0.0, 0.0};
-  double t_launch_s = 0.0;        // since the first touch
-  double t_first_touch_s = 0.0;   // since the motion's start (the trace's clock)
+  double t_launch_s = 0.0;       // since the first touch
+  double t_first_touch_s = 0.0;  // since the motion's start (the trace's clock)
   // The strike, when the robot's touch gave the ball a launch's speed (an earlier graze that left
   // it nearly at rest is the first touch, not the strike; physics/phases.h), on the same clock.
   double t_strike_s = 0.0;
-  std::vector<TracePoint> trace;  // filled on request; times since the motion's start
+  std::vector<TracePoint> trace;    // filled on request; times since the motion's start
   std::optional<SceneTrace> scene;  // the whole scene for the viewer, on request
 };
 
