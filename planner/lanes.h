@@ -16,7 +16,7 @@
 #include <cmath>
 #include <cstdint>
 
-#if defined(__SSE4_1__)
+#if defined(__AVX__)
 #include <immintrin.h>
 #endif
 
@@ -139,15 +139,16 @@ inline void StoreMask(LaneMask v, std::int64_t* p) {
 }
 
 // RoundToInt (common/fast_math.h) in lanes: nearest integer, ties away from zero, by the same
-// truncation: a rounding towards zero from SSE4.1 on, a conversion to 32-bit integers and back on
-// SSE2 (valid for |x| < 2^31; the callers' arguments stay below 10^5). The rounding gives -0.0
+// truncation: a rounding towards zero with AVX, a conversion to 32-bit integers and back with SSE
+// (valid for |x| < 2^31; the callers' arguments stay below 10^5). The rounding gives -0.0
 // where the conversion gives +0.0 (for x in (-0.5, 0)); every caller multiplies it by a constant
 // and subtracts it from x, or takes its integer bits after adding 1.5 * 2^52, which gives the
 // same bits either way.
 inline Lanes RoundToIntLanes(Lanes x) {
   const Lanes shifted = x + Select(x >= 0.0, Broadcast(0.5), Broadcast(-0.5));
-  // The conversion truncates; where the target rounds doubles towards zero in one instruction
-  // (SSE4.1 on), that gives the same integral double without the trip through integers.
+  // The conversion truncates; with AVX a rounding towards zero gives the same integral double in
+  // one instruction (the conversion of 4 or 8 lanes to 32-bit integers and back takes five;
+  // with 2 lanes it takes two, as fast as the rounding).
 #if defined(__AVX512F__)
   // The zero-masked form: GCC's unmasked one warns of an undefined source operand.
   return reinterpret_cast<Lanes>(_mm512_maskz_roundscale_pd(
@@ -155,9 +156,6 @@ inline Lanes RoundToIntLanes(Lanes x) {
 #elif defined(__AVX__)
   return reinterpret_cast<Lanes>(
       _mm256_round_pd(reinterpret_cast<__m256d>(shifted), _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC));
-#elif defined(__SSE4_1__)
-  return reinterpret_cast<Lanes>(
-      _mm_round_pd(reinterpret_cast<__m128d>(shifted), _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC));
 #else
   using LaneInts = std::int32_t __attribute__((vector_size(kLanes * sizeof(std::int32_t))));
   return __builtin_convertvector(__builtin_convertvector(shifted, LaneInts), Lanes);

@@ -225,7 +225,7 @@ TEST(LanesTest, GatherAnyAndAll) {
 }
 
 TEST(LanesTest, RoundingTiesGoAwayFromZeroAsTheScalarOne) {
-  // -0.25 and -1e-300: rounded to -0.0 by the SSE4.1 rounding, +0.0 by the conversion; alike here.
+  // -0.25 and -1e-300: rounded to -0.0 by the AVX rounding, +0.0 by the conversion; alike here.
   for (double x : {0.5, -0.5, 1.5, -1.5, 2.5, -2.5, 1e6 + 0.5, -3.0, 0.49999999999999994, -0.25,
                    -1e-300}) {
     const Lanes rounded = RoundToIntLanes(Broadcast(x));
