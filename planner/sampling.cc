@@ -75,7 +75,9 @@ void DrawSampleGroupsVector(const StateEstimate& estimate, std::uint64_t seed, s
                             int groups, SampleLanes* out) {
   assert(groups <= kDrawGroups);
   LaneBits stream[kDrawGroups];
-  Lanes normal[kDrawGroups][kSampleNormals];
+  // Plain doubles, not Lanes: a missed normal is written through its address (Clang gives no
+  // address of a vector's element).
+  alignas(64) double normal[kDrawGroups][kSampleNormals][kLanes];
   LaneBits bits[kDrawGroups][kSampleNormals];
   // Bit k kLanes + l: normal k of lane l missed its rectangle (7 kLanes <= 56 bits).
   std::uint64_t misses[kDrawGroups];
@@ -86,8 +88,8 @@ void DrawSampleGroupsVector(const StateEstimate& estimate, std::uint64_t seed, s
     misses[g] = 0;
     for (int k = 0; k < kSampleNormals; ++k) {
       LaneMask fast = BroadcastMask(-1);
-      normal[g][k] =
-          IndexedNormalFastLanes(stream[g], static_cast<std::uint64_t>(k), &bits[g][k], fast);
+      Store(IndexedNormalFastLanes(stream[g], static_cast<std::uint64_t>(k), &bits[g][k], fast),
+            normal[g][k]);
       misses[g] |= static_cast<std::uint64_t>(MaskBits(~fast)) << (k * kLanes);
     }
   }
@@ -102,7 +104,11 @@ void DrawSampleGroupsVector(const StateEstimate& estimate, std::uint64_t seed, s
   }
   // ... then the misses of all groups together.
   if (missed_count > 0) FinishMissedNormals(missed, missed_count);
-  for (int g = 0; g < groups; ++g) out[g] = PlaceSampleLanes(estimate, stream[g], normal[g]);
+  for (int g = 0; g < groups; ++g) {
+    Lanes z[kSampleNormals];
+    for (int k = 0; k < kSampleNormals; ++k) z[k] = Load(normal[g][k]);
+    out[g] = PlaceSampleLanes(estimate, stream[g], z);
+  }
 }
 
 void DrawSampleGroupsScalar(const StateEstimate& estimate, std::uint64_t seed, std::uint64_t first,

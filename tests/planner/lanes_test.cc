@@ -181,12 +181,12 @@ TEST(LanesTest, IndexedNormalsInLanesHaveTheScalarBits) {
   int misses = 0, tails = 0;
   for (std::uint64_t first = 0; first < 24000; first += kLanes) {
     const LaneBits key = StreamKeyLanes(29, first);
-    Lanes normal[kIndices];
+    double normal[kIndices][kLanes];  // doubles: a missed normal is written through its address
     std::vector<MissedNormal> missed;
     for (int k = 0; k < kIndices; ++k) {
       LaneBits bits;
       LaneMask fast = BroadcastMask(-1);
-      normal[k] = IndexedNormalFastLanes(key, static_cast<std::uint64_t>(k), &bits, fast);
+      Store(IndexedNormalFastLanes(key, static_cast<std::uint64_t>(k), &bits, fast), normal[k]);
       for (int l = 0; l < kLanes; ++l) {
         if (!fast[l]) missed.push_back({&normal[k][l], key[l], static_cast<std::uint64_t>(k), bits[l]});
       }
