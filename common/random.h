@@ -52,12 +52,23 @@ class RandomStream {
   // Standard normal N(0, 1). The fast path (about 97 % of draws here) is inline.
   double NextNormal() {
     const std::uint64_t bits = NextBits();
+    double x;
+    return NormalInRectangle(bits, &x) ? x : NormalAfterMiss(bits);
+  }
+
+  // The ziggurat's fast path for one draw `bits`: true, with the normal in *x, when the point
+  // falls inside its layer's rectangle (about 97 % of draws).
+  static bool NormalInRectangle(std::uint64_t bits, double* x) {
     const int layer = static_cast<int>(bits & (random_detail::kZigguratLayers - 1));
     const double u = 2.0 * (static_cast<double>(bits >> 11) * 0x1.0p-53) - 1.0;  // [-1, 1)
-    if (u < random_detail::kZiggurat.ratio[layer] && u > -random_detail::kZiggurat.ratio[layer]) {
-      return u * random_detail::kZiggurat.x[layer];
-    }
-    return NormalEdge(layer, u);
+    *x = u * random_detail::kZiggurat.x[layer];
+    return u < random_detail::kZiggurat.ratio[layer] && u > -random_detail::kZiggurat.ratio[layer];
+  }
+  // NextNormal's slow path for a draw `bits` outside its layer's rectangle: the wedge or the
+  // tail, drawing further numbers from this stream.
+  double NormalAfterMiss(std::uint64_t bits) {
+    const int layer = static_cast<int>(bits & (random_detail::kZigguratLayers - 1));
+    return NormalEdge(layer, 2.0 * (static_cast<double>(bits >> 11) * 0x1.0p-53) - 1.0);
   }
 
  private:
@@ -65,5 +76,24 @@ class RandomStream {
   double NormalTail(bool negative);
   std::uint64_t state_;
 };
+
+// Counter-based normals: normal `index` (0, 1, ...) of the numbers keyed `key` is the ziggurat's
+// fast path on draw index + 1 of RandomStream(key) (so a normal that lands in a rectangle, about
+// 97 %, is NextNormal's when no earlier one missed), and a miss is finished with the draws of its
+// own stream, EdgeStreamKey(key, index). Each normal then depends on its index alone, never on
+// how many numbers an earlier one drew: SIMD lanes draw the fast paths of all normals side by
+// side and finish the few misses together afterwards (planner/random_lanes.h). The
+// distribution is the ziggurat's exactly: the fast path and the slow path's fresh draws are
+// independent streams' numbers.
+inline constexpr std::uint64_t kNormalEdgeDomain = 0x7a6967676564676bULL;
+inline std::uint64_t EdgeStreamKey(std::uint64_t key, std::uint64_t index) {
+  return StreamKey(key, index, kNormalEdgeDomain);
+}
+inline double IndexedNormal(std::uint64_t key, std::uint64_t index) {
+  const std::uint64_t bits = Mix64(key + (index + 1) * kGoldenGamma);
+  double x;
+  if (RandomStream::NormalInRectangle(bits, &x)) return x;
+  return RandomStream(EdgeStreamKey(key, index)).NormalAfterMiss(bits);
+}
 
 }  // namespace foresight

@@ -31,8 +31,15 @@ void CoarseActionEvaluator::Redraw(const StateEstimate& state, int samples, std:
   moving_.resize(slots);
   const Lanes zero = Broadcast(0.0);
   LaneMask drawn = BroadcastMask(-1);
+  SampleLanes groups_drawn[kDrawGroups];
   for (std::size_t first = 0; first < padded_count_; first += kLanes) {
-    const SampleLanes s = DrawSampleLanes(state, seed, first);
+    const std::size_t group = first / kLanes % kDrawGroups;
+    if (group == 0) {
+      const int groups = static_cast<int>(
+          std::min<std::size_t>(kDrawGroups, (padded_count_ - first) / kLanes));
+      DrawSampleGroups(state, seed, first, groups, groups_drawn);
+    }
+    const SampleLanes& s = groups_drawn[group];
     if (first + kLanes > static_cast<std::size_t>(samples)) {
       for (int l = 0; l < kLanes; ++l) drawn[l] = first + l < static_cast<std::size_t>(samples) ? -1 : 0;
     }
@@ -145,15 +152,45 @@ ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
     for (int g = 0; g < groups; ++g) {
       const Lanes value = value_.ValueOfPotentialLanes(potential[g]);
       const std::size_t first = chunk + static_cast<std::size_t>(g) * kLanes;
-      const std::size_t lanes =
-          std::min<std::size_t>(kLanes, static_cast<std::size_t>(count) - first);
-      for (std::size_t l = 0; l < lanes; ++l) {
-        hypothesis.Add(static_cast<Category>(category[g][l]), value[l], potential[g][l]);
-        if (stop_when_trimmed && hypothesis.CertainlyTrimmed(max_outs)) {
-          ActionEvaluation trimmed = hypothesis.Finish(params);
-          trimmed.too_risky = true;
-          trimmed.trimmed_utility = 0.0;
-          return trimmed;
+      const int lanes = static_cast<int>(
+          std::min<std::size_t>(kLanes, static_cast<std::size_t>(count) - first));
+      // The sums in sample order. With 4 or 8 lanes the counts of a group's lanes are added at
+      // once (integers: the order does not matter; a memory counter incremented per sample made
+      // a chain of stores); with 2 lanes a sample at a time is as fast.
+      bool trimmed = false;
+      if constexpr (kLanes > 2) {
+        const HypothesisAccumulator before = hypothesis;
+        const LaneMask infield = category[g] == static_cast<std::int64_t>(Category::kInfield);
+        const Lanes zero = Broadcast(0.0);
+        const Lanes infield_value = Select(infield, value, zero);
+        const Lanes infield_potential = Select(infield, potential[g], zero);
+        for (int l = 0; l < lanes; ++l) {
+          hypothesis.AddSums(infield_value[l], infield_potential[l], potential[g][l]);
+        }
+        const unsigned summed = (1U << lanes) - 1U;
+        for (int c = 0; c < kCategoryCount; ++c) {
+          hypothesis.AddCount(static_cast<Category>(c),
+                              __builtin_popcount(MaskBits(category[g] == c) & summed));
+        }
+        trimmed = stop_when_trimmed && hypothesis.CertainlyTrimmed(max_outs);
+        if (trimmed) hypothesis = before;  // trimmed within this group: found below
+      } else {
+        trimmed = stop_when_trimmed;
+      }
+      if (trimmed) {
+        // Sample by sample: a search stops with the sums up to the sample that trimmed.
+        for (int l = 0; l < lanes; ++l) {
+          hypothesis.Add(static_cast<Category>(category[g][l]), value[l], potential[g][l]);
+          if (hypothesis.CertainlyTrimmed(max_outs)) {
+            ActionEvaluation result = hypothesis.Finish(params);
+            result.too_risky = true;
+            result.trimmed_utility = 0.0;
+            return result;
+          }
+        }
+      } else if constexpr (kLanes == 2) {
+        for (int l = 0; l < lanes; ++l) {
+          hypothesis.Add(static_cast<Category>(category[g][l]), value[l], potential[g][l]);
         }
       }
     }

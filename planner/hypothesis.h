@@ -63,6 +63,15 @@ class HypothesisAccumulator {
     value_sum_ += infield ? value : 0.0;
     potential_sum_ += infield ? potential : 0.0;
   }
+  // Add in two parts, for callers that count many samples at once (SIMD lanes): the sums of one
+  // sample, in sample order, with `value` and `potential` already +0.0 unless it is infield
+  // (what Add adds), and the counts of n samples of one category.
+  void AddSums(double infield_value, double infield_potential, double potential) {
+    potential_all_sum_ += potential;
+    value_sum_ += infield_value;
+    potential_sum_ += infield_potential;
+  }
+  void AddCount(Category category, int n) { counts_[static_cast<int>(category)] += n; }
   ActionEvaluation Finish(const EvaluationParams& params) const;
   // The sums of the first n of a hypothesis's N samples (a search's coarse look): the utility of
   // those n, trimmed only when the whole hypothesis is certain to be, whatever its other samples

@@ -69,6 +69,18 @@ inline bool Any(LaneMask m) {
 inline bool All(LaneMask m) {
   return !Any(~m);
 }
+// Bit l set where lane l of the mask is: one instruction where the target has one.
+inline unsigned MaskBits(LaneMask m) {
+#if defined(__AVX512F__)
+  return _mm512_test_epi64_mask(reinterpret_cast<__m512i>(m), reinterpret_cast<__m512i>(m));
+#elif defined(__AVX__)
+  return static_cast<unsigned>(_mm256_movemask_pd(reinterpret_cast<__m256d>(m)));
+#else
+  unsigned bits = 0;
+  for (int l = 0; l < kLanes; ++l) bits |= (m[l] != 0 ? 1U : 0U) << l;
+  return bits;
+#endif
+}
 
 // std::min, std::max and std::clamp's definitions lane by lane (the same lane wins on ties).
 inline Lanes Min(Lanes a, Lanes b) {
@@ -127,13 +139,27 @@ inline void StoreMask(LaneMask v, std::int64_t* p) {
 }
 
 // RoundToInt (common/fast_math.h) in lanes: nearest integer, ties away from zero, by the same
-// truncating conversion, to 32-bit integers (one packed instruction from SSE2 on), so valid for
-// |x| < 2^31 (the callers' arguments stay below 10^5).
+// truncation: a rounding towards zero with AVX, a conversion to 32-bit integers and back with SSE
+// (valid for |x| < 2^31; the callers' arguments stay below 10^5). The rounding gives -0.0
+// where the conversion gives +0.0 (for x in (-0.5, 0)); every caller multiplies it by a constant
+// and subtracts it from x, or takes its integer bits after adding 1.5 * 2^52, which gives the
+// same bits either way.
 inline Lanes RoundToIntLanes(Lanes x) {
+  const Lanes shifted = x + Select(x >= 0.0, Broadcast(0.5), Broadcast(-0.5));
+  // The conversion truncates; with AVX a rounding towards zero gives the same integral double in
+  // one instruction (the conversion of 4 or 8 lanes to 32-bit integers and back takes five;
+  // with 2 lanes it takes two, as fast as the rounding).
+#if defined(__AVX512F__)
+  // The zero-masked form: GCC's unmasked one warns of an undefined source operand.
+  return reinterpret_cast<Lanes>(_mm512_maskz_roundscale_pd(
+      0xFF, reinterpret_cast<__m512d>(shifted), _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC));
+#elif defined(__AVX__)
+  return reinterpret_cast<Lanes>(
+      _mm256_round_pd(reinterpret_cast<__m256d>(shifted), _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC));
+#else
   using LaneInts = std::int32_t __attribute__((vector_size(kLanes * sizeof(std::int32_t))));
-  const LaneInts n =
-      __builtin_convertvector(x + Select(x >= 0.0, Broadcast(0.5), Broadcast(-0.5)), LaneInts);
-  return __builtin_convertvector(n, Lanes);
+  return __builtin_convertvector(__builtin_convertvector(shifted, LaneInts), Lanes);
+#endif
 }
 
 // An integral n (|n| < 2^51) as a two's complement integer: n + 1.5 * 2^52 holds n exactly in

@@ -110,14 +110,45 @@ inline Lanes NormalFastLanes(LaneBits bits, LaneMask& fast) {
   }
 }
 
-// RandomStream::NextNormal of each lane's stream (`state` as in NextBitsLanes); lanes that reach
-// the normal's tail are set in `tail` (see NormalEdgeLanes).
-inline Lanes NextNormalLanes(LaneBits& state, LaneMask& tail) {
-  const LaneBits bits = NextBitsLanes(state, BroadcastMask(-1));
-  LaneMask fast = BroadcastMask(-1);
-  Lanes value = NormalFastLanes(bits, fast);
-  if (!All(fast)) NormalEdgeLanes(bits, ~fast, state, value, tail);
-  return value;
+// IndexedNormal's fast path (common/random.h) for normal `index` of the keys `key`, one key per
+// lane: the draw in *bits, and lanes whose point falls outside its layer's rectangle cleared in
+// `fast` (FinishMissedNormals finishes them).
+inline Lanes IndexedNormalFastLanes(LaneBits key, std::uint64_t index, LaneBits* bits,
+                                    LaneMask& fast) {
+  *bits = StreamBitsLanes(key, index + 1);
+  return NormalFastLanes(*bits, fast);
+}
+
+// A normal whose fast path missed: IndexedNormal(key, index), whose draw was `bits`, goes to
+// *value.
+struct MissedNormal {
+  double* value;
+  std::uint64_t key, index, bits;
+};
+
+// IndexedNormal for each of `count` missed normals, kLanes at a time: the wedges in lanes
+// (NormalEdgeLanes, each lane from its normal's own stream EdgeStreamKey(key, index)); a lane
+// that reaches the tail is drawn again by the scalar IndexedNormal. The missed normals of many
+// samples share one pass, so the wedge's latency is paid about once per decision, not once per
+// lane group that has a miss.
+[[gnu::noinline]] inline void FinishMissedNormals(const MissedNormal* missed, int count) {
+  for (int first = 0; first < count; first += kLanes) {
+    LaneBits bits = BroadcastBits(0), state = BroadcastBits(0);
+    LaneMask pending = BroadcastMask(0);
+    for (int l = 0; l < kLanes && first + l < count; ++l) {
+      const MissedNormal& m = missed[first + l];
+      bits[l] = m.bits;
+      state[l] = EdgeStreamKey(m.key, m.index);
+      pending[l] = -1;
+    }
+    Lanes value = Broadcast(0.0);
+    LaneMask tail = BroadcastMask(0);
+    NormalEdgeLanes(bits, pending, state, value, tail);
+    for (int l = 0; l < kLanes && first + l < count; ++l) {
+      const MissedNormal& m = missed[first + l];
+      *m.value = tail[l] ? IndexedNormal(m.key, m.index) : value[l];
+    }
+  }
 }
 
 }  // namespace foresight

@@ -1,5 +1,8 @@
 #include "planner/sampling.h"
 
+#include <algorithm>
+#include <cassert>
+
 #include "common/random.h"
 #include "planner/random_lanes.h"
 
@@ -8,21 +11,19 @@ namespace foresight {
 DrawnSample DrawSample(const StateEstimate& estimate, std::uint64_t seed, std::uint64_t index) {
   DrawnSample sample;
   sample.stream = StreamKey(seed, index);
-  RandomStream rng(sample.stream);
+  const std::uint64_t key = sample.stream;
   Pose2& robot = sample.state.robot;
-  robot.p_F.x() = estimate.robot.p_F.x() + estimate.sigma_robot_x_m * rng.NextNormal();
-  robot.p_F.y() = estimate.robot.p_F.y() + estimate.sigma_robot_y_m * rng.NextNormal();
-  robot.theta_rad = estimate.robot.theta_rad + estimate.sigma_robot_theta_rad * rng.NextNormal();
-  // y before x, in two statements: the order of a constructor's arguments is unspecified, and
-  // y first is the order GCC gave the one expression this was before, so results recorded with
-  // GCC builds keep their bytes and every compiler now draws alike.
-  const double ball_noise_y = rng.NextNormal();
-  const double ball_noise_x = rng.NextNormal();
-  const Vec2 p_R_ball(estimate.p_R_ball.x() + estimate.sigma_ball_x_m * ball_noise_x,
-                      estimate.p_R_ball.y() + estimate.sigma_ball_y_m * ball_noise_y);
+  robot.p_F.x() = estimate.robot.p_F.x() + estimate.sigma_robot_x_m * IndexedNormal(key, 0);
+  robot.p_F.y() = estimate.robot.p_F.y() + estimate.sigma_robot_y_m * IndexedNormal(key, 1);
+  robot.theta_rad =
+      estimate.robot.theta_rad + estimate.sigma_robot_theta_rad * IndexedNormal(key, 2);
+  // Normal 3 is the ball's y and 4 its x: the order of the sequential stream this replaced
+  // (which drew y first), kept so that a sample without a slow-path normal keeps its numbers.
+  const Vec2 p_R_ball(estimate.p_R_ball.x() + estimate.sigma_ball_x_m * IndexedNormal(key, 4),
+                      estimate.p_R_ball.y() + estimate.sigma_ball_y_m * IndexedNormal(key, 3));
   sample.state.p_F_ball = robot.ToField(p_R_ball);
-  sample.z_speed = rng.NextNormal();
-  sample.z_direction = rng.NextNormal();
+  sample.z_speed = IndexedNormal(key, 5);
+  sample.z_direction = IndexedNormal(key, 6);
   return sample;
 }
 
@@ -43,35 +44,16 @@ SampleLanes DrawSampleLanesScalar(const StateEstimate& estimate, std::uint64_t s
   return s;
 }
 
-SampleLanes DrawSampleLanesVector(const StateEstimate& estimate, std::uint64_t seed,
-                                  std::uint64_t first) {
+namespace {
+
+// DrawSample's standard normals: robot x, y, heading, ball y, ball x, speed, direction.
+constexpr int kSampleNormals = 7;
+
+// SampleLanes from the drawn standard normals (`normal` in DrawSample's index order).
+SampleLanes PlaceSampleLanes(const StateEstimate& estimate, LaneBits stream,
+                             const Lanes (&normal)[kSampleNormals]) {
   SampleLanes s;
-  s.stream = StreamKeyLanes(seed, first);
-  // DrawSample's draws in its order: robot x, y, heading, ball y, ball x, speed, direction.
-  constexpr int kDraws = 7;
-  Lanes normal[kDraws];
-  LaneBits state = s.stream;
-  LaneMask tail = BroadcastMask(0);
-  std::uint64_t tail_state[kLanes];  // a tail lane's stream state before its first tail normal
-  int tail_draw[kLanes];             // and that normal's place in the order
-  for (int k = 0; k < kDraws; ++k) {
-    const LaneBits before = state;
-    const LaneMask tail_before = tail;
-    normal[k] = NextNormalLanes(state, tail);
-    if (__builtin_expect(Any(tail & ~tail_before), 0)) {
-      for (int l = 0; l < kLanes; ++l) {
-        if (tail[l] && !tail_before[l]) tail_state[l] = before[l], tail_draw[l] = k;
-      }
-    }
-  }
-  if (__builtin_expect(Any(tail), 0)) {
-    // The tail normal and every later one of that sample from its scalar stream.
-    for (int l = 0; l < kLanes; ++l) {
-      if (!tail[l]) continue;
-      RandomStream rng(tail_state[l]);
-      for (int k = tail_draw[l]; k < kDraws; ++k) normal[k][l] = rng.NextNormal();
-    }
-  }
+  s.stream = stream;
   s.robot_x = estimate.robot.p_F.x() + estimate.sigma_robot_x_m * normal[0];
   s.robot_y = estimate.robot.p_F.y() + estimate.sigma_robot_y_m * normal[1];
   s.robot_theta_rad = estimate.robot.theta_rad + estimate.sigma_robot_theta_rad * normal[2];
@@ -84,6 +66,62 @@ SampleLanes DrawSampleLanesVector(const StateEstimate& estimate, std::uint64_t s
   s.ball_y = s.robot_y + (sin_theta * ball_R_x + cos_theta * ball_R_y);
   s.z_speed = normal[5];
   s.z_direction = normal[6];
+  return s;
+}
+
+}  // namespace
+
+void DrawSampleGroupsVector(const StateEstimate& estimate, std::uint64_t seed, std::uint64_t first,
+                            int groups, SampleLanes* out) {
+  assert(groups <= kDrawGroups);
+  LaneBits stream[kDrawGroups];
+  // Plain doubles, not Lanes: a missed normal is written through its address (Clang gives no
+  // address of a vector's element).
+  alignas(64) double normal[kDrawGroups][kSampleNormals][kLanes];
+  LaneBits bits[kDrawGroups][kSampleNormals];
+  // Bit k kLanes + l: normal k of lane l missed its rectangle (7 kLanes <= 56 bits).
+  std::uint64_t misses[kDrawGroups];
+  // The fast paths of every normal side by side, without a branch (no normal waits for another's
+  // draws, and a miss, in about one lane group of five, is no misprediction) ...
+  for (int g = 0; g < groups; ++g) {
+    stream[g] = StreamKeyLanes(seed, first + static_cast<std::uint64_t>(g) * kLanes);
+    misses[g] = 0;
+    for (int k = 0; k < kSampleNormals; ++k) {
+      LaneMask fast = BroadcastMask(-1);
+      Store(IndexedNormalFastLanes(stream[g], static_cast<std::uint64_t>(k), &bits[g][k], fast),
+            normal[g][k]);
+      misses[g] |= static_cast<std::uint64_t>(MaskBits(~fast)) << (k * kLanes);
+    }
+  }
+  MissedNormal missed[kDrawGroups * kLanes * kSampleNormals];
+  int missed_count = 0;
+  for (int g = 0; g < groups; ++g) {
+    for (std::uint64_t m = misses[g]; m != 0; m &= m - 1) {
+      const int i = __builtin_ctzll(m), k = i / kLanes, l = i % kLanes;
+      missed[missed_count++] = {&normal[g][k][l], stream[g][l], static_cast<std::uint64_t>(k),
+                                bits[g][k][l]};
+    }
+  }
+  // ... then the misses of all groups together.
+  if (missed_count > 0) FinishMissedNormals(missed, missed_count);
+  for (int g = 0; g < groups; ++g) {
+    Lanes z[kSampleNormals];
+    for (int k = 0; k < kSampleNormals; ++k) z[k] = Load(normal[g][k]);
+    out[g] = PlaceSampleLanes(estimate, stream[g], z);
+  }
+}
+
+void DrawSampleGroupsScalar(const StateEstimate& estimate, std::uint64_t seed, std::uint64_t first,
+                            int groups, SampleLanes* out) {
+  for (int g = 0; g < groups; ++g) {
+    out[g] = DrawSampleLanesScalar(estimate, seed, first + static_cast<std::uint64_t>(g) * kLanes);
+  }
+}
+
+SampleLanes DrawSampleLanesVector(const StateEstimate& estimate, std::uint64_t seed,
+                                  std::uint64_t first) {
+  SampleLanes s;
+  DrawSampleGroupsVector(estimate, seed, first, 1, &s);
   return s;
 }
 
@@ -101,6 +139,15 @@ SampleLanes DrawSampleLanes(const StateEstimate& estimate, std::uint64_t seed,
                       : DrawSampleLanesScalar(estimate, seed, first);
 }
 
+void DrawSampleGroups(const StateEstimate& estimate, std::uint64_t seed, std::uint64_t first,
+                      int groups, SampleLanes* out) {
+  if constexpr (kDrawInLanes) {
+    DrawSampleGroupsVector(estimate, seed, first, groups, out);
+  } else {
+    DrawSampleGroupsScalar(estimate, seed, first, groups, out);
+  }
+}
+
 void DrawSamples(const StateEstimate& estimate, std::uint64_t seed, int count,
                  std::vector<DrawnSample>& out) {
   out.resize(static_cast<std::size_t>(count));
@@ -110,10 +157,14 @@ void DrawSamples(const StateEstimate& estimate, std::uint64_t seed, int count,
     }
     return;
   }
-  for (int first = 0; first < count; first += kLanes) {
-    const SampleLanes s = DrawSampleLanes(estimate, seed, static_cast<std::uint64_t>(first));
-    for (int l = 0; l < kLanes && first + l < count; ++l) {
-      DrawnSample& d = out[static_cast<std::size_t>(first + l)];
+  SampleLanes drawn[kDrawGroups];
+  for (int first = 0; first < count; first += kDrawGroups * kLanes) {
+    const int groups = std::min(kDrawGroups, (count - first + kLanes - 1) / kLanes);
+    DrawSampleGroups(estimate, seed, static_cast<std::uint64_t>(first), groups, drawn);
+    for (int i = first; i < std::min(count, first + groups * kLanes); ++i) {
+      const SampleLanes& s = drawn[(i - first) / kLanes];
+      const int l = (i - first) % kLanes;
+      DrawnSample& d = out[static_cast<std::size_t>(i)];
       d.stream = s.stream[l];
       d.state.robot.p_F = Vec2(s.robot_x[l], s.robot_y[l]);
       d.state.robot.theta_rad = s.robot_theta_rad[l];

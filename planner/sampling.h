@@ -1,6 +1,7 @@
 // Drawing the samples of a hypothesis (Mellmann & Schlotter, eq. 1): sample i draws the state
 // (robot pose and ball position relative to the robot, each coordinate normal with its sigma)
-// and the kick noise (standard normals z_speed, z_direction) from its own stream (seed, i).
+// and the kick noise (standard normals z_speed, z_direction) from its own numbers, keyed (seed, i):
+// its seven standard normals are common/random.h's IndexedNormal 0 .. 6 of that key.
 //
 // Common random numbers: every candidate action of one decision (each kick, each rotation)
 // uses the same draws, scaled by its own sigmas: v0 = speed + sigma_v z_speed,
@@ -43,11 +44,22 @@ struct SampleLanes {
   Lanes z_speed, z_direction;
 };
 SampleLanes DrawSampleLanes(const StateEstimate& estimate, std::uint64_t seed, std::uint64_t first);
+// Samples first .. first + groups * kLanes - 1 as `groups` (at most kDrawGroups) lane groups
+// out[0 .. groups), each as DrawSampleLanes draws it. In lanes, the normals' fast paths of all
+// groups come first and the few slow-path normals (common/random.h's IndexedNormal) are
+// finished together after them.
+inline constexpr int kDrawGroups = 32 / kLanes;
+void DrawSampleGroups(const StateEstimate& estimate, std::uint64_t seed, std::uint64_t first,
+                      int groups, SampleLanes* out);
 // DrawSampleLanes's two ways, with the same bits: the draws in lanes (planner/random_lanes.h;
 // what builds with SSE4.1 or more use) and DrawSample per lane (what SSE2 alone uses, being
 // faster there). Both compile on every target, so the tests compare them in every build.
 SampleLanes DrawSampleLanesVector(const StateEstimate& estimate, std::uint64_t seed,
                                   std::uint64_t first);
+void DrawSampleGroupsVector(const StateEstimate& estimate, std::uint64_t seed, std::uint64_t first,
+                            int groups, SampleLanes* out);
+void DrawSampleGroupsScalar(const StateEstimate& estimate, std::uint64_t seed, std::uint64_t first,
+                            int groups, SampleLanes* out);
 SampleLanes DrawSampleLanesScalar(const StateEstimate& estimate, std::uint64_t seed,
                                   std::uint64_t first);
 

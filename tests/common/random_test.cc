@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -31,6 +32,72 @@ TEST(RandomTest, NormalHasMeanZeroUnitVarianceAndNormalTails) {
   EXPECT_NEAR(beyond2 / double(n), 0.0455003, 0.0015);  // P(|Z| > 2)
   EXPECT_NEAR(beyond3 / double(n), 0.0026998, 0.0003);  // P(|Z| > 3)
   EXPECT_NEAR(beyond_tail / double(n), 0.000465, 0.0001);
+}
+
+// IndexedNormal (the planner's samples' normals) has the normal distribution exactly: moments,
+// tails (|z| > 3.5 only through the ziggurat's tail sampler) and Kolmogorov-Smirnov against the
+// normal CDF, over 7 normals of each of many keys as the samples draw them; neighbouring indices
+// of a key are uncorrelated, also right after a normal that took the slow path (which, in a
+// sequential stream, shifts the draws of every later normal).
+TEST(RandomTest, IndexedNormalIsStandardNormal) {
+  const int keys = 200'000, per_key = 7, n = keys * per_key;
+  std::vector<double> z;
+  z.reserve(n);
+  double sum = 0, sum2 = 0, sum4 = 0, after_miss_product = 0;
+  int beyond2 = 0, beyond3 = 0, beyond_tail = 0, after_miss = 0;
+  for (int i = 0; i < keys; ++i) {
+    const std::uint64_t key = StreamKey(42, static_cast<std::uint64_t>(i));
+    for (int k = 0; k < per_key; ++k) {
+      const double x = IndexedNormal(key, static_cast<std::uint64_t>(k));
+      z.push_back(x);
+      sum += x;
+      sum2 += x * x;
+      sum4 += x * x * x * x;
+      beyond2 += std::abs(x) > 2.0;
+      beyond3 += std::abs(x) > 3.0;
+      beyond_tail += std::abs(x) > 3.5;
+      double fast;
+      const bool missed = !RandomStream::NormalInRectangle(
+          Mix64(key + static_cast<std::uint64_t>(k + 1) * kGoldenGamma), &fast);
+      if (missed && k + 1 < per_key) {
+        after_miss_product += x * IndexedNormal(key, static_cast<std::uint64_t>(k + 1));
+        ++after_miss;
+      }
+    }
+  }
+  const double mean = sum / n, var = sum2 / n - mean * mean;
+  EXPECT_NEAR(mean, 0.0, 5.0 / std::sqrt(n));
+  EXPECT_NEAR(var, 1.0, 0.004);
+  EXPECT_NEAR(sum4 / n, 3.0, 0.04);
+  EXPECT_NEAR(beyond2 / double(n), 0.0455003, 0.0012);
+  EXPECT_NEAR(beyond3 / double(n), 0.0026998, 0.00025);
+  EXPECT_NEAR(beyond_tail / double(n), 0.000465, 0.00008);
+  std::sort(z.begin(), z.end());
+  double d = 0.0;  // the Kolmogorov-Smirnov statistic
+  for (int i = 0; i < n; ++i) {
+    const double cdf = 0.5 * std::erfc(-z[static_cast<std::size_t>(i)] / std::sqrt(2.0));
+    d = std::max({d, cdf - double(i) / n, double(i + 1) / n - cdf});
+  }
+  EXPECT_LT(d, 1.63 / std::sqrt(n));  // the 1 % critical value
+  ASSERT_GT(after_miss, 10'000);
+  EXPECT_NEAR(after_miss_product / after_miss, 0.0, 4.0 / std::sqrt(after_miss));
+}
+
+TEST(RandomTest, IndexedNormalIsTheStreamsNormalUntilAMiss) {
+  // Index k's fast path is draw k + 1 of RandomStream(key): the same normal as the sequential
+  // stream's while no earlier normal missed its rectangle.
+  int compared = 0;
+  for (std::uint64_t i = 0; i < 1000; ++i) {
+    const std::uint64_t key = StreamKey(9, i);
+    RandomStream rng(key);
+    for (std::uint64_t k = 0; k < 7; ++k) {
+      double fast;
+      if (!RandomStream::NormalInRectangle(Mix64(key + (k + 1) * kGoldenGamma), &fast)) break;
+      EXPECT_EQ(IndexedNormal(key, k), rng.NextNormal());
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 5000);
 }
 
 TEST(RandomTest, UniformCoversUnitInterval) {

@@ -100,8 +100,8 @@ bool SameBits(double a, double b) {
 }
 
 // The drawing in lanes against DrawSample, sample by sample and bit by bit, over enough samples
-// that many lanes have a draw on the ziggurat's slow path (the wedge in lanes, the rare tail by
-// the scalar stream): both ways of DrawSampleLanes, whichever the build uses, so the default
+// that many lanes have a normal on the ziggurat's slow path (the wedge in lanes, the rare tail by
+// the scalar IndexedNormal): both ways of DrawSampleLanes, whichever the build uses, so the default
 // (SSE2) build tests the lanes too.
 TEST(SamplingTest, DrawingInLanesHasDrawSamplesBits) {
   const Situation s = testing::MakeSituation(testing::Uncertain({.x_m = -2.0, .theta_deg = 170}));
@@ -132,6 +132,24 @@ TEST(SamplingTest, DrawingInLanesHasDrawSamplesBits) {
   }
   EXPECT_GT(slow_lanes, compared / 10);  // about 18 % of samples have a slow-path draw
   EXPECT_GT(tail_lanes, 3 * 10);  // about 1.1 in 1,000 samples has a tail in its two noise draws
+  // Groups drawn together (the misses of all finished after all fast paths) as one at a time.
+  for (auto* draw : {&DrawSampleGroupsVector, &DrawSampleGroupsScalar, &DrawSampleGroups}) {
+    for (std::uint64_t first = 0; first < 8000; first += kDrawGroups * kLanes) {
+      SampleLanes groups[kDrawGroups];
+      (*draw)(s.state, 17, first, kDrawGroups, groups);
+      for (int g = 0; g < kDrawGroups; ++g) {
+        const SampleLanes one = DrawSampleLanesScalar(s.state, 17, first + g * kLanes);
+        for (int l = 0; l < kLanes; ++l) {
+          ASSERT_EQ(groups[g].stream[l], one.stream[l]);
+          ASSERT_TRUE(SameBits(groups[g].ball_x[l], one.ball_x[l])) << first + g * kLanes + l;
+          ASSERT_TRUE(SameBits(groups[g].ball_y[l], one.ball_y[l])) << first + g * kLanes + l;
+          ASSERT_TRUE(SameBits(groups[g].robot_theta_rad[l], one.robot_theta_rad[l]));
+          ASSERT_TRUE(SameBits(groups[g].z_speed[l], one.z_speed[l])) << first + g * kLanes + l;
+          ASSERT_TRUE(SameBits(groups[g].z_direction[l], one.z_direction[l]));
+        }
+      }
+    }
+  }
   // DrawSamples uses the lanes and stops at any count.
   std::vector<DrawnSample> some;
   DrawSamples(s.state, 5, 13, some);
