@@ -239,6 +239,7 @@ int RunVariationFit(const CalibrateOptions& options, const std::filesystem::path
       kMaxTrials);
   settings.seed = ParseSeed(options.seed);
   settings.threads = ParseCount("--threads", options.threads, 0, kMaxThreads);
+  settings.base = ParseBaseFlag(options.base);
   settings.progress = [](const std::string& kick) {
     return CommandProgress("fit-variation " + kick, "trials");
   };

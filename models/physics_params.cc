@@ -109,8 +109,8 @@ MaterialParams ReadMaterials(const JsonObject& o) {
   return m;
 }
 
-// {"base": "fixed", "friction": mu, "restitution": e, "fall_tilt_deg": deg, "sources": {...}}:
-// every number with the reason for it.
+// {"base": "floating", "friction": mu, "restitution": e, "fall_tilt_deg": deg, "sources": {...}}:
+// every value with the reason for it.
 RobotContactParams ReadRobot(const JsonObject& o) {
   o.RejectUnknownKeys({"base", "friction", "restitution", "fall_tilt_deg", "sources"});
   RobotContactParams r;
@@ -126,8 +126,8 @@ RobotContactParams ReadRobot(const JsonObject& o) {
   }
   r.fall_tilt_rad = fall_tilt_deg * kDegToRad;  // files: degrees
   const JsonObject sources = o.Object("sources");
-  sources.RejectUnknownKeys({"friction", "restitution", "fall_tilt_deg"});
-  for (const char* key : {"friction", "restitution", "fall_tilt_deg"}) {
+  sources.RejectUnknownKeys({"base", "friction", "restitution", "fall_tilt_deg"});
+  for (const char* key : {"base", "friction", "restitution", "fall_tilt_deg"}) {
     if (sources.String(key).empty()) sources.Fail(key, "must say where the value comes from");
   }
   return r;

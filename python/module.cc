@@ -92,7 +92,7 @@ py::object Calibrate(const std::string& robot, const py::object& kick, const py:
                      const py::object& situation, const py::object& kicks,
                      const py::object& physics, const py::object& from_csv,
                      const py::object& confidence, const py::object& resamples,
-                     const std::optional<std::filesystem::path>& models,
+                     const std::optional<std::filesystem::path>& models, const py::object& base,
                      const py::object& progress) {
   CalibrateOptions options;
   options.robot = robot;
@@ -107,6 +107,7 @@ py::object Calibrate(const std::string& robot, const py::object& kick, const py:
   SetFlag(options.from_csv, from_csv);
   SetFlag(options.confidence, confidence);
   SetFlag(options.resamples, resamples);
+  SetFlag(options.base, base);
   const std::filesystem::path dir = ModelsDir(models);
   return ToPython(RunLongCall(progress, [&] {
     return CalibrationJson(CalibrateInMemory(options, dir));
@@ -116,7 +117,7 @@ py::object Calibrate(const std::string& robot, const py::object& kick, const py:
 py::object Fidelity(const py::object& situations, const py::object& trials,
                     const py::object& samples, const py::object& converged, const py::object& seed,
                     const py::object& threads, const py::object& kicks, const py::object& physics,
-                    const std::optional<std::filesystem::path>& models,
+                    const std::optional<std::filesystem::path>& models, const py::object& base,
                     const py::object& progress) {
   FidelityOptions options;
   SetFlag(options.situations, situations);
@@ -127,6 +128,7 @@ py::object Fidelity(const py::object& situations, const py::object& trials,
   SetFlag(options.threads, threads);
   SetFlag(options.kicks_file, kicks);
   SetFlag(options.physics_file, physics);
+  SetFlag(options.base, base);
   const std::filesystem::path dir = ModelsDir(models);
   return ToPython(RunLongCall(progress, [&] {
     return FidelityJson(RunFidelityInMemory(options, dir));
@@ -190,14 +192,17 @@ PYBIND11_MODULE(_foresight, m) {
         py::arg("kicks") = py::none(), py::arg("physics") = py::none(),
         py::arg("from_csv") = py::none(), py::arg("confidence") = py::none(),
         py::arg("resamples") = py::none(), py::arg("models") = py::none(),
-        py::arg("progress") = py::none(),
-        "Calibrates a robot's kicks (all, or `kick`): the report's calibration.json as a dict.");
+        py::arg("base") = py::none(), py::arg("progress") = py::none(),
+        "Calibrates a robot's kicks (all, or `kick`): the report's calibration.json as a dict; "
+        "base 'fixed' or 'floating' replaces the physics file's (default: floating).");
   m.def("fidelity", &Fidelity, py::arg("situations") = py::none(), py::arg("trials") = py::none(),
         py::arg("samples") = py::none(), py::arg("converged") = py::none(),
         py::arg("seed") = py::none(), py::arg("threads") = py::none(),
         py::arg("kicks") = py::none(), py::arg("physics") = py::none(),
-        py::arg("models") = py::none(), py::arg("progress") = py::none(),
-        "Coarse model against physics on a situation set: the report's fidelity.json as a dict.");
+        py::arg("models") = py::none(), py::arg("base") = py::none(),
+        py::arg("progress") = py::none(),
+        "Coarse model against physics on a situation set: the report's fidelity.json as a dict; "
+        "base 'fixed' or 'floating' replaces the physics files' (default: floating).");
   m.def("cbr_retrieve", &CbrRetrieve, py::arg("problem"), py::arg("case_base") = py::none(),
         py::arg("params") = py::none(), py::arg("models") = py::none(),
         "Case retrieval (Ros et al. 2009) for a problem file: what `foresight cbr retrieve "

@@ -27,6 +27,7 @@ std::map<std::string, LaunchSpread> Spreads(const VariationFitSettings& settings
     s.trials = settings.trials;
     s.seed = settings.seed;
     s.threads = settings.threads;
+    s.base = settings.base;
     s.variation = variation;
     s.progress = settings.progress;
     const PhysicsCalibration run = RunPhysicsCalibration(s, models);

@@ -21,9 +21,11 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "models/physics_params.h"
 #include "models/robot_spec.h"
 #include "validation/calibration.h"
 
@@ -49,6 +51,7 @@ struct VariationFitSettings {
   int trials = 400;  // per kick and run (three runs)
   std::uint64_t seed = 1;
   int threads = 0;
+  std::optional<RobotBase> base;  // replaces the physics file's robot base
   // A progress reporter for each physics run of a kick (empty: none).
   std::function<std::function<void(int, int)>(const std::string& kick)> progress;
 };

@@ -168,17 +168,19 @@ def calibrate(robot: str, kick: Optional[str] = None, trials: Optional[int] = No
               situation: Optional[PathLike] = None, kicks: Optional[PathLike] = None,
               physics: Optional[PathLike] = None, from_csv: Optional[PathLike] = None,
               confidence: Optional[float] = None, resamples: Optional[int] = None,
-              models: Optional[PathLike] = None, progress: Progress = None) -> Json:
+              models: Optional[PathLike] = None, base: Optional[str] = None,
+              progress: Progress = None) -> Json:
     """Calibrates the robot's kicks (all, or `kick`) from physics or a CSV log: the report's
-    calibration.json."""
+    calibration.json. base: "fixed" or "floating" (default: the physics file's, floating)."""
 
 def fidelity(situations: Optional[str] = None, trials: Optional[int] = None,
              samples: Optional[int] = None, converged: Optional[int] = None,
              seed: Optional[int] = None, threads: Optional[int] = None,
              kicks: Optional[PathLike] = None, physics: Optional[PathLike] = None,
-             models: Optional[PathLike] = None, progress: Progress = None) -> Json:
+             models: Optional[PathLike] = None, base: Optional[str] = None,
+             progress: Progress = None) -> Json:
     """The coarse model against physics on a situation set ("quick", "full" or a file): the
-    report's fidelity.json."""
+    report's fidelity.json. base: "fixed" or "floating" (default: the physics files', floating)."""
 
 def cbr_retrieve(problem: Union[PathLike, Mapping[str, Any]],
                  case_base: Optional[PathLike] = None, params: Optional[PathLike] = None,

@@ -36,9 +36,12 @@ class CalibrateCommandTest : public foresight::testing::ForesightRun {
     args.insert(args.begin(), "calibrate");
     return Run(args);
   }
+  // On the fixed base, the cheap approximation (a tenth of a floating trial's cost): these tests
+  // are of the command's files, bytes and errors, which do not depend on the base.
   static std::vector<std::string> SideKick(const std::string& threads) {
-    return {"--robot", "nao",   "--kick",      "side_kick_left", "--trials", "40",        "--seed",
-            "3",       "--out", "fitted.json", "--report",       "report",   "--threads", threads};
+    return {"--robot", "nao",   "--kick",      "side_kick_left", "--trials", "40",
+            "--seed",  "3",     "--out",       "fitted.json",    "--report", "report",
+            "--threads", threads, "--base",    "fixed"};
   }
 };
 
@@ -139,7 +142,7 @@ TEST_F(CalibrateCommandTest, OneKickAloneFitsAsInAllKicks) {
   const nlohmann::json alone =
       nlohmann::json::parse(ReadFile(work() / "report" / "calibration.json"));
   const RunResult r = Calibrate({"--robot", "nao", "--all", "--trials", "40", "--seed", "3",
-                                 "--out", "all.json", "--report", "all_report"});
+                                 "--out", "all.json", "--report", "all_report", "--base", "fixed"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json all =
       nlohmann::json::parse(ReadFile(work() / "all_report" / "calibration.json"));
@@ -269,8 +272,10 @@ TEST_F(CalibrateCommandTest, FitVariationWritesTheFittedTrialVariation) {
            std::to_string(-4.0 + 8.0 * (i % 8) / 7.0) + "\n";
   }
   Write("log.csv", csv);
+  // The fixed base, the cheap approximation: the fit's three physics runs of 60 trials.
   const RunResult r = Calibrate({"--robot", "nao", "--from-csv", "log.csv", "--fit-variation",
-                                 "--fit-trials", "60", "--threads", "2", "--out", "var.json"});
+                                 "--fit-trials", "60", "--threads", "2", "--base", "fixed",
+                                 "--out", "var.json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("physics, fitted"));
   const nlohmann::json j = nlohmann::json::parse(ReadFile(work() / "var.json"));

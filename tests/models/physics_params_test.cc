@@ -60,7 +60,7 @@ INSTANTIATE_TEST_SUITE_P(
         BrokenCase{"\"patch_seed\": 2026", "\"patch_seed\": -4", "carpet.patch_seed"},
         BrokenCase{"\"min_launch_roll_m\": 0.05", "\"min_launch_roll_m\": 2",
                    "steps.min_launch_roll_m: must be in [0, 0.5], got 2"},
-        BrokenCase{"\"base\": \"fixed\"", "\"base\": \"bolted\"",
+        BrokenCase{"\"base\": \"floating\"", "\"base\": \"bolted\"",
                    "robot.base: must be one of fixed, floating, got 'bolted'"},
         BrokenCase{"\"fall_tilt_deg\": 45.0", "\"fall_tilt_deg\": 120",
                    "robot.fall_tilt_deg: must be in [1, 90], got 120"},

@@ -10,6 +10,11 @@ std::unique_ptr<PhysicsFixtureData> LoadPhysicsFixture(const std::string& field_
   auto data = std::make_unique<PhysicsFixtureData>();
   data->field = LoadFieldSpec(ModelsDir() / "fields" / (field_name + ".json"));
   data->params = LoadPhysicsParams(ModelsDir() / "physics" / (field_name + ".json"));
+  // The fixed base, the cheap approximation (a tenth of a floating trial's cost), not the files'
+  // floating one: these scenes test a trial's parts (contacts, motors, strikes, placements,
+  // recordings), which the fixed base plays without the balance; the floating tests ask for the
+  // floating base themselves (floating_kick_test.cc, floating_falls_test.cc).
+  data->params.robot.base = RobotBase::kFixed;
   if (uniform_carpet) {
     data->params.carpet.deceleration_sigma_rel = 0.0;
     data->params.carpet.patch_sigma_rel = 0.0;

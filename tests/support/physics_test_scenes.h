@@ -19,8 +19,9 @@ struct PhysicsFixtureData {
   std::unique_ptr<Robot> robot;  // null unless asked for
 };
 
-// The shipped field and physics of `field_name`; `uniform_carpet` zeroes the carpet's per-trial
-// and per-patch variation. `robot_name` empty: no robot.
+// The shipped field and physics of `field_name` with the robot on the fixed base;
+// `uniform_carpet` zeroes the carpet's per-trial and per-patch variation. `robot_name` empty: no
+// robot.
 std::unique_ptr<PhysicsFixtureData> LoadPhysicsFixture(const std::string& field_name,
                                                        bool uniform_carpet,
                                                        const std::string& robot_name = "");

@@ -106,6 +106,9 @@ FidelityResult RunTiny(const FidelitySet& set, int threads) {
   settings.converged_samples = 200;
   settings.seed = 7;
   settings.threads = threads;
+  // The fixed base, the cheap approximation (a tenth of a floating trial's cost): these tests
+  // are of the run's bookkeeping (threads, shards, metrics' ranges), not of the base.
+  settings.base = RobotBase::kFixed;
   return RunFidelity(set, testing::ModelsDir(), settings);
 }
 
@@ -297,6 +300,7 @@ TEST(FidelityViewsTest, PagesComeFromTheRecordedTrialsAndShardsGiveTheSameBytes)
   settings.converged_samples = 200;
   settings.seed = 7;
   settings.threads = 2;
+  settings.base = RobotBase::kFixed;  // as above
   const FidelityResult whole = RunFidelity(set, testing::ModelsDir(), settings);
   const std::vector<int> shown = FidelityViewSituations(whole.situations);
   ASSERT_FALSE(shown.empty());

@@ -24,6 +24,8 @@ std::map<std::string, LaunchSpread> SyntheticLog(const TrialVariation& truth) {
     s.trials = kTrials;
     s.seed = 4242;
     s.threads = 2;
+    // The fixed base, the cheap approximation, for the "real robot" and the fit alike.
+    s.base = RobotBase::kFixed;
     s.variation = truth;
     log[kick] = SpreadOf(RunPhysicsCalibration(s, testing::ModelsDir()).kicks.front().observations);
   }
@@ -43,6 +45,7 @@ TEST(VariationFitTest, RecoversTheMagnitudesALogWasDrawnWith) {
   settings.robot = "nao";
   settings.trials = kTrials;
   settings.threads = 2;
+  settings.base = RobotBase::kFixed;  // as the log's
   const VariationFit fit = FitVariation(settings, log, testing::ModelsDir());
   // A 200-trial robust sd has a sampling error of about 8 %; the fit reads two of them.
   EXPECT_NEAR(fit.placement_scale, 0.6, 0.12);
@@ -61,6 +64,7 @@ TEST(VariationFitTest, APlaybackSpreadPastTheJointLimitsIsHeldAtTheLimit) {
   settings.robot = "nao";
   settings.trials = 50;
   settings.threads = 2;
+  settings.base = RobotBase::kFixed;  // the cheap approximation: the limit is the motion's
   const VariationFit fit = FitVariation(settings, log, testing::ModelsDir());
   EXPECT_TRUE(fit.playback_at_limit);
   EXPECT_NEAR(fit.fitted.MaxSpeedFactor(), fit.fastest_playback, 1e-9);
