@@ -97,21 +97,19 @@ py::dict Passing(const py::object& config, const py::object& team, const py::obj
       results, [&](int, S s, int i) { return Sum(at(s, i).counters.attacker_kicks); });
   out["opponent_touches"] = TrialColumn<std::int32_t>(
       results, [&](int, S s, int i) { return Sum(at(s, i).counters.opponent_touches); });
-  out["shots_on_target"] = TrialColumn<std::int32_t>(
-      results, [&](int, S s, int i) { return at(s, i).counters.shots_on_target; });
-  out["shots_saved"] = TrialColumn<std::int32_t>(
-      results, [&](int, S s, int i) { return at(s, i).counters.shots_saved; });
-  out["grabs_failed"] = TrialColumn<std::int32_t>(
-      results, [&](int, S s, int i) { return at(s, i).counters.grabs_failed; });
+  // One counter of every trial (match/trial_result.h).
+  const auto counter = [&](int TrialCounters::*field) {
+    return TrialColumn<std::int32_t>(
+        results, [&, field](int, S s, int i) { return at(s, i).counters.*field; });
+  };
+  out["shots_on_target"] = counter(&TrialCounters::shots_on_target);
+  out["shots_saved"] = counter(&TrialCounters::shots_saved);
+  out["grabs_failed"] = counter(&TrialCounters::grabs_failed);
   // Kicks whose physics trial did not end ok (physics=True only; models/outcome.h).
-  out["kicks_missed"] = TrialColumn<std::int32_t>(
-      results, [&](int, S s, int i) { return at(s, i).counters.kicks_missed; });
-  out["kicks_not_settled"] = TrialColumn<std::int32_t>(
-      results, [&](int, S s, int i) { return at(s, i).counters.kicks_not_settled; });
-  out["kicks_fell"] = TrialColumn<std::int32_t>(
-      results, [&](int, S s, int i) { return at(s, i).counters.kicks_fell; });
-  out["kicks_blocked"] = TrialColumn<std::int32_t>(
-      results, [&](int, S s, int i) { return at(s, i).counters.kicks_blocked; });
+  out["kicks_missed"] = counter(&TrialCounters::kicks_missed);
+  out["kicks_not_settled"] = counter(&TrialCounters::kicks_not_settled);
+  out["kicks_fell"] = counter(&TrialCounters::kicks_fell);
+  out["kicks_blocked"] = counter(&TrialCounters::kicks_blocked);
   std::vector<std::string> outcomes;
   for (int c = 0; c < kTrialOutcomeCount; ++c) {
     outcomes.emplace_back(TrialOutcomeName(static_cast<TrialOutcome>(c)));

@@ -38,22 +38,28 @@ void ExpectSameRun(const StrategyRun& a, const StrategyRun& b) {
   }
 }
 
+// The runs of `count` shards, each written to JSON text and read back, merged.
+StrategiesResult MergedShards(const StrategiesParams& params, const OutcomeSimulator* executor,
+                              int count) {
+  std::vector<ShardPart> parts;
+  for (int i = 0; i < count; ++i) {
+    const Shard shard{i, count};
+    ShardPart part;
+    part.header.shard = shard;
+    part.results = nlohmann::json::parse(
+        StrategiesShardResults(params, RunStrategies(params, executor, 3, 1, {}, shard), shard)
+            .dump());
+    parts.push_back(part);
+  }
+  return MergeStrategiesShards(params, 3, parts);
+}
+
 TEST(StrategiesShardTest, MergedShardsEqualTheWholeRun) {
   StrategiesParams params = testing::TestStrategiesParams(testing::MakeSituation({}), 23);
   params.example_start = 5;
   const StrategiesResult whole = RunStrategies(params, nullptr, 3, 2);
   ASSERT_FALSE(whole.strategies.front().example.steps_taken.empty());
-  std::vector<ShardPart> parts;
-  for (int i = 0; i < 4; ++i) {
-    const Shard shard{i, 4};
-    ShardPart part;
-    part.header.shard = shard;
-    part.results = nlohmann::json::parse(
-        StrategiesShardResults(params, RunStrategies(params, nullptr, 3, 1, {}, shard), shard)
-            .dump());
-    parts.push_back(part);
-  }
-  const StrategiesResult merged = MergeStrategiesShards(params, 3, parts);
+  const StrategiesResult merged = MergedShards(params, nullptr, 4);
   ASSERT_EQ(merged.strategies.size(), whole.strategies.size());
   for (std::size_t s = 0; s < whole.strategies.size(); ++s) {
     EXPECT_EQ(merged.strategies[s].strategy, whole.strategies[s].strategy);
@@ -105,17 +111,7 @@ TEST(StrategiesShardTest, BlockedKicksAreCountedAndSurviveTheShards) {
     EXPECT_EQ(s.kick_status.fell, 0);
     EXPECT_EQ(s.kick_status.not_settled, 0);
   }
-  std::vector<ShardPart> parts;
-  for (int i = 0; i < 2; ++i) {
-    const Shard shard{i, 2};
-    ShardPart part;
-    part.header.shard = shard;
-    part.results = nlohmann::json::parse(
-        StrategiesShardResults(params, RunStrategies(params, &executor, 3, 1, {}, shard), shard)
-            .dump());
-    parts.push_back(part);
-  }
-  const StrategiesResult merged = MergeStrategiesShards(params, 3, parts);
+  const StrategiesResult merged = MergedShards(params, &executor, 2);
   for (std::size_t s = 0; s < whole.strategies.size(); ++s) {
     for (int start = 0; start < params.starts; ++start) {
       SCOPED_TRACE("strategy " + std::to_string(s) + ", start " + std::to_string(start));
