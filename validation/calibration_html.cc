@@ -142,6 +142,7 @@ std::string CalibrationHtml(const CalibrationRun& run) {
                         std::to_string(run.settings.resamples) + " resamples"},
       {"situation", p.Input("situation").empty() ? "-" : p.Input("situation")},
       {"physics", p.Input("physics").empty() ? "-" : p.Input("physics")},
+      {"robot base", p.Input("robot_base").empty() ? "-" : p.Input("robot_base")},
       {"field", p.Input("field").empty() ? "-" : p.Input("field")},
       {"committed model", p.Input("base_kicks") + " (" + p.Input("base_kicks_hash") + ")"},
       {"fitted model written to", p.Input("out")}};

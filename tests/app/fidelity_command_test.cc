@@ -79,6 +79,7 @@ TEST_F(FidelityCommandTest, OneSituationWritesJsonCsvAndHtml) {
   EXPECT_EQ(CountOf(html, "</html>"), 1);
   EXPECT_THAT(html, HasSubstr("kicks/nao.json (" + j["kick_model_hash"].get<std::string>() + ")"));
   EXPECT_THAT(html, HasSubstr("physics/spl.json"));
+  EXPECT_THAT(html, HasSubstr("<th scope=\"row\">robot base</th><td>floating</td>"));
   EXPECT_THAT(html, ::testing::Not(HasSubstr("&lt;field&gt;")));
   // The worst (here: the only) situation links its 3D viewer: the coarse choice's and physics's
   // best candidate's first trials (one candidate when they agree), with their recorded scenes.
