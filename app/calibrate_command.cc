@@ -77,6 +77,7 @@ void CalibrateFromPhysics(const CalibrateOptions& options, const std::filesystem
     kick.draws = std::move(trials.draws);
     kick.missed = trials.missed;
     kick.fell = trials.fell;
+    kick.blocked = trials.blocked;
     kick.clearance = trials.clearance;
     run.kicks.push_back(std::move(kick));
   }

@@ -1,6 +1,9 @@
 #include "app/check_command.h"
 
+#include <algorithm>
+#include <filesystem>
 #include <iostream>
+#include <vector>
 
 #include "app/base_flag.h"
 #include "app/cli_values.h"
@@ -11,6 +14,21 @@
 #include "validation/physics_checks.h"
 
 namespace foresight {
+
+namespace {
+
+// The physics files a check may read: every check reads its field's MODELS/physics/<field>.json.
+std::vector<std::filesystem::path> CheckPhysicsFiles(const std::filesystem::path& models) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(DataFolderPath(models, DataFolder::kPhysics))) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace
 
 void AddCheckCommand(CLI::App& app, CheckOptions& options) {
   CLI::App* cmd = app.add_subcommand("check", "Run physics expectations from a spec file (CI)");
@@ -48,8 +66,7 @@ int RunCheckCommand(const CheckOptions& options, const std::string& models_dir) 
                                     {{"version", FORESIGHT_VERSION},
                                      {"spec", DisplayPath(spec_file, models)},
                                      {"spec_hash", ContentHash(spec_file)},
-                                     {"robot_base", options.base.empty() ? "as the physics files"
-                                                                         : options.base}}));
+                                     {"robot_base", BaseUsed(base, CheckPhysicsFiles(models))}}));
   }
   outputs.Commit();
   std::cout << results.size() - failed << " of " << results.size() << " checks passed\n"

@@ -81,31 +81,29 @@ FidelityPlan PlanFidelity(const FidelityOptions& options, const std::filesystem:
   // What the situations used: robot, field, kick model (with its content hash) and the physics
   // file each one's trials read (--physics, else MODELS/physics/<field>.json).
   std::vector<std::string> robots, fields, kick_models, kick_hashes, physics_files;
+  std::vector<std::filesystem::path> physics_paths;
   for (const FidelityCase& c : plan.set.cases) {
     robots.push_back(c.situation.kicks.robot);
     fields.push_back(c.situation.field.name);
     kick_models.push_back(DisplayPath(c.situation.kicks_file, models));
     kick_hashes.push_back(ContentHash(c.situation.kicks_file));
-    physics_files.push_back(DisplayPath(
-        options.physics_file.empty()
-            ? DataFile(models, DataFolder::kPhysics, c.situation.field.name)
-            : std::filesystem::path(options.physics_file),
-        models));
+    physics_paths.push_back(options.physics_file.empty()
+                                ? DataFile(models, DataFolder::kPhysics, c.situation.field.name)
+                                : std::filesystem::path(options.physics_file));
+    physics_files.push_back(DisplayPath(physics_paths.back(), models));
   }
-  run.provenance.inputs = {{"situations_set", plan.set.name},
-                           {"set_file", DisplayPath(plan.set.file, models)},
-                           {"robot", JoinDistinct(robots)},
-                           {"field", JoinDistinct(fields)},
-                           {"kick_model", JoinDistinct(kick_models)},
-                           {"kick_model_hash", JoinDistinct(kick_hashes)},
-                           {"physics_file", JoinDistinct(physics_files)},
-                           {"class", options.situation_class.empty() ? "all"
-                                                                     : options.situation_class},
-                           {"coarse_rebounds", options.coarse_rebounds.empty()
-                                                   ? "as the evaluation files"
-                                                   : options.coarse_rebounds},
-                           {"robot_base", options.base.empty() ? "as the physics files"
-                                                               : options.base}};
+  run.provenance.inputs = {
+      {"situations_set", plan.set.name},
+      {"set_file", DisplayPath(plan.set.file, models)},
+      {"robot", JoinDistinct(robots)},
+      {"field", JoinDistinct(fields)},
+      {"kick_model", JoinDistinct(kick_models)},
+      {"kick_model_hash", JoinDistinct(kick_hashes)},
+      {"physics_file", JoinDistinct(physics_files)},
+      {"class", options.situation_class.empty() ? "all" : options.situation_class},
+      {"coarse_rebounds",
+       options.coarse_rebounds.empty() ? "as the evaluation files" : options.coarse_rebounds},
+      {"robot_base", BaseUsed(run.settings.base, physics_paths)}};
   run.rotations_rad = plan.set.rotations_rad;
   return plan;
 }

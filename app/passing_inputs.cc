@@ -41,11 +41,12 @@ PassingInputs LoadPassingInputs(const PassingOptions& o, const std::string& team
   if (!o.physics && !o.physics_file.empty()) throw InputError("--physics-file needs --physics");
   if (!o.physics && !o.base.empty()) throw InputError("--base needs --physics");
   const std::optional<RobotBase> base = ParseBaseFlag(o.base);
-  PassingInputs in{LoadPassingSetup(request, models), nullptr, ""};
+  PassingInputs in{LoadPassingSetup(request, models), nullptr, "", ""};
   if (o.physics) {
     auto physics = std::make_unique<PhysicsKickExecutor>(in.setup.field, in.setup.kicks, models,
                                                          o.physics_file, base);
     in.physics_file = DisplayPath(physics->physics_file(), models);
+    in.robot_base = RobotBaseName(physics->base());
     in.executor = std::move(physics);
   } else {
     in.executor = std::make_unique<CoarseKickExecutor>(in.setup.field,
@@ -72,7 +73,7 @@ RunProvenance PassingProvenance(const PassingOptions& o, const PassingInputs& in
               {"executor", o.physics ? "physics" : "coarse"},
               {"mirrored", setup.mirrored ? "yes" : "no"}};
   if (o.physics) p.SetInput("physics", in.physics_file);
-  if (o.physics && !o.base.empty()) p.SetInput("robot_base", o.base);
+  if (o.physics) p.SetInput("robot_base", in.robot_base);
   return p;
 }
 

@@ -43,6 +43,7 @@ struct PassingInputs {
   PassingSetup setup;
   std::unique_ptr<KickExecutor> executor;
   std::string physics_file;  // empty without --physics
+  std::string robot_base;    // the kicking robot's, as played; empty without --physics
 };
 // `team`: "reactive", "cbr" or "both" (the ablations play both).
 PassingInputs LoadPassingInputs(const PassingOptions& options, const std::string& team,

@@ -34,6 +34,7 @@ class PhysicsKickExecutor final : public KickExecutor {
   Outcome Execute(std::span<const Obstacle> robots, const DrawnState& state,
                   const ConcreteAction& action) const override;
   const std::filesystem::path& physics_file() const { return physics_file_; }
+  RobotBase base() const { return params_.robot.base; }  // as played: --base or the file's
   const Robot& robot() const { return robot_; }
 
   // From now on every kick's whole trial is kept, its scene recorded at rate_hz, in the order

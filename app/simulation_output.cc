@@ -65,8 +65,8 @@ std::string SimulationText(const SimulationRun& run) {
   out << Format("rest: mean (%.3f, %.3f) m, sd (%.3f, %.3f) m; mean time %.2f s; settled %d/%d\n",
                 s.rest_mean_F.x(), s.rest_mean_F.y(), s.rest_sd_F.x(), s.rest_sd_F.y(),
                 s.time_mean_s, s.settled, s.trials);
-  out << Format("robot: %s base; fell %d/%d; largest torso tilt %.1f deg\n",
-                std::string(RobotBaseName(run.base)).c_str(), s.fell, s.trials,
+  out << Format("robot: %s base; fell %d/%d; blocked %d/%d; largest torso tilt %.1f deg\n",
+                std::string(RobotBaseName(run.base)).c_str(), s.fell, s.trials, s.blocked, s.trials,
                 s.max_tilt_rad * kRadToDeg);
   out << Format("placement: %d/%d trials drew the ball inside the robot first and drew again "
                 "(%d draws rejected)\n",
@@ -109,6 +109,7 @@ nlohmann::ordered_json SimulationJson(const SimulationRun& run) {
                   {"launched", s.launched},
                   {"settled", s.settled},
                   {"fell", s.fell},
+                  {"blocked", s.blocked},
                   {"max_tilt_deg", s.max_tilt_rad * kRadToDeg},
                   {"placement_redrawn", s.placement_redrawn},
                   {"placement_redraws", s.placement_redraws},
@@ -130,6 +131,8 @@ nlohmann::ordered_json SimulationJson(const SimulationRun& run) {
     t["launched"] = r.launched;
     t["settled"] = r.settled;
     t["fell"] = r.fell;
+    t["blocked"] = r.blocked;
+    t["status"] = OutcomeStatusName(r.outcome.status);
     t["max_tilt_deg"] = r.max_tilt_rad * kRadToDeg;
     t["launch_speed_mps"] = r.launch_speed_mps;
     t["launch_direction_deg"] = r.launch_direction_rad * kRadToDeg;

@@ -71,6 +71,7 @@ nlohmann::json CountersJson(const TrialCounters& c) {
           {"kicks_missed", c.kicks_missed},
           {"kicks_not_settled", c.kicks_not_settled},
           {"kicks_fell", c.kicks_fell},
+          {"kicks_blocked", c.kicks_blocked},
           {"time_s", ExactJson(c.time_s)},
           {"last_touch", {c.last_touch_side, c.last_touch_robot}},
           {"attacker_kick_sent", c.attacker_kick_sent ? 1 : 0},
@@ -87,6 +88,7 @@ TrialCounters ReadCounters(const ShardValue& v, const TrialShape& shape) {
   c.kicks_missed = v["kicks_missed"].Count();
   c.kicks_not_settled = v["kicks_not_settled"].Count();
   c.kicks_fell = v["kicks_fell"].Count();
+  c.kicks_blocked = v["kicks_blocked"].Count();
   c.time_s = Time(v["time_s"], shape);
   const ShardValue last = v["last_touch"];
   if (last.Size() != 2) last.Fail("must be [side, robot]");

@@ -6,7 +6,7 @@
 //   {"outcome": 3,
 //    "counters": {"opponent_touches": [..], "opponent_kicks": [..], "attacker_backups": [..],
 //                 "attacker_kicks": [..], "grabs_failed": 0, "kicks_missed": 0,
-//                 "kicks_not_settled": 0, "kicks_fell": 0, "time_s": 12.5,
+//                 "kicks_not_settled": 0, "kicks_fell": 0, "kicks_blocked": 0, "time_s": 12.5,
 //                 "last_touch": [side, robot],
 //                 "attacker_kick_sent": 0, "shots": [on target, saved]},
 //    "team_counters": [["cases_retrieved", 2], ...],

@@ -66,6 +66,7 @@ Json SummaryJson(const ScenarioSummary& s, const PassingSetup& setup) {
           {"kicks_missed", s.kicks_missed},
           {"kicks_not_settled", s.kicks_not_settled},
           {"kicks_fell", s.kicks_fell},
+          {"kicks_blocked", s.kicks_blocked},
           {"time_s", StatJson(s.time_s)},
           {"time_without_timeouts_s", StatJson(s.time_ended_s)},
           {"team_counters", TeamCountersJson(s)}};
@@ -123,8 +124,9 @@ std::string PassingTrialsCsv(const PassingRun& run) {
   std::string csv = "scenario,trial,outcome,to_goal,time_s";
   for (const std::string& o : opponents) csv += ",touches_" + o + ",kicks_" + o;
   for (const std::string& a : kAttackerNames) csv += ",backups_" + a + ",kicks_" + a;
-  csv += ",grabs_failed,kicks_missed,kicks_not_settled,kicks_fell,last_touch,attacker_kick_sent,"
-         "shots_on_target,shots_saved\n";
+  csv +=
+      ",grabs_failed,kicks_missed,kicks_not_settled,kicks_fell,kicks_blocked,last_touch,"
+      "attacker_kick_sent,shots_on_target,shots_saved\n";
   for (const ScenarioTrials& st : run.result.scenarios) {
     for (std::size_t i = 0; i < st.trials.size(); ++i) {
       const TrialCounters& c = st.trials[i].counters;
@@ -142,9 +144,9 @@ std::string PassingTrialsCsv(const PassingRun& run) {
           : c.last_touch_side == static_cast<int>(Side::kAttackers)
               ? kAttackerNames[static_cast<std::size_t>(c.last_touch_robot)]
               : opponents[static_cast<std::size_t>(c.last_touch_robot)];
-      csv += Format(",%d,%d,%d,%d,%s,%d,%d,%d\n", c.grabs_failed, c.kicks_missed,
-                    c.kicks_not_settled, c.kicks_fell, last.c_str(), c.attacker_kick_sent ? 1 : 0,
-                    c.shots_on_target, c.shots_saved);
+      csv += Format(",%d,%d,%d,%d,%d,%s,%d,%d,%d\n", c.grabs_failed, c.kicks_missed,
+                    c.kicks_not_settled, c.kicks_fell, c.kicks_blocked, last.c_str(),
+                    c.attacker_kick_sent ? 1 : 0, c.shots_on_target, c.shots_saved);
     }
   }
   return csv;

@@ -53,6 +53,7 @@ ScenarioSummary Summarise(const ScenarioTrials& st, double confidence) {
     s.kicks_missed += t.counters.kicks_missed;
     s.kicks_not_settled += t.counters.kicks_not_settled;
     s.kicks_fell += t.counters.kicks_fell;
+    s.kicks_blocked += t.counters.kicks_blocked;
     if (t.outcome != TrialOutcome::kTimeout) times_ended.push_back(t.counters.time_s);
   }
   for (int k = 0; k < kTrialOutcomeCount; ++k) {

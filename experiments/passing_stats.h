@@ -40,6 +40,7 @@ struct ScenarioSummary {
   int kicks_missed = 0;                    // over all trials (physics executors only)
   int kicks_not_settled = 0;
   int kicks_fell = 0;
+  int kicks_blocked = 0;
   MeanStat time_s;
   MeanStat time_ended_s;
   // The attacking team's own counters (TeamPolicy::Counters, e.g. the CBR team's cases and

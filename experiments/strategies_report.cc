@@ -52,6 +52,7 @@ Json SummaryJson(const StrategySummary& s) {
             {"kicks_missed", s.kick_status.missed},
             {"kicks_not_settled", s.kick_status.not_settled},
             {"kicks_fell", s.kick_status.fell},
+            {"kicks_blocked", s.kick_status.blocked},
             {"goal_share", static_cast<double>(s.goals) / s.runs},
             {"goal_share_95", IntervalJson(s.goal_share_95)},
             {"kicks",
@@ -155,7 +156,7 @@ std::string StrategiesRunsCsv(const StrategiesRun& run) {
       "start,strategy,end,kicks,steps,time_s,walk_s,turn_s,around_ball_s,"
       "turns_nonzero,max_turn_deg,start_robot_x_m,start_robot_y_m,"
       "start_robot_theta_deg,start_ball_x_m,start_ball_y_m,kicks_missed,kicks_not_settled,"
-      "kicks_fell\n";
+      "kicks_fell,kicks_blocked\n";
   for (const StrategyRuns& runs : run.result.strategies) {
     for (std::size_t i = 0; i < runs.runs.size(); ++i) {
       const StrategyRun& r = runs.runs[i];
@@ -166,13 +167,13 @@ std::string StrategiesRunsCsv(const StrategiesRun& run) {
         nonzero += rho != 0.0;
         max_turn = std::max(max_turn, std::abs(rho) * kRadToDeg);
       }
-      csv += Format("%zu,%s,%s,%d,%d,%.3f,%.3f,%.3f,%.3f,%d,%.2f,%.3f,%.3f,%.2f,%.3f,%.3f,%d,%d,%d\n",
-                    i, std::string(StrategyName(runs.strategy)).c_str(),
-                    std::string(RunEndName(r.end)).c_str(), r.kicks, r.steps, r.TotalTime(),
-                    r.walk_s, r.turn_s, r.around_ball_s, nonzero, max_turn, start.robot.p_F.x(),
-                    start.robot.p_F.y(), start.robot.theta_rad * kRadToDeg, start.p_F_ball.x(),
-                    start.p_F_ball.y(), r.kick_status.missed, r.kick_status.not_settled,
-                    r.kick_status.fell);
+      csv += Format(
+          "%zu,%s,%s,%d,%d,%.3f,%.3f,%.3f,%.3f,%d,%.2f,%.3f,%.3f,%.2f,%.3f,%.3f,%d,%d,%d,%d\n", i,
+          std::string(StrategyName(runs.strategy)).c_str(), std::string(RunEndName(r.end)).c_str(),
+          r.kicks, r.steps, r.TotalTime(), r.walk_s, r.turn_s, r.around_ball_s, nonzero, max_turn,
+          start.robot.p_F.x(), start.robot.p_F.y(), start.robot.theta_rad * kRadToDeg,
+          start.p_F_ball.x(), start.p_F_ball.y(), r.kick_status.missed, r.kick_status.not_settled,
+          r.kick_status.fell, r.kick_status.blocked);
     }
   }
   return csv;

@@ -31,12 +31,18 @@ nlohmann::json RunJson(const StrategyRun& run) {
   nlohmann::json rotations = nlohmann::json::array(), steps = nlohmann::json::array();
   for (double r : run.rotations_rad) rotations.push_back(ExactJson(r));
   for (const StrategyStep& step : run.steps_taken) steps.push_back(StepJson(step));
-  nlohmann::json j = {static_cast<int>(run.end),    run.kicks,
-                      run.steps,                    ExactJson(run.turn_s),
-                      ExactJson(run.walk_s),        ExactJson(run.around_ball_s),
-                      static_cast<int>(run.last_contact), run.kick_status.missed,
-                      run.kick_status.not_settled,  rotations,
-                      run.kick_status.fell};
+  nlohmann::json j = {static_cast<int>(run.end),
+                      run.kicks,
+                      run.steps,
+                      ExactJson(run.turn_s),
+                      ExactJson(run.walk_s),
+                      ExactJson(run.around_ball_s),
+                      static_cast<int>(run.last_contact),
+                      run.kick_status.missed,
+                      run.kick_status.not_settled,
+                      rotations,
+                      run.kick_status.fell,
+                      run.kick_status.blocked};
   if (!steps.empty()) j.push_back(steps);
   return j;
 }
@@ -52,7 +58,7 @@ Enum ReadEnum(const ShardValue& v, Enum last) {
 // kick in some of them and one turn around the ball per kick, times that are not negative.
 StrategyRun ReadRun(const ShardValue& v, const StrategiesParams& params) {
   const int kicks = static_cast<int>(params.situation.kicks.kicks.size());
-  if (v.Size() != 11 && v.Size() != 12) v.Fail("must be a run of 11 or 12 entries");
+  if (v.Size() != 12 && v.Size() != 13) v.Fail("must be a run of 12 or 13 entries");
   StrategyRun run;
   run.end = ReadEnum(v.At(0), RunEnd::kStepLimit);
   run.steps = v.At(2).IntInRange(0, params.max_steps);
@@ -62,14 +68,14 @@ StrategyRun ReadRun(const ShardValue& v, const StrategiesParams& params) {
   run.around_ball_s = v.At(5).InRange(0.0, kMaxRunTime_s);
   run.last_contact = ReadEnum(v.At(6), Contact::kRobot);
   run.kick_status = {v.At(7).IntInRange(0, run.kicks), v.At(8).IntInRange(0, run.kicks),
-                     v.At(10).IntInRange(0, run.kicks)};
+                     v.At(10).IntInRange(0, run.kicks), v.At(11).IntInRange(0, run.kicks)};
   const ShardValue rotations = v.At(9);
   if (rotations.Size() != static_cast<std::size_t>(run.kicks))
     rotations.Fail("must have one turn per kick (" + std::to_string(run.kicks) + ")");
   for (std::size_t i = 0; i < rotations.Size(); ++i)
     run.rotations_rad.push_back(rotations.At(i).InRange(-2.0 * kPi, 2.0 * kPi));
-  if (v.Size() == 12) {
-    const ShardValue steps = v.At(11);
+  if (v.Size() == 13) {
+    const ShardValue steps = v.At(12);
     for (std::size_t i = 0; i < steps.Size(); ++i)
       run.steps_taken.push_back(ReadStep(steps.At(i), kicks));
   }

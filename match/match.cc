@@ -372,6 +372,7 @@ void Match::Launch(int robot) {
   result_.counters.kicks_missed += outcome.status == OutcomeStatus::kMissed;
   result_.counters.kicks_not_settled += outcome.status == OutcomeStatus::kNotSettled;
   result_.counters.kicks_fell += outcome.status == OutcomeStatus::kFell;
+  result_.counters.kicks_blocked += outcome.status == OutcomeStatus::kBlocked;
   world_.ball.holder = -1;
   world_.ball.roll = RollFromOutcome(world_.ball.p_F, outcome, s_.kicks->rolling_deceleration_mps2);
   world_.ball.leaving_kicker = robot;

@@ -62,10 +62,12 @@ struct TrialCounters {
   std::vector<int> attacker_kicks;
   int grabs_failed = 0;
   // Kicks whose executor reported a status other than ok (physics: the foot missed the ball, it
-  // had not settled at the time limit, or the robot fell); they still count as what happened.
+  // had not settled at the time limit, the robot fell, or a post, net or robot stood where it
+  // must stand and blocked the kick); they still count as what happened.
   int kicks_missed = 0;
   int kicks_not_settled = 0;
   int kicks_fell = 0;
+  int kicks_blocked = 0;
   double time_s = 0.0;
   // Who caused the end: the robot that last touched, grabbed or kicked the ball (side -1: no
   // robot ever did), and whether the last kick was an attacker's with no opponent touching the

@@ -47,8 +47,8 @@ void KickModel::Validate() const {
     for (std::size_t j = 0; j < i; ++j) {
       if (kicks[j].name == kick.name) throw InputError(at + "name: duplicate '" + kick.name + "'");
     }
-    RequireInRange(at + "speed_mps", kick.speed_mps, 0.0, 50.0);
-    RequireInRange(at + "sigma_speed_mps", kick.sigma_speed_mps, 0.0, 50.0);
+    RequireInRange(at + "speed_mps", kick.speed_mps, 0.0, kMaxKickSpeedMps);
+    RequireInRange(at + "sigma_speed_mps", kick.sigma_speed_mps, 0.0, kMaxKickSpeedMps);
     RequireInRange(at + "direction_deg", kick.direction_rad * kRadToDeg, -180.0, 180.0);
     RequireInRange(at + "sigma_direction_deg", kick.sigma_direction_rad * kRadToDeg, 0.0, 180.0);
     RequireInRange(at + "launch_offset_m", kick.launch_offset_m, 0.0, kMaxLaunchOffsetM);
@@ -117,16 +117,20 @@ std::string Quoted(std::string_view text) {
 std::string KickModelJson(const KickModel& model, std::string_view notes) {
   std::string out = "{\n  \"robot\": " + Quoted(model.robot) + ",\n";
   if (!notes.empty()) out += "  \"notes\": " + Quoted(notes) + ",\n";
-  out += "  \"rolling_deceleration_mps2\": " + Rounded(model.rolling_deceleration_mps2, 4) + ",\n";
+  out += "  \"rolling_deceleration_mps2\": " +
+         Rounded(model.rolling_deceleration_mps2, kKickFileSpeedDecimals) + ",\n";
   out += "  \"kicks\": [\n";
   for (std::size_t i = 0; i < model.kicks.size(); ++i) {
     const KickSpec& k = model.kicks[i];
-    out += "    {\"name\": " + Quoted(k.name) + ", \"speed_mps\": " + Rounded(k.speed_mps, 4) +
-           ", \"sigma_speed_mps\": " + Rounded(k.sigma_speed_mps, 4) +
-           ", \"direction_deg\": " + Rounded(k.direction_rad * kRadToDeg, 2) +
-           ", \"sigma_direction_deg\": " + Rounded(k.sigma_direction_rad * kRadToDeg, 2);
+    out += "    {\"name\": " + Quoted(k.name) +
+           ", \"speed_mps\": " + Rounded(k.speed_mps, kKickFileSpeedDecimals) +
+           ", \"sigma_speed_mps\": " + Rounded(k.sigma_speed_mps, kKickFileSpeedDecimals) +
+           ", \"direction_deg\": " + Rounded(k.direction_rad * kRadToDeg, kKickFileAngleDecimals) +
+           ", \"sigma_direction_deg\": " +
+           Rounded(k.sigma_direction_rad * kRadToDeg, kKickFileAngleDecimals);
     // Written only when there is one, so models without it keep their bytes (0.1 mm).
-    if (k.launch_offset_m != 0.0) out += ", \"launch_offset_m\": " + Rounded(k.launch_offset_m, 4);
+    if (k.launch_offset_m != 0.0)
+      out += ", \"launch_offset_m\": " + Rounded(k.launch_offset_m, kKickFileSpeedDecimals);
     out += "}";
     out += i + 1 < model.kicks.size() ? ",\n" : "\n";
   }

@@ -48,6 +48,16 @@ KickModel LoadKickModel(const std::filesystem::path& file);
 // first so that nothing the reader would refuse is ever written; `origin` names it in messages.
 KickModel ParseKickModel(std::string_view text, const std::string& origin);
 
+// The largest kick speed (and speed spread) a data file may give: far above any robot's kick,
+// a guard against a unit slip (assumption).
+inline constexpr double kMaxKickSpeedMps = 50.0;
+
+// The decimals a kick-model file keeps: speeds (m/s), lengths (m) and the deceleration (m/s^2)
+// to 4, angles (deg) to 2. A report that sets a fit beside a committed model prints both with
+// these, so both sides are rounded alike and the committed figure is shown as it is stored.
+inline constexpr int kKickFileSpeedDecimals = 4;
+inline constexpr int kKickFileAngleDecimals = 2;
+
 // The model as a kick-model file that LoadKickModel reads back: speeds rounded to 0.1 mm/s,
 // angles to 0.01 degree, the deceleration to 0.1 mm/s^2 (so files diff cleanly).
 std::string KickModelJson(const KickModel& model, std::string_view notes);

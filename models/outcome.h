@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -28,14 +29,18 @@ inline constexpr int kContactCount = 5;
 // Whether the outcome is what the action asked for. A physics trial can go wrong in ways the
 // coarse model cannot: the robot's foot missed the ball (it then lies where it was), the
 // ball did not come to rest within the time limit (it is reported where it was then), or the
-// robot, standing on its own feet, fell during the kick (the ball is reported where it rested). Such
-// outcomes still count as what physically happened; the status lets a reader count them.
-enum class OutcomeStatus : std::uint8_t { kOk, kMissed, kNotSettled, kFell };
-inline constexpr int kOutcomeStatusCount = 4;
+// robot, standing on its own feet, fell during the kick (the ball is reported where it rested), or
+// it could not take its stance at all because a post, net or obstacle robot stood where it must
+// (blocked: the kick was not played and the ball lies untouched). Such outcomes still count as what
+// physically happened; the status lets a reader count them. New statuses go at the end: files
+// store a status by its index (report/shard_file.h) and Python by its code.
+enum class OutcomeStatus : std::uint8_t { kOk, kMissed, kNotSettled, kFell, kBlocked };
+inline constexpr int kOutcomeStatusCount = 5;
 
 std::string_view CategoryName(Category category);
 std::string_view ContactName(Contact contact);
 std::string_view OutcomeStatusName(OutcomeStatus status);
+std::optional<OutcomeStatus> ParseOutcomeStatus(std::string_view name);  // nullopt: no status
 
 // The static scene a simulator is built for. Non-owning: the field and obstacles must outlive it.
 struct Scene {
@@ -73,16 +78,21 @@ struct Outcome {
   OutcomeStatus status = OutcomeStatus::kOk;
 };
 
+// Whether two outcomes are the same bit for bit (doubles by their bits, models/outcome.cc checks
+// at compile time that every field is compared): a trial played again must give its bytes.
+bool SameBits(const Outcome& a, const Outcome& b);
+
 // How many of a set of outcomes ended with each status (physics trials that missed the ball or
 // did not settle are counted, not dropped: a reader must see them).
 struct StatusCounts {
   int missed = 0;
   int not_settled = 0;
-  int fell = 0;  // the kicking robot fell (a floating base)
+  int fell = 0;     // the kicking robot fell (a floating base)
+  int blocked = 0;  // the kicking robot could not take its stance (a floating base)
   void Add(const StatusCounts& other);
 };
 StatusCounts CountStatuses(std::span<const Outcome> outcomes);
-// "2 missed the ball, 0 did not settle, 0 fell"
+// "2 missed the ball, 0 did not settle, 0 fell, 1 blocked"
 std::string StatusCountsText(const StatusCounts& counts);
 
 class OutcomeSimulator {

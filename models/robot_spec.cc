@@ -11,6 +11,7 @@
 #include "common/error.h"
 #include "common/geometry.h"
 #include "common/json_reader.h"
+#include "models/kick_model.h"
 #include "models/model_paths.h"
 
 namespace foresight {
@@ -210,7 +211,7 @@ RobotSpec LoadRobotSpec(const std::filesystem::path& file) {
   const std::vector<JsonObject> kicks = root.ObjectArray("kicks");
   if (kicks.empty()) root.Fail("kicks", "must list at least one kick");
   for (const JsonObject& kick : kicks) {
-    kick.RejectUnknownKeys({"name", "motion"});
+    kick.RejectUnknownKeys({"name", "motion", "launch_min_mps", "launch_max_mps"});
     const std::string name = kick.String("name");
     if (name.empty()) kick.Fail("name", "must not be empty");
     for (const auto& [other, unused] : spec.kick_motion_files) {
@@ -219,6 +220,26 @@ RobotSpec LoadRobotSpec(const std::filesystem::path& file) {
     const std::string motion = kick.String("motion");
     if (motion.empty()) kick.Fail("motion", "must name the kick's motion file");
     spec.kick_motion_files.emplace_back(name, Resolve(dir, motion));
+    if (kick.Has("launch_max_mps") && !kick.Has("launch_min_mps")) {
+      kick.Fail("launch_max_mps", "needs launch_min_mps");
+    }
+    if (kick.Has("launch_min_mps")) {
+      LaunchTarget target;
+      target.min_mps = kick.Number("launch_min_mps");
+      if (!(target.min_mps > 0.0 && target.min_mps <= kMaxKickSpeedMps)) {
+        kick.Fail("launch_min_mps", "must be in (0, " + FormatNumber(kMaxKickSpeedMps) + "], got " +
+                                        FormatNumber(target.min_mps));
+      }
+      if (kick.Has("launch_max_mps")) {
+        target.max_mps = kick.Number("launch_max_mps");
+        if (!(*target.max_mps > target.min_mps && *target.max_mps <= kMaxKickSpeedMps)) {
+          kick.Fail("launch_max_mps", "must be above launch_min_mps and at most " +
+                                          FormatNumber(kMaxKickSpeedMps) + ", got " +
+                                          FormatNumber(*target.max_mps));
+        }
+      }
+      spec.launch_targets.emplace_back(name, target);
+    }
   }
 
   spec.variation = ReadVariation(root.Object("trial_variation"));

@@ -29,12 +29,21 @@ struct TrialVariation {
   double MaxSpeedFactor() const { return 1.0 + kClipSigmas * motion_speed_sigma_rel; }
 };
 
+// The launch a shipped kick must give standing on its own feet (optional per kick in
+// robot.json: `launch_min_mps`, and `launch_max_mps` when the kick has a ceiling): the
+// requirement the robot's kicks are held to (tests/physics/floating_falls_test.cc).
+struct LaunchTarget {
+  double min_mps = 0.0;
+  std::optional<double> max_mps;
+};
+
 struct RobotSpec {
   std::string name;
   std::filesystem::path urdf_file;  // resolved
   double base_height_m = 0.0;       // height of the root link's frame above the carpet
   std::vector<std::pair<std::string, double>> standing_pose_rad;  // joints not named: 0
   std::vector<std::pair<std::string, std::filesystem::path>> kick_motion_files;  // resolved
+  std::vector<std::pair<std::string, LaunchTarget>> launch_targets;  // kicks that have one
   TrialVariation variation;
   MotorTable motors;  // joint name -> its motor's torque-speed line
   // On a floating base these joints get motors besides the motion's and its balance's (the

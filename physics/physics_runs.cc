@@ -38,6 +38,7 @@ TrialSummary Summarize(std::span<const TrialResult> results) {
     s.launched += r.launched;
     s.settled += r.settled;
     s.fell += r.fell;
+    s.blocked += r.blocked;
     s.max_tilt_rad = std::max(s.max_tilt_rad, r.max_tilt_rad);
     s.placement_redrawn += r.draw.placement_redraws > 0;
     s.placement_redraws += r.draw.placement_redraws;

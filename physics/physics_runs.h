@@ -43,6 +43,7 @@ struct TrialSummary {
   int launched = 0;
   int settled = 0;
   int fell = 0;                  // the robot fell (floating base)
+  int blocked = 0;               // the robot could not take its stance (floating base)
   double max_tilt_rad = 0.0;     // the torso's largest tilt over all trials (floating base)
   // Trials whose first placement draw put the ball inside the robot, and the rejected draws in
   // all (trial.h: such draws are drawn again).

@@ -17,9 +17,10 @@ double ClippedNormal(RandomStream& stream) {
   return std::clamp(stream.NextNormal(), -TrialVariation::kClipSigmas, TrialVariation::kClipSigmas);
 }
 
-// A fall is what went wrong first (a fallen robot may also have missed); a missed ball then
-// lies still, so it also settles.
-OutcomeStatus StatusOf(bool fell, bool touched, bool settled) {
+// A blocked stance plays nothing, so nothing else can have gone wrong; a fall is what went wrong
+// first (a fallen robot may also have missed); a missed ball then lies still, so it also settles.
+OutcomeStatus StatusOf(bool blocked, bool fell, bool touched, bool settled) {
+  if (blocked) return OutcomeStatus::kBlocked;
   if (fell) return OutcomeStatus::kFell;
   if (!touched) return OutcomeStatus::kMissed;
   return settled ? OutcomeStatus::kOk : OutcomeStatus::kNotSettled;
@@ -117,7 +118,7 @@ TrialResult RunKickTrial(const PhysicsScene& scene, const KickRequest& request) 
   result.settled = roll.settled;
   result.outcome = Finish(monitor, roll, t_zero);
   if (recorder) result.scene = recorder->Finish();
-  result.outcome.status = StatusOf(result.fell, result.touched, result.settled);
+  result.outcome.status = StatusOf(result.blocked, result.fell, result.touched, result.settled);
   result.trace = std::move(monitor.trace());
   return result;
 }
@@ -135,7 +136,7 @@ TrialResult RunRollTrial(const PhysicsScene& scene, const BallState& start, std:
   result.p_F_launch = start.Planar();
   result.settled = roll.settled;
   result.outcome = Finish(monitor, roll, 0.0);
-  result.outcome.status = StatusOf(false, true, result.settled);
+  result.outcome.status = StatusOf(false, false, true, result.settled);
   result.trace = std::move(monitor.trace());
   return result;
 }

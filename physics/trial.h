@@ -50,7 +50,7 @@ struct TrialResult {
   bool settled = false;   // it came to rest within the time limit
   bool fell = false;      // the robot fell during the kick (floating base)
   // The robot could not take its stance: a post, net or obstacle robot stood where it must
-  // (floating base). The motion was not played; the ball lies untouched (status missed).
+  // (floating base). The motion was not played; the ball lies untouched (status blocked).
   bool blocked = false;
   double stance_overlap_m = 0.0;  // how deep the stance reached into them
   double max_tilt_rad = 0.0;      // the robot torso's largest tilt in the kick (floating base)

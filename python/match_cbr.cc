@@ -49,7 +49,8 @@ int Sum(const std::vector<int>& counts) {
 py::dict Passing(const py::object& config, const py::object& team, const py::object& scenarios,
                  const py::object& trials, const py::object& seed, const py::object& threads,
                  bool mirror, bool physics, const py::object& kicks,
-                 const std::optional<std::filesystem::path>& models, const py::object& progress) {
+                 const std::optional<std::filesystem::path>& models, const py::object& progress,
+                 const py::object& base) {
   PassingOptions o;
   o.config = FlagText(config);
   if (!team.is_none()) o.team = FlagText(team);
@@ -65,6 +66,7 @@ py::dict Passing(const py::object& config, const py::object& team, const py::obj
   o.mirror = mirror;
   o.physics = physics;
   if (!kicks.is_none()) o.kicks_file = FlagText(kicks);
+  if (!base.is_none()) o.base = FlagText(base);
   const std::filesystem::path dir = ModelsDir(models);
   std::vector<std::string> teams;
   const std::vector<PassingResult> results = RunLongCall(progress, [&] {
@@ -95,12 +97,19 @@ py::dict Passing(const py::object& config, const py::object& team, const py::obj
       results, [&](int, S s, int i) { return Sum(at(s, i).counters.attacker_kicks); });
   out["opponent_touches"] = TrialColumn<std::int32_t>(
       results, [&](int, S s, int i) { return Sum(at(s, i).counters.opponent_touches); });
-  out["shots_on_target"] = TrialColumn<std::int32_t>(
-      results, [&](int, S s, int i) { return at(s, i).counters.shots_on_target; });
-  out["shots_saved"] = TrialColumn<std::int32_t>(
-      results, [&](int, S s, int i) { return at(s, i).counters.shots_saved; });
-  out["grabs_failed"] = TrialColumn<std::int32_t>(
-      results, [&](int, S s, int i) { return at(s, i).counters.grabs_failed; });
+  // One counter of every trial (match/trial_result.h).
+  const auto counter = [&](int TrialCounters::*field) {
+    return TrialColumn<std::int32_t>(
+        results, [&, field](int, S s, int i) { return at(s, i).counters.*field; });
+  };
+  out["shots_on_target"] = counter(&TrialCounters::shots_on_target);
+  out["shots_saved"] = counter(&TrialCounters::shots_saved);
+  out["grabs_failed"] = counter(&TrialCounters::grabs_failed);
+  // Kicks whose physics trial did not end ok (physics=True only; models/outcome.h).
+  out["kicks_missed"] = counter(&TrialCounters::kicks_missed);
+  out["kicks_not_settled"] = counter(&TrialCounters::kicks_not_settled);
+  out["kicks_fell"] = counter(&TrialCounters::kicks_fell);
+  out["kicks_blocked"] = counter(&TrialCounters::kicks_blocked);
   std::vector<std::string> outcomes;
   for (int c = 0; c < kTrialOutcomeCount; ++c) {
     outcomes.emplace_back(TrialOutcomeName(static_cast<TrialOutcome>(c)));
@@ -132,15 +141,18 @@ void AddMatchAndCbr(py::module_& m) {
         py::arg("scenarios") = py::none(), py::arg("trials") = py::none(),
         py::arg("seed") = py::none(), py::arg("threads") = py::none(), py::arg("mirror") = false,
         py::arg("physics") = false, py::arg("kicks") = py::none(), py::arg("models") = py::none(),
-        py::arg("progress") = py::none(),
+        // base last: older calls that pass arguments by position keep working
+        py::arg("progress") = py::none(), py::arg("base") = py::none(),
         "The passing experiment's trials in the match simulator (`foresight experiment "
         "passing`): config 'dg' or '2d' (or a file), team 'reactive', 'cbr' or 'both', "
         "scenarios a list of 1-based numbers (None: all), trials per scenario. Returns NumPy "
         "arrays, one entry per trial in play order: team (code into team_names), scenario, "
         "trial, outcome (code into outcome_names), to_goal, time_s (simulated seconds), "
-        "attacker_kicks, opponent_touches, shots_on_target, shots_saved, grabs_failed. The "
-        "same seed gives the same trials as the command. Ctrl-C stops it; progress(label, "
-        "done, total).");
+        "attacker_kicks, opponent_touches, shots_on_target, shots_saved, grabs_failed, and the "
+        "kicks whose physics trial missed, did not settle, fell or was blocked (kicks_missed, "
+        "kicks_not_settled, kicks_fell, kicks_blocked; 0 without physics). base 'fixed' or "
+        "'floating' (with physics=True) replaces the physics file's. The same seed gives the "
+        "same trials as the command. Ctrl-C stops it; progress(label, done, total).");
   py::class_<CaseBaseObject>(m, "CaseBase",
                              "A case base (Ros et al. 2009) and the retrieval parameters, loaded "
                              "once (None: MODELS/cases and MODELS/cbr/retrieval.json).")

@@ -61,6 +61,7 @@ py::dict Simulate(const std::filesystem::path& situation, const std::string& kic
   out["launched"] = Column<bool>(r, [](T t) { return t.launched; });
   out["settled"] = Column<bool>(r, [](T t) { return t.settled; });
   out["fell"] = Column<bool>(r, [](T t) { return t.fell; });
+  out["blocked"] = Column<bool>(r, [](T t) { return t.blocked; });
   out["max_tilt_deg"] = Column<double>(r, [](T t) { return t.max_tilt_rad * kRadToDeg; });
   out["launch_speed_mps"] = Column<double>(r, [](T t) { return t.launch_speed_mps; });
   out["launch_direction_deg"] =
@@ -99,7 +100,8 @@ void AddPhysicsFunctions(py::module_& m) {
         "Physics trials of one kick (`foresight simulate`): a dict of NumPy arrays, one entry "
         "per trial (rest_x_m, rest_y_m in F; category, first_contact, status as codes into "
         "category_names, contact_names, status_names; launch_speed_mps, launch_direction_deg in "
-        "the intended robot frame; fell and max_tilt_deg on a floating base (base='floating'); "
+        "the intended robot frame; fell, blocked and max_tilt_deg on a floating base "
+        "(base='floating'); "
         "the drawn perturbations). Ctrl-C stops it; progress(label, done, total) hears how far "
         "it is.");
 }

@@ -37,7 +37,7 @@ ShardPart ParsePart(const std::filesystem::path& dir) {
   if (root.Integer("foresight_shard") != kShardFormat) {
     root.Fail("foresight_shard", "format " + std::to_string(root.Integer("foresight_shard")) +
                                      " is not this foresight's (" + std::to_string(kShardFormat) +
-                                     ")");
+                                     "); run the shard again with this foresight");
   }
   ShardHeader& h = part.header;
   h.command = root.String("command");

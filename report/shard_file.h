@@ -22,7 +22,10 @@
 namespace foresight {
 
 inline constexpr std::string_view kShardFileName = "shard.json";
-inline constexpr int kShardFormat = 1;
+// The format of a shard file's results. 2: physics trials whose stance was blocked are counted
+// as `blocked`, no longer among the missed (status lists have four counts, outcome status codes
+// reach 4); a format-1 shard is refused, since its missed counts hold the blocked trials.
+inline constexpr int kShardFormat = 2;
 // A shard file holds one slice of a run's raw results: a 10,000-start strategies run is about
 // 10 MB whole, so 1 GiB is far above any real shard (assumption) and below this machine's memory.
 inline constexpr std::uintmax_t kMaxShardBytes = std::uintmax_t{1} << 30;

@@ -71,6 +71,7 @@
 #include "common/progress_log.h"
 #include "common/quantile.h"
 #include "common/random.h"
+#include "common/same_bits.h"
 #include "common/shard.h"
 #include "common/strict_json.h"
 #include "common/worker_threads.h"

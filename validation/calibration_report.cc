@@ -65,11 +65,9 @@ int PlacementRedrawn(const CalibratedKick& kick) {
 Json KickJson(const CalibrationRun& run, const CalibratedKick& kick) {
   const KickCalibration& c = kick.fit;
   const double level = run.settings.normality_level;
-  Json j{{"name", c.kick},
-         {"observations", c.observations},
-         {"missed", kick.missed},
-         {"fell", kick.fell},
-         {"placement_redrawn", PlacementRedrawn(kick)}};
+  Json j{{"name", c.kick},          {"observations", c.observations},
+         {"missed", kick.missed},   {"fell", kick.fell},
+         {"blocked", kick.blocked}, {"placement_redrawn", PlacementRedrawn(kick)}};
   if (const auto i = run.base.Find(c.kick)) j["committed"] = KickSpecJson(run.base.kicks[*i]);
   j["speed"] = Json{{"mean_mps", c.speed.mean},
                     {"mean_ci_mps", IntervalJson(c.speed.mean_ci)},
@@ -134,6 +132,11 @@ std::vector<std::string> CalibrationWarnings(const CalibrationRun& run) {
     if (kick.fell > 0) {
       warnings.push_back(c.kick + ": the robot fell in " + std::to_string(kick.fell) +
                          " trials; they are not in the fit");
+    }
+    if (kick.blocked > 0) {
+      warnings.push_back(
+          c.kick + ": a post, net or obstacle robot stood where the robot must stand in " +
+          std::to_string(kick.blocked) + " trials (blocked, not played); they are not in the fit");
     }
   }
   if (run.speeds_from_rest > 0) {

@@ -23,6 +23,7 @@ struct CalibratedKick {
   std::vector<TrialDraw> draws;
   int missed = 0;  // physics trials in which the robot did not touch the ball
   int fell = 0;    // physics trials in which the robot fell (not in the fit either)
+  int blocked = 0;  // physics trials whose stance was blocked (floating base; not in the fit)
   std::optional<MotionClearance> clearance;  // physics only: the motion's lowest point
 };
 

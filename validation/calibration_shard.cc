@@ -81,8 +81,12 @@ nlohmann::json CalibrationShardResults(const PhysicsCalibration& calibration, co
         per_kick.push_back(TrialJson(kick.observations[n], kick.draws[n]));
         ++next[j];
       } else {
-        const bool fell = std::binary_search(kick.fell_trials.begin(), kick.fell_trials.end(), trial);
-        per_kick.push_back(fell ? nlohmann::json("fell") : nlohmann::json(nullptr));  // or missed
+        const auto among = [trial](const std::vector<int>& trials) {
+          return std::binary_search(trials.begin(), trials.end(), trial);
+        };
+        per_kick.push_back(among(kick.fell_trials)      ? nlohmann::json("fell")
+                           : among(kick.blocked_trials) ? nlohmann::json("blocked")
+                                                        : nlohmann::json(nullptr));  // missed
       }
     }
     items.push_back({{"trial", trial}, {"kicks", per_kick}});
@@ -103,9 +107,16 @@ void MergeCalibrationShards(PhysicsCalibration& plan, int trials,
       if (kicks.At(j).IsNull()) {
         ++plan.kicks[j].missed;
       } else if (kicks.At(j).IsString()) {
-        if (kicks.At(j).String() != "fell") kicks.At(j).Fail("must be a trial, null or \"fell\"");
-        ++plan.kicks[j].fell;
-        plan.kicks[j].fell_trials.push_back(trial);
+        const std::string status = kicks.At(j).String();
+        if (status == "fell") {
+          ++plan.kicks[j].fell;
+          plan.kicks[j].fell_trials.push_back(trial);
+        } else if (status == "blocked") {
+          ++plan.kicks[j].blocked;
+          plan.kicks[j].blocked_trials.push_back(trial);
+        } else {
+          kicks.At(j).Fail("must be a trial, null, \"fell\" or \"blocked\"");
+        }
       } else {
         ReadTrial(kicks.At(j), plan.kicks[j], trial);
       }

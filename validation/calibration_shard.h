@@ -2,7 +2,8 @@
 // i mod N = I of every kick (each kick keeps its own seed stream, so a trial's result does not
 // depend on the split). Its result is, per kick, the observation (launch, roll distance, the
 // rolling samples of the deceleration fit) and the drawn perturbations, null when the robot
-// missed the ball, or "fell" when it fell; numbers written exactly, so the merged fit has the bytes of an unsharded run.
+// missed the ball, "fell" when it fell, "blocked" when it could not take its stance; numbers
+// written exactly, so the merged fit has the bytes of an unsharded run.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -10,6 +10,7 @@
 #include "common/error.h"
 #include "common/geometry.h"
 #include "models/field_spec.h"
+#include "models/kick_model.h"
 #include "models/model_paths.h"
 #include "physics/physics_scene.h"
 #include "physics/robot_impact.h"
@@ -198,12 +199,14 @@ CheckResult Run(const KickDirectionCheck& c, const CheckSpec& spec,
   const double mean = touched > 0 ? MeanDirection(kick.observations) : 0.0;
   const double expected = physics.model.kicks[kick.kick_index].direction_rad;
   const double error_deg = std::abs(WrapAngle(mean - expected)) * kRadToDeg;
-  const bool ok = kick.missed == 0 && kick.fell == 0 && error_deg <= c.max_error_deg;
+  const bool ok =
+      kick.missed == 0 && kick.fell == 0 && kick.blocked == 0 && error_deg <= c.max_error_deg;
   return Result(ok, std::to_string(touched) + " of " + std::to_string(settings.trials) +
                         " trials touched the ball standing, " + std::to_string(kick.fell) +
-                        " fell; mean direction " + Fixed(mean * kRadToDeg, 1) +
-                        " deg, model " + Fixed(expected * kRadToDeg, 1) + " deg (off by " +
-                        Fixed(error_deg, 1) + ", limit " + Fixed(c.max_error_deg, 1) + ")");
+                        " fell, " + std::to_string(kick.blocked) + " blocked; mean direction " +
+                        Fixed(mean * kRadToDeg, 1) + " deg, model " +
+                        Fixed(expected * kRadToDeg, 1) + " deg (off by " + Fixed(error_deg, 1) +
+                        ", limit " + Fixed(c.max_error_deg, 1) + ")");
 }
 
 CheckResult Run(const CalibrationBandCheck& c, const CheckSpec& spec,
@@ -226,13 +229,20 @@ CheckResult Run(const CalibrationBandCheck& c, const CheckSpec& spec,
         within(fit.direction.sd_rad, m.sigma_direction_rad) &&
         std::abs(WrapAngle(fit.direction.mean_rad - m.direction_rad)) * kRadToDeg <= c.band_deg;
     ok = ok && kick_ok;
+    // Both sides with the kick file's decimals: the committed figure as stored, the fit as a
+    // calibration would store it.
+    const auto pair = [](double fitted, double committed, int decimals) {
+      return Fixed(fitted, decimals) + "/" + Fixed(committed, decimals);
+    };
     detail += (detail.empty() ? "" : "; ") + m.name + (kick_ok ? " ok" : " OUT") + " (v0 " +
-              Fixed(fit.speed.mean, 3) + "/" + Fixed(m.speed_mps, 3) + ", sigma_v " +
-              Fixed(fit.speed.sd, 3) + "/" + Fixed(m.sigma_speed_mps, 3) + ", alpha " +
-              Fixed(fit.direction.mean_rad * kRadToDeg, 1) + "/" +
-              Fixed(m.direction_rad * kRadToDeg, 1) + ", sigma_alpha " +
-              Fixed(fit.direction.sd_rad * kRadToDeg, 2) + "/" +
-              Fixed(m.sigma_direction_rad * kRadToDeg, 2) + ")";
+              pair(fit.speed.mean, m.speed_mps, kKickFileSpeedDecimals) + ", sigma_v " +
+              pair(fit.speed.sd, m.sigma_speed_mps, kKickFileSpeedDecimals) + ", alpha " +
+              pair(fit.direction.mean_rad * kRadToDeg, m.direction_rad * kRadToDeg,
+                   kKickFileAngleDecimals) +
+              ", sigma_alpha " +
+              pair(fit.direction.sd_rad * kRadToDeg, m.sigma_direction_rad * kRadToDeg,
+                   kKickFileAngleDecimals) +
+              ")";
   }
   return Result(ok, "fitted/committed: " + detail);
 }

@@ -243,13 +243,16 @@ bool WorseSituation(const SituationFidelity& a, const SituationFidelity& b) {
   return x.tau_b < y.tau_b;
 }
 
-std::vector<int> WorstFirst(const FidelityResult& result) {
-  std::vector<int> order(result.situations.size());
+std::vector<int> WorstFirst(const std::vector<SituationFidelity>& situations) {
+  std::vector<int> order(situations.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return WorseSituation(result.situations[a], result.situations[b]);
-  });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return WorseSituation(situations[a], situations[b]); });
   return order;
+}
+
+std::vector<int> WorstFirst(const FidelityResult& result) {
+  return WorstFirst(result.situations);
 }
 
 }  // namespace foresight

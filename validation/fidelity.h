@@ -130,6 +130,7 @@ int FidelityCoarseSamples(const FidelitySet& set, const FidelitySettings& settin
 bool WorseSituation(const SituationFidelity& a, const SituationFidelity& b);
 
 // The situations ordered from worst to best by WorseSituation, ties in set order.
+std::vector<int> WorstFirst(const std::vector<SituationFidelity>& situations);
 std::vector<int> WorstFirst(const FidelityResult& result);
 
 }  // namespace foresight

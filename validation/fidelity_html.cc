@@ -163,7 +163,8 @@ std::string FidelityHtml(const FidelityRun& run) {
       {"robot", p.Input("robot")},
       {"field", p.Input("field")},
       {"kick model", p.Input("kick_model") + " (" + p.Input("kick_model_hash") + ")"},
-      {"physics", p.Input("physics_file")}};
+      {"physics", p.Input("physics_file")},
+      {"robot base", p.Input("robot_base")}};
   for (auto& row : ProvenanceRows(p)) header.push_back(std::move(row));
   html.KeyValues(header);
   html.Heading(2, "Agreement");

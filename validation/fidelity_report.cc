@@ -41,7 +41,8 @@ Json SituationJson(const SituationFidelity& s) {
          {"converged", ChoiceJson(s, s.converged)},
          {"physics_missed", s.physics_status.missed},
          {"physics_not_settled", s.physics_status.not_settled},
-         {"physics_fell", s.physics_status.fell}};
+         {"physics_fell", s.physics_status.fell},
+         {"physics_blocked", s.physics_status.blocked}};
   j["decisions"] = Json::array();
   for (const StrategyAgreement& a : s.decisions) {
     j["decisions"].push_back(Json{{"strategy", StrategyName(a.strategy)},
@@ -63,7 +64,8 @@ Json SituationJson(const SituationFidelity& s) {
              {"physics_ci", Json::array({c.physics_ci.low, c.physics_ci.high})},
              {"physics_missed", c.physics_status.missed},
              {"physics_not_settled", c.physics_status.not_settled},
-             {"physics_fell", c.physics_status.fell}});
+             {"physics_fell", c.physics_status.fell},
+             {"physics_blocked", c.physics_status.blocked}});
   }
   return j;
 }
@@ -116,6 +118,7 @@ Json FidelityJson(const FidelityRun& run) {
             {"physics_missed", r.physics_status.missed},
             {"physics_not_settled", r.physics_status.not_settled},
             {"physics_fell", r.physics_status.fell},
+            {"physics_blocked", r.physics_status.blocked},
             {"run_time_s", p.run_time_s}});
   j["classes"] = Json::array();
   for (const ClassSummary& c : r.classes) {
@@ -143,7 +146,7 @@ std::string FidelityCandidatesCsv(const FidelityRun& run) {
   std::string out =
       "situation,class,kick,rotation_deg,coarse_utility,converged_utility,physics_utility,"
       "physics_ci_low,physics_ci_high,coarse_p_goal,physics_p_goal,coarse_p_out,physics_p_out,"
-      "physics_missed,physics_not_settled,physics_fell\n";
+      "physics_missed,physics_not_settled,physics_fell,physics_blocked\n";
   for (const SituationFidelity& s : run.result.situations) {
     for (const CandidateScore& c : s.candidates) {
       out += s.situation.name + "," + s.situation_class + "," +
@@ -154,7 +157,8 @@ std::string FidelityCandidatesCsv(const FidelityRun& run) {
              Fixed(c.physics.p_opp_goal, 4) + "," + Fixed(c.coarse.p_out, 4) + "," +
              Fixed(c.physics.p_out, 4) + "," + std::to_string(c.physics_status.missed) + "," +
              std::to_string(c.physics_status.not_settled) + "," +
-             std::to_string(c.physics_status.fell) + "\n";
+             std::to_string(c.physics_status.fell) + "," +
+             std::to_string(c.physics_status.blocked) + "\n";
     }
   }
   return out;

@@ -69,11 +69,13 @@ ActionEvaluation ReadEvaluation(const ShardValue& v, const EvaluationParams& par
   return e;
 }
 
-nlohmann::json StatusJson(const StatusCounts& s) { return {s.missed, s.not_settled, s.fell}; }
+nlohmann::json StatusJson(const StatusCounts& s) {
+  return {s.missed, s.not_settled, s.fell, s.blocked};
+}
 
 StatusCounts ReadStatus(const ShardValue& v) {
-  if (v.Size() != 3) v.Fail("must be [missed, not_settled, fell]");
-  return {v.At(0).Count(), v.At(1).Count(), v.At(2).Count()};
+  if (v.Size() != 4) v.Fail("must be [missed, not_settled, fell, blocked]");
+  return {v.At(0).Count(), v.At(1).Count(), v.At(2).Count(), v.At(3).Count()};
 }
 
 // A number that is finite or, where a statistic is undefined (tau-b of ties), NaN.

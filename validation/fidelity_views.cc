@@ -56,12 +56,8 @@ std::string FidelityActionText(const Situation& situation, int kick, double rota
 }
 
 std::vector<int> FidelityViewSituations(const std::vector<SituationFidelity>& situations) {
-  std::vector<int> order(situations.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return WorseSituation(situations[a], situations[b]); });
   std::vector<int> shown;
-  for (int i : order) {
+  for (int i : WorstFirst(situations)) {
     if (static_cast<int>(shown.size()) >= kFidelityViewSituations) break;
     if (HasKick(situations[static_cast<std::size_t>(i)])) shown.push_back(i);
   }

@@ -52,6 +52,11 @@ PhysicsKickTrials PlayKick(const PhysicsSetup& setup, const PhysicsCalibrationSe
   for (std::size_t k = 0; k < results.size(); ++k) {
     const TrialResult& trial = results[k];
     // A kick is what the model describes when the robot stood through it and struck the ball.
+    if (trial.blocked) {
+      ++kick.blocked;
+      kick.blocked_trials.push_back(settings.shard.Item(static_cast<int>(k)));
+      continue;
+    }
     if (trial.fell) {
       ++kick.fell;
       kick.fell_trials.push_back(settings.shard.Item(static_cast<int>(k)));

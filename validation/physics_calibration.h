@@ -44,12 +44,17 @@ struct PhysicsKickTrials {
   std::vector<KickObservation> observations;
   std::vector<TrialDraw> draws;
   std::vector<int> trials;  // the trial index of each observation
-  int missed = 0;  // the robot did not touch the ball (and did not fall)
+  int missed = 0;  // the robot did not touch the ball (and did not fall, and was not blocked)
   // The robot fell (floating base), whether before or after it launched the ball: a fall is
   // counted here and never observed, so a launch the robot fell after is not in the fit (the
   // kick model describes kicks the robot stands through; the report prints the count).
   int fell = 0;
   std::vector<int> fell_trials;  // the trial index of each fall, ascending
+  // The robot could not take its stance (floating base: a post, net or obstacle robot stood
+  // there) and the kick was not played. Left out of the fit as a miss is: it says nothing
+  // about the kick. The trial index of each, ascending.
+  int blocked = 0;
+  std::vector<int> blocked_trials;
   MotionClearance clearance;  // of the kick's motion (physics/motion_clearance.h)
 };
 

@@ -1,6 +1,5 @@
 #include "validation/physics_evaluator.h"
 
-#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -43,20 +42,6 @@ TrialResult PhysicsActionEvaluator::Trial(int kick_index, double rotation_rad, i
   const ConcreteAction action = MakeAction(situation_.kicks, kick_index, rotation_rad, sample);
   return simulator_.Run(sample.state, action, false, scene_rate_hz);
 }
-
-namespace {
-
-bool SameBits(double a, double b) {
-  return std::memcmp(&a, &b, sizeof a) == 0;
-}
-
-bool SameBits(const Outcome& a, const Outcome& b) {
-  return SameBits(a.p_F_rest.x(), b.p_F_rest.x()) && SameBits(a.p_F_rest.y(), b.p_F_rest.y()) &&
-         a.category == b.category && a.first_contact == b.first_contact &&
-         SameBits(a.time_s, b.time_s) && a.status == b.status;
-}
-
-}  // namespace
 
 TrialResult PhysicsActionEvaluator::Replay(int kick_index, double rotation_rad, int i,
                                            double scene_rate_hz) {

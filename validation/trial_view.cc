@@ -13,6 +13,10 @@ ViewerNumbers TrialNumbers(const TrialResult& r) {
   rows.push_back({"outcome", std::string(CategoryName(o.category)) + ", " +
                                  std::string(OutcomeStatusName(o.status))});
   rows.push_back({"first contact", std::string(ContactName(o.first_contact))});
+  if (r.blocked) {
+    rows.push_back({"stance", Format("blocked: %.1f mm inside a post, net or robot; not played",
+                                     r.stance_overlap_m * 1e3)});
+  }
   if (r.touched) {
     rows.push_back({"launch speed", Format("%.3f m/s", r.launch_speed_mps)});
     rows.push_back({"launch direction", Format("%+.2f deg (robot frame)",

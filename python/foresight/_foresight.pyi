@@ -158,7 +158,7 @@ def simulate(situation: PathLike, kick: str, trials: Optional[int] = None,
              base: Optional[str] = None, progress: Progress = None) -> Dict[str, Any]:
     """Physics trials of one kick: NumPy arrays, one entry per trial: rest_x_m, rest_y_m (F),
     time_s, launch_speed_mps, launch_direction_deg (intended robot frame), touched, launched,
-    settled, fell (bool), max_tilt_deg, category, first_contact, status (int8 codes into
+    settled, fell, blocked (bool), max_tilt_deg, category, first_contact, status (int8 codes into
     category_names, contact_names, status_names), placement_dx_m, placement_dy_m,
     placement_dtheta_deg, speed_factor, carpet_factor, placement_redraws (int32). base:
     "fixed" or "floating"."""
@@ -191,10 +191,13 @@ def passing(config: Union[str, PathLike], team: Optional[str] = None,
             scenarios: Optional[Sequence[int]] = None, trials: Optional[int] = None,
             seed: Optional[int] = None, threads: Optional[int] = None, mirror: bool = False,
             physics: bool = False, kicks: Optional[PathLike] = None,
-            models: Optional[PathLike] = None, progress: Progress = None) -> Dict[str, Any]:
+            models: Optional[PathLike] = None, progress: Progress = None,
+            base: Optional[str] = None) -> Dict[str, Any]:
     """The passing experiment's trials in the match simulator: config "dg" or "2d" (or a
     file), team "reactive", "cbr" or "both", scenarios (1-based; None: all), trials per
     scenario. NumPy arrays, one entry per trial in play order: team (int8 code into
     team_names), scenario, trial (int32), outcome (int8 code into outcome_names: goal, close,
     block, out, penalty_area, timeout), to_goal (bool), time_s (simulated), attacker_kicks,
-    opponent_touches, shots_on_target, shots_saved, grabs_failed (int32)."""
+    opponent_touches, shots_on_target, shots_saved, grabs_failed, kicks_missed,
+    kicks_not_settled, kicks_fell, kicks_blocked (int32; the last four count physics kicks
+    that did not end ok). base: "fixed" or "floating", with physics=True."""

@@ -78,7 +78,7 @@ def test_simulate_arrays_have_one_entry_per_trial_and_match_the_cli():
     assert trials["placement_redraws"].dtype == np.int32  # placements that put the ball inside
     assert trials["category_names"] == ["infield", "opp_goal", "own_goal", "out"]
     assert trials["contact_names"] == ["none", "post", "net", "obstacle", "robot"]
-    assert trials["status_names"] == ["ok", "missed", "not_settled", "fell"]
+    assert trials["status_names"] == ["ok", "missed", "not_settled", "fell", "blocked"]
     # The same trials as `foresight simulate --json`, in metres and degrees.
     code, out, _ = cli("simulate", "--situation", SITUATION, "--kick", "forward", "--trials", "6",
                        "--seed", "4", "--json")

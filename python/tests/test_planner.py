@@ -200,3 +200,27 @@ def test_passing_plays_the_trials_of_the_command(tmp_path):
         assert int(row["touches_D"]) + int(row["touches_G"]) == mine["opponent_touches"][i]
         assert int(row["shots_on_target"]) == mine["shots_on_target"][i]
         assert int(row["grabs_failed"]) == mine["grabs_failed"][i]
+
+
+def test_passing_with_physics_takes_the_base_and_plays_the_command_trials(tmp_path):
+    # The fixed base, the cheap approximation: what is tested is that base= reaches the
+    # physics executor as --base does, and that the kicks' statuses come back per trial.
+    out = tmp_path / "passing"
+    subprocess.run([BINARY, "experiment", "passing", "--config", "dg", "--scenarios", "4",
+                    "--trials", "2", "--seed", "3", "--physics", "--base", "fixed",
+                    "--out", str(out)], capture_output=True, check=True)
+    lines = (out / "passing_trials.csv").read_text().splitlines()
+    rows = [dict(zip(lines[0].split(","), line.split(","))) for line in lines[1:]]
+    assert json.loads((out / "passing.json").read_text())["params"]["robot_base"] == "fixed"
+    mine = foresight.passing("dg", scenarios=[4], trials=2, seed=3, physics=True, base="fixed")
+    assert len(rows) == 2
+    for i, row in enumerate(rows):
+        assert row["outcome"] == mine["outcome_names"][mine["outcome"][i]]
+        assert float(row["time_s"]) == pytest.approx(mine["time_s"][i], abs=0.005)
+        for status in ("kicks_missed", "kicks_not_settled", "kicks_fell", "kicks_blocked"):
+            assert mine[status].dtype == np.int32
+            assert int(row[status]) == mine[status][i], status
+    with pytest.raises(foresight.InputError, match="--base needs --physics"):
+        foresight.passing("dg", trials=1, base="fixed")
+    with pytest.raises(foresight.InputError, match="--base: must be one of"):
+        foresight.passing("dg", trials=1, physics=True, base="bolted")

@@ -232,6 +232,8 @@ TEST_F(ExperimentCommandTest, PassingWithPhysicsExecutesTheKicksInBullet) {
   EXPECT_EQ(json["params"]["executor"], "physics");
   EXPECT_EQ(json["params"]["physics"], "physics/four_legged.json");
   EXPECT_TRUE(json["scenarios"][0].contains("kicks_missed"));
+  EXPECT_TRUE(json["scenarios"][0].contains("kicks_blocked"));
+  EXPECT_EQ(json["params"]["robot_base"], "fixed");
   // The example trial in 3D: the match, then each of its kicks as a recorded physics trial of
   // the AIBO (one per kick event of the trial).
   const std::string view = ReadFile(work() / "out" / "passing_view_dg_4.html");

@@ -59,6 +59,15 @@ TEST_F(FidelityCommandTest, OneSituationWritesJsonCsvAndHtml) {
   EXPECT_EQ(j["kick_model"], "kicks/nao.json");
   EXPECT_THAT(j["kick_model_hash"].get<std::string>(), StartsWith("fnv1a64:"));
   EXPECT_EQ(j["physics_file"], "physics/spl.json");
+  // No --base: the record names the base the physics file gave, not a placeholder.
+  EXPECT_EQ(j["robot_base"], "floating");
+  // Every status is counted, blocked stances included, in all and per situation and candidate.
+  for (const char* status :
+       {"physics_missed", "physics_not_settled", "physics_fell", "physics_blocked"}) {
+    EXPECT_TRUE(j.contains(status)) << status;
+    EXPECT_TRUE(j["situations"][0].contains(status)) << status;
+    EXPECT_TRUE(j["situations"][0]["candidates"][0].contains(status)) << status;
+  }
   EXPECT_FALSE(j["version"].get<std::string>().empty());
   const std::string candidates = ReadFile(dir / "fidelity_candidates.csv");
   EXPECT_EQ(CountOf(candidates, "\n"), 1 + 3 * 2) << candidates;
@@ -70,6 +79,7 @@ TEST_F(FidelityCommandTest, OneSituationWritesJsonCsvAndHtml) {
   EXPECT_EQ(CountOf(html, "</html>"), 1);
   EXPECT_THAT(html, HasSubstr("kicks/nao.json (" + j["kick_model_hash"].get<std::string>() + ")"));
   EXPECT_THAT(html, HasSubstr("physics/spl.json"));
+  EXPECT_THAT(html, HasSubstr("<th scope=\"row\">robot base</th><td>floating</td>"));
   EXPECT_THAT(html, ::testing::Not(HasSubstr("&lt;field&gt;")));
   // The worst (here: the only) situation links its 3D viewer: the coarse choice's and physics's
   // best candidate's first trials (one candidate when they agree), with their recorded scenes.

@@ -3,9 +3,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "models/outcome.h"
 #include "tests/app/run_foresight.h"
 
 namespace {
@@ -96,8 +98,16 @@ TEST_F(SimulateCommandTest, JsonNamesTheBaseAndEachTrialsFallAndTilt) {
     const nlohmann::json j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["base"], base);
     EXPECT_EQ(j["summary"]["fell"], 0) << base;
+    EXPECT_EQ(j["summary"]["blocked"], 0) << base;  // nothing stands near the open goal's ball
     for (const auto& trial : j["trials_detail"]) {
       EXPECT_EQ(trial["fell"], false);
+      EXPECT_EQ(trial["blocked"], false);
+      // The status by its name, which reads back as a status.
+      const std::optional<foresight::OutcomeStatus> status =
+          foresight::ParseOutcomeStatus(trial["status"].get<std::string>());
+      ASSERT_TRUE(status.has_value()) << trial["status"];
+      EXPECT_EQ(*status, trial["touched"] ? foresight::OutcomeStatus::kOk
+                                          : foresight::OutcomeStatus::kMissed);
       if (std::string(base) == "fixed") {
         EXPECT_EQ(trial["max_tilt_deg"], 0.0);
       } else {

@@ -56,6 +56,7 @@ void ExpectSameTrial(const MatchTrialResult& a, const MatchTrialResult& b) {
   EXPECT_EQ(x.kicks_missed, y.kicks_missed);
   EXPECT_EQ(x.kicks_not_settled, y.kicks_not_settled);
   EXPECT_EQ(x.kicks_fell, y.kicks_fell);
+  EXPECT_EQ(x.kicks_blocked, y.kicks_blocked);
   EXPECT_EQ(Bits(x.time_s), Bits(y.time_s));
   ASSERT_EQ(a.attacker_counters.size(), b.attacker_counters.size());
   for (std::size_t i = 0; i < a.attacker_counters.size(); ++i) {
@@ -130,6 +131,9 @@ TEST(PassingShardTest, ATrialReadBackIsTheSameTrialBitForBit) {
   odd.counters.attacker_backups = odd.counters.attacker_kicks = {1, 0};
   odd.outcome = TrialOutcome::kPenaltyArea;
   odd.counters.time_s = 1.0 / 3.0;
+  odd.counters.kicks_missed = 1;  // each status its own count, read back as written
+  odd.counters.kicks_fell = 2;
+  odd.counters.kicks_blocked = 3;
   odd.attacker_counters = {{"nan", std::numeric_limits<double>::quiet_NaN()},
                            {"tiny", 5e-324},
                            {"inf", -std::numeric_limits<double>::infinity()}};

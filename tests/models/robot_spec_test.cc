@@ -144,6 +144,35 @@ TEST(RobotSpecTest, ConvertsDegreesOnce) {
   EXPECT_EQ(spec.variation.motion_speed_sigma_rel, 0.05);
 }
 
+// A kick's launch target: a floor and an optional ceiling above it; kicks without one have none.
+TEST(RobotSpecTest, LaunchTargetsAreReadAndChecked) {
+  const std::string forward = R"({"name": "forward", "motion": "motions/forward.json")";
+  const RobotSpec spec = LoadRobotSpec(SpecFile(TesterModels(
+      "targets",
+      {"robot.json", forward, forward + R"(, "launch_min_mps": 1.0, "launch_max_mps": 1.2)"})));
+  ASSERT_EQ(spec.launch_targets.size(), 1u);
+  EXPECT_EQ(spec.launch_targets[0].first, "forward");
+  EXPECT_EQ(spec.launch_targets[0].second.min_mps, 1.0);
+  EXPECT_EQ(spec.launch_targets[0].second.max_mps, 1.2);
+  const RobotSpec floor_only = LoadRobotSpec(SpecFile(TesterModels(
+      "target_floor", {"robot.json", forward, forward + R"(, "launch_min_mps": 1.5)"})));
+  ASSERT_EQ(floor_only.launch_targets.size(), 1u);
+  EXPECT_FALSE(floor_only.launch_targets[0].second.max_mps.has_value());
+  std::filesystem::path file;
+  const std::string inverted = SpecError(
+      "target_inverted", forward, forward + R"(, "launch_min_mps": 1.2, "launch_max_mps": 1.0)",
+      &file);
+  EXPECT_EQ(inverted, file.string() +
+                          ": kicks[0].launch_max_mps: must be above launch_min_mps and at most "
+                          "50, got 1");
+  const std::string zero =
+      SpecError("target_zero", forward, forward + R"(, "launch_min_mps": 0)", &file);
+  EXPECT_EQ(zero, file.string() + ": kicks[0].launch_min_mps: must be in (0, 50], got 0");
+  const std::string ceiling_only =
+      SpecError("target_ceiling_only", forward, forward + R"(, "launch_max_mps": 1.0)", &file);
+  EXPECT_EQ(ceiling_only, file.string() + ": kicks[0].launch_max_mps: needs launch_min_mps");
+}
+
 TEST(RobotSpecTest, BaseHeightMustBePositive) {
   std::filesystem::path file;
   const std::string message =

@@ -65,7 +65,7 @@ TEST_F(BlockedStanceTest, AStanceInsideAPostIsBlockedNotAFall) {
     EXPECT_GT(r.stance_overlap_m, 0.005) << "trial " << trial;
     EXPECT_FALSE(r.fell);
     EXPECT_FALSE(r.touched);
-    EXPECT_EQ(r.outcome.status, OutcomeStatus::kMissed);
+    EXPECT_EQ(r.outcome.status, OutcomeStatus::kBlocked);  // a status of its own, not missed
     EXPECT_EQ(r.outcome.p_F_rest, k.state.p_F_ball);
     EXPECT_EQ(r.outcome.category, Category::kInfield);
   }

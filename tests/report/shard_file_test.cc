@@ -132,6 +132,24 @@ TEST_F(ShardFileTest, FoldersThatAreNotShardsAreRefused) {
                             ": results: 5 items, but shard 0/2 of 12 has 6");
 }
 
+// A shard of format 1 (before blocked stances had a status of their own, its missed counts
+// hold them) is refused in one line, not merged with a meaning it does not have.
+TEST_F(ShardFileTest, AShardOfAnOlderFormatIsRefusedInOneLine) {
+  const auto a = Write("a", 0, 1);
+  std::string text;
+  {
+    std::ifstream in(a / kShardFileName);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::string current = "\"foresight_shard\": " + std::to_string(kShardFormat);
+  ASSERT_NE(text.find(current), std::string::npos) << text;
+  text.replace(text.find(current), current.size(), "\"foresight_shard\": 1");
+  std::ofstream(a / kShardFileName) << text;
+  EXPECT_EQ(Error({a}), (a / "shard.json").string() +
+                            ": foresight_shard: format 1 is not this foresight's (2); run the "
+                            "shard again with this foresight");
+}
+
 TEST_F(ShardFileTest, OutcomesRoundTrip) {
   Outcome o;
   o.p_F_rest = {1.0 / 3.0, -2.75};
@@ -146,6 +164,11 @@ TEST_F(ShardFileTest, OutcomesRoundTrip) {
   EXPECT_EQ(back.first_contact, o.first_contact);
   EXPECT_EQ(back.time_s, o.time_s);
   EXPECT_EQ(back.status, o.status);
+  for (int s = 0; s < kOutcomeStatusCount; ++s) {  // blocked included
+    o.status = static_cast<OutcomeStatus>(s);
+    const nlohmann::json text = nlohmann::json::parse(OutcomeShardJson(o).dump());
+    EXPECT_EQ(ReadShardOutcome(ShardValue(text, "f", "o")).status, o.status) << s;
+  }
   const nlohmann::json bad = nlohmann::json::parse("[0, 0, 7, 0, 0, 0]");
   try {
     ReadShardOutcome(ShardValue(bad, "f", "o"));

@@ -67,6 +67,35 @@ TEST(CalibrationShardTest, MergedShardsEqualTheWholeRun) {
   }
 }
 
+// A trial that fell, one whose stance was blocked and one that missed the ball each read back as
+// what it was: blocked trials are not counted as missed (both stay out of the fit).
+TEST(CalibrationShardTest, BlockedFallenAndMissedTrialsReadBackApart) {
+  PhysicsCalibration run = PlanPhysicsCalibration(Nao(), testing::ModelsDir());
+  ASSERT_EQ(run.kicks.size(), 3u);
+  // No observation in this run: the first kick blocked in trials 1 and 4 and fell in 2; every
+  // other trial of every kick missed.
+  run.kicks[0].blocked = 2;
+  run.kicks[0].blocked_trials = {1, 4};
+  run.kicks[0].fell = 1;
+  run.kicks[0].fell_trials = {2};
+  const Shard whole{0, 1};
+  ShardPart part;
+  part.file = "shard";
+  part.header.shard = whole;
+  part.header.items = 6;
+  part.results = nlohmann::json::parse(CalibrationShardResults(run, whole, 6).dump());
+  PhysicsCalibration merged = PlanPhysicsCalibration(Nao(), testing::ModelsDir());
+  MergeCalibrationShards(merged, 6, {part});
+  EXPECT_EQ(merged.kicks[0].blocked, 2);
+  EXPECT_EQ(merged.kicks[0].blocked_trials, (std::vector<int>{1, 4}));
+  EXPECT_EQ(merged.kicks[0].fell, 1);
+  EXPECT_EQ(merged.kicks[0].fell_trials, (std::vector<int>{2}));
+  EXPECT_EQ(merged.kicks[0].missed, 3);
+  EXPECT_EQ(merged.kicks[1].missed, 6);
+  EXPECT_EQ(merged.kicks[1].blocked, 0);
+  EXPECT_TRUE(merged.kicks[0].observations.empty());
+}
+
 TEST(CalibrationShardTest, AShardPlaysOnlyItsTrials) {
   PhysicsCalibrationSettings settings = Nao();
   settings.shard = {1, 4};  // trials 1, 5, 9

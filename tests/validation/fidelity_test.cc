@@ -324,10 +324,29 @@ TEST(FidelityViewsTest, PagesComeFromTheRecordedTrialsAndShardsGiveTheSameBytes)
     shard_part.file = "shard" + part_settings.shard.Text();
     shard_part.header.shard = part_settings.shard;
     shard_part.header.items = static_cast<int>(set.cases.size());
-    shard_part.results = nlohmann::json::parse(FidelityShardResults(part).dump());
+    FidelityResult counted = part;
+    // A blocked stance (floating base) cannot happen in this open scene on the fixed base; one
+    // per situation of the first shard, on its first candidate, must survive the shard file.
+    if (i == 0) {
+      for (SituationFidelity& s : counted.situations) {
+        ++s.candidates.front().physics_status.blocked;
+        ++s.physics_status.blocked;
+      }
+    }
+    shard_part.results = nlohmann::json::parse(FidelityShardResults(counted).dump());
     parts.push_back(shard_part);
   }
   FidelityResult merged = MergeFidelityShards(set, settings, parts);
+  const int blocked = static_cast<int>((set.cases.size() + 1) / 2);  // shard 0 of 2: items 0, 2, ..
+  EXPECT_EQ(merged.physics_status.blocked, blocked);
+  EXPECT_EQ(whole.physics_status.blocked, 0);
+  for (std::size_t k = 0; k < merged.situations.size(); ++k) {
+    const int expected = k % 2 == 0 ? 1 : 0;
+    EXPECT_EQ(merged.situations[k].physics_status.blocked, expected) << k;
+    EXPECT_EQ(merged.situations[k].candidates.front().physics_status.blocked, expected) << k;
+    EXPECT_EQ(merged.situations[k].physics_status.missed,
+              whole.situations[k].physics_status.missed);
+  }
   const auto pages = FidelityViewPages(whole, settings, testing::ModelsDir());
   ASSERT_EQ(pages.size(), shown.size());
   EXPECT_EQ(FidelityViewPages(merged, settings, testing::ModelsDir()), pages);
