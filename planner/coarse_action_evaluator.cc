@@ -182,10 +182,7 @@ ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
         for (int l = 0; l < lanes; ++l) {
           hypothesis.Add(static_cast<Category>(category[g][l]), value[l], potential[g][l]);
           if (hypothesis.CertainlyTrimmed(max_outs)) {
-            ActionEvaluation result = hypothesis.Finish(params);
-            result.too_risky = true;
-            result.trimmed_utility = 0.0;
-            return result;
+            return hypothesis.Finish(params, sample_count_);  // trimmed
           }
         }
       } else if constexpr (kLanes == 2) {
@@ -195,8 +192,7 @@ ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
       }
     }
   }
-  return count == sample_count_ ? hypothesis.Finish(params)
-                                : hypothesis.FinishFirst(params, max_outs);
+  return hypothesis.Finish(params, sample_count_);
 }
 
 std::vector<Outcome> CoarseActionEvaluator::Outcomes(int kick_index, double rotation_rad) const {

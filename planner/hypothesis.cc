@@ -9,10 +9,11 @@ int MaxOuts(const EvaluationParams& params, int samples) {
   return static_cast<int>(std::floor(params.max_out_share * samples + 1e-9));
 }
 
-ActionEvaluation HypothesisAccumulator::Finish(const EvaluationParams& params) const {
+ActionEvaluation HypothesisAccumulator::Finish(const EvaluationParams& params,
+                                              int hypothesis_samples) const {
   ActionEvaluation e;
   e.counts = counts_;
-  for (int c : counts_) e.samples += c;
+  e.samples = Samples();
   if (e.samples == 0) return e;
   const double n = e.samples;
   e.potential_all_avg = potential_all_sum_ / n;
@@ -26,15 +27,7 @@ ActionEvaluation HypothesisAccumulator::Finish(const EvaluationParams& params) c
     e.potential_avg = potential_sum_ / infield;
   }
   e.utility = Utility(e.value_avg, e.p_infield, e.p_opp_goal, params);
-  e.too_risky = e.p_out > params.max_out_share || e.Count(Category::kOwnGoal) > 0;
-  e.trimmed_utility = e.too_risky ? 0.0 : e.utility;
-  return e;
-}
-
-ActionEvaluation HypothesisAccumulator::FinishFirst(const EvaluationParams& params,
-                                                   int max_outs) const {
-  ActionEvaluation e = Finish(params);
-  e.too_risky = CertainlyTrimmed(max_outs);
+  e.too_risky = CertainlyTrimmed(MaxOuts(params, hypothesis_samples));
   e.trimmed_utility = e.too_risky ? 0.0 : e.utility;
   return e;
 }

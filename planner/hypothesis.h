@@ -49,6 +49,13 @@ struct ActionEvaluation {
 // The most samples of N that may be out without trimming the hypothesis: floor(T_out * N).
 int MaxOuts(const EvaluationParams& params, int samples);
 
+// Eq. 6's trimming, the one definition: an own goal, or more than MaxOuts(N) of a hypothesis's
+// N samples out (p_out > T_out). The outs counted may be those of its first samples only: a
+// hypothesis is then trimmed when it is whatever its other samples do.
+inline bool Trimmed(int outs, int own_goals, int max_outs) {
+  return outs > max_outs || own_goals > 0;
+}
+
 // Sums the samples of one hypothesis; Finish() turns the sums into an ActionEvaluation.
 // `potential` is the potential at the sample's rest position whatever its category; `value`
 // counts only for infield samples.
@@ -72,19 +79,28 @@ class HypothesisAccumulator {
     potential_sum_ += infield_potential;
   }
   void AddCount(Category category, int n) { counts_[static_cast<int>(category)] += n; }
-  ActionEvaluation Finish(const EvaluationParams& params) const;
-  // The sums of the first n of a hypothesis's N samples (a search's coarse look): the utility of
-  // those n, trimmed only when the whole hypothesis is certain to be, whatever its other samples
-  // do (CertainlyTrimmed(max_outs), max_outs = MaxOuts(params, N)). A look at fewer samples then
-  // never trims an action that all N would keep: with 10 of 30 samples 2 outs would trim
-  // (p_out = 0.2 > 0.15), 4 of 30 do not.
-  ActionEvaluation FinishFirst(const EvaluationParams& params, int max_outs) const;
+  // The evaluation of the samples added, trimmed as eq. 6 trims a hypothesis of
+  // `hypothesis_samples` samples (N) of which these are the first n: the utility of those n,
+  // trimmed only when the whole hypothesis is certain to be, whatever its other samples do
+  // (Trimmed with MaxOuts(params, N)). A look at fewer samples then never trims an action that
+  // all N would keep: with 10 of 30 samples 2 outs would trim (p_out = 0.2 > 0.15), 4 of 30 do
+  // not. With all N added it is eq. 6 itself.
+  ActionEvaluation Finish(const EvaluationParams& params, int hypothesis_samples) const;
+  // A hypothesis of the samples added.
+  ActionEvaluation Finish(const EvaluationParams& params) const {
+    return Finish(params, Samples());
+  }
+  int Samples() const {
+    int n = 0;
+    for (int c : counts_) n += c;
+    return n;
+  }
 
   // True once the hypothesis is trimmed whatever its remaining samples do: more than
   // `max_outs` samples out (max_outs = floor(T_out * N)) or an own goal.
   bool CertainlyTrimmed(int max_outs) const {
-    return counts_[static_cast<int>(Category::kOut)] > max_outs ||
-           counts_[static_cast<int>(Category::kOwnGoal)] > 0;
+    return Trimmed(counts_[static_cast<int>(Category::kOut)],
+                   counts_[static_cast<int>(Category::kOwnGoal)], max_outs);
   }
 
  private:

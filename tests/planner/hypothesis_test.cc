@@ -43,7 +43,7 @@ TEST(HypothesisTest, FirstSamplesAreTrimmedOnlyWhenAllWouldBe) {
     for (int i = 0; i < infield; ++i) h.Add(Category::kInfield, 0.5, -0.5);
     for (int i = 0; i < own; ++i) h.Add(Category::kOwnGoal, 0.0, 0.0);
     for (int i = 0; i < out; ++i) h.Add(Category::kOut, 0.0, 0.0);
-    return h.FinishFirst(params, max_outs);
+    return h.Finish(params, 30);
   };
   const ActionEvaluation two_out = first(8, 0, 2);
   EXPECT_FALSE(two_out.too_risky);
