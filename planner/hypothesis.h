@@ -59,26 +59,44 @@ inline bool Trimmed(int outs, int own_goals, int max_outs) {
 // Sums the samples of one hypothesis; Finish() turns the sums into an ActionEvaluation.
 // `potential` is the potential at the sample's rest position whatever its category; `value`
 // counts only for infield samples.
+//
+// Each sum is kept as kSumSlots strided partial sums: the i-th sample added (from 0) goes to slot
+// i mod 8, each slot sums its samples in the order they come, from +0.0, and Finish adds the slots
+// pairwise, ((s0 + s1) + (s2 + s3)) + ((s4 + s5) + (s6 + s7)). One fixed order of additions, so
+// SIMD lanes of any width (2, 4 or 8: 4, 2 or 1 vectors of slots, FromSlots) give exactly the
+// bits of Add sample by sample, and no sum is a chain of one dependent addition per sample.
 class HypothesisAccumulator {
  public:
+  static constexpr int kSumSlots = 8;
+
   void Add(Category category, double value, double potential) {
+    const int slot = added_ % kSumSlots;
+    ++added_;
     ++counts_[static_cast<int>(category)];
-    potential_all_sum_ += potential;
+    potential_all_sum_[slot] += potential;
     // Without a branch (the category is a coin toss for the predictor): adding +0.0 leaves these
     // sums' bits unchanged, as a sum that starts at +0.0 is never -0.0 (round to nearest).
     const bool infield = category == Category::kInfield;
-    value_sum_ += infield ? value : 0.0;
-    potential_sum_ += infield ? potential : 0.0;
+    value_sum_[slot] += infield ? value : 0.0;
+    potential_sum_[slot] += infield ? potential : 0.0;
   }
-  // Add in two parts, for callers that count many samples at once (SIMD lanes): the sums of one
-  // sample, in sample order, with `value` and `potential` already +0.0 unless it is infield
-  // (what Add adds), and the counts of n samples of one category.
-  void AddSums(double infield_value, double infield_potential, double potential) {
-    potential_all_sum_ += potential;
-    value_sum_ += infield_value;
-    potential_sum_ += infield_potential;
+  // The accumulator of a hypothesis's first samples from their counts and slot sums, as Add
+  // would have summed them (the slots of `value` and `infield_potential` hold +0.0 for samples
+  // that are not infield): for callers that sum in SIMD lanes.
+  static HypothesisAccumulator FromSlots(const std::array<int, kCategoryCount>& counts,
+                                         const double* value, const double* infield_potential,
+                                         const double* potential) {
+    HypothesisAccumulator h;
+    h.counts_ = counts;
+    h.added_ = h.Samples();
+    for (int s = 0; s < kSumSlots; ++s) {
+      h.value_sum_[s] = value[s];
+      h.potential_sum_[s] = infield_potential[s];
+      h.potential_all_sum_[s] = potential[s];
+    }
+    return h;
   }
-  void AddCount(Category category, int n) { counts_[static_cast<int>(category)] += n; }
+
   // The evaluation of the samples added, trimmed as eq. 6 trims a hypothesis of
   // `hypothesis_samples` samples (N) of which these are the first n: the utility of those n,
   // trimmed only when the whole hypothesis is certain to be, whatever its other samples do
@@ -105,9 +123,10 @@ class HypothesisAccumulator {
 
  private:
   std::array<int, kCategoryCount> counts_{};
-  double value_sum_ = 0.0;
-  double potential_sum_ = 0.0;
-  double potential_all_sum_ = 0.0;
+  int added_ = 0;
+  double value_sum_[kSumSlots] = {};
+  double potential_sum_[kSumSlots] = {};
+  double potential_all_sum_[kSumSlots] = {};
 };
 
 }  // namespace foresight
