@@ -136,7 +136,7 @@ ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
   const Lanes zero = Broadcast(0.0);
   Lanes value_sum[kSlotVectors], potential_sum[kSlotVectors], potential_all_sum[kSlotVectors];
   for (int v = 0; v < kSlotVectors; ++v) value_sum[v] = potential_sum[v] = potential_all_sum[v] = zero;
-  std::array<int, kCategoryCount> counts{};
+  int counts[kCategoryCount] = {};  // copied out at the end: kept in registers meanwhile
   bool trimmed = false;
   // Chunks of kChunkGroups lane groups (32 samples, a multiple of the 8 slots): rolled, then
   // valued together (independent work side by side), then summed. A search stops at the sample
@@ -202,7 +202,9 @@ ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
     Store(potential_sum[v], &slots[1][v * kLanes]);
     Store(potential_all_sum[v], &slots[2][v * kLanes]);
   }
-  return HypothesisAccumulator::FromSlots(counts, slots[0], slots[1], slots[2])
+  std::array<int, kCategoryCount> counted;
+  for (int c = 0; c < kCategoryCount; ++c) counted[c] = counts[c];
+  return HypothesisAccumulator::FromSlots(counted, slots[0], slots[1], slots[2])
       .Finish(params, sample_count_);
 }
 
