@@ -31,7 +31,8 @@ inline std::uint64_t Mix64(std::uint64_t z) {
 // StreamKey of each `index` (a std::uint64_t or a vector of them, as Mix64Of).
 template <typename Bits>
 inline Bits StreamKeyOf(std::uint64_t seed, Bits index, std::uint64_t domain) {
-  return Mix64Of(Mix64(seed + kGoldenGamma) ^ Mix64Of(index * kGoldenGamma + domain * kDomainGamma));
+  return Mix64Of(Mix64(seed + kGoldenGamma) ^
+                 Mix64Of(index * kGoldenGamma + domain * kDomainGamma));
 }
 
 // Key of stream `index` of a run seeded with `seed`; `domain` separates the uses of one seed

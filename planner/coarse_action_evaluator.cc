@@ -135,7 +135,9 @@ ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
   static_assert(kSlotVectors * kLanes == HypothesisAccumulator::kSumSlots);
   const Lanes zero = Broadcast(0.0);
   Lanes value_sum[kSlotVectors], potential_sum[kSlotVectors], potential_all_sum[kSlotVectors];
-  for (int v = 0; v < kSlotVectors; ++v) value_sum[v] = potential_sum[v] = potential_all_sum[v] = zero;
+  for (int v = 0; v < kSlotVectors; ++v) {
+    value_sum[v] = potential_sum[v] = potential_all_sum[v] = zero;
+  }
   int counts[kCategoryCount] = {};  // copied out at the end: kept in registers meanwhile
   HypothesisAccumulator by_sample;   // the 2-lane build's sums
   bool trimmed = false;

@@ -125,8 +125,9 @@ TEST(HypothesisTest, SlotSumsGiveTheBitsOfAddSampleBySample) {
     ++counts[static_cast<int>(c)];
   }
   const ActionEvaluation a = added.Finish(params, 37);
-  const ActionEvaluation b =
-      HypothesisAccumulator::FromSlots(counts, value, infield_potential, potential).Finish(params, 37);
+  const ActionEvaluation b = HypothesisAccumulator::FromSlots(counts, value, infield_potential,
+                                                              potential)
+                                 .Finish(params, 37);
   EXPECT_EQ(a.counts, b.counts);
   EXPECT_EQ(a.value_avg, b.value_avg);
   EXPECT_EQ(a.potential_avg, b.potential_avg);
