@@ -170,8 +170,19 @@ inline double ExpFast(double x) {
 inline double Log(double x) {
   if (!(x > 0.0)) return x == 0.0 ? -INFINITY : NAN;
   if (x == INFINITY) return x;
-  int k = 0;
-  double m = std::frexp(x, &k);  // x = m 2^k, m in [0.5, 1)
+  // x = m 2^k, m in [0.5, 1): std::frexp's result, from the bits for a normal x (frexp is a
+  // library call; this runs in every normal's tail).
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  const int exponent = static_cast<int>(bits >> 52);  // x > 0: no sign bit
+  int k = exponent - 1022;
+  double m;
+  if (exponent == 0) {
+    m = std::frexp(x, &k);  // subnormal
+  } else {
+    bits = (bits & 0x000FFFFFFFFFFFFFULL) | 0x3FE0000000000000ULL;
+    std::memcpy(&m, &bits, sizeof m);
+  }
   if (m < 0.70710678118654752440) {
     m *= 2.0;
     --k;

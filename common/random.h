@@ -13,18 +13,32 @@
 namespace foresight {
 
 inline constexpr std::uint64_t kGoldenGamma = 0x9E3779B97F4A7C15ULL;
+// The odd constant that spreads a stream's domain over the keys.
+inline constexpr std::uint64_t kDomainGamma = 0xD1B54A32D192ED03ULL;
 
-inline std::uint64_t Mix64(std::uint64_t z) {
+// SplitMix64's output function. `Bits` is std::uint64_t or a vector of them (GCC/Clang vector
+// extensions, planner/random_lanes.h): the same wrapping operations in every lane, one source.
+template <typename Bits>
+inline Bits Mix64Of(Bits z) {
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
   return z ^ (z >> 31);
+}
+inline std::uint64_t Mix64(std::uint64_t z) {
+  return Mix64Of(z);
+}
+
+// StreamKey of each `index` (a std::uint64_t or a vector of them, as Mix64Of).
+template <typename Bits>
+inline Bits StreamKeyOf(std::uint64_t seed, Bits index, std::uint64_t domain) {
+  return Mix64Of(Mix64(seed + kGoldenGamma) ^
+                 Mix64Of(index * kGoldenGamma + domain * kDomainGamma));
 }
 
 // Key of stream `index` of a run seeded with `seed`; `domain` separates the uses of one seed
 // (e.g. coarse samples and physics trials of the same run).
 inline std::uint64_t StreamKey(std::uint64_t seed, std::uint64_t index, std::uint64_t domain = 0) {
-  return Mix64(Mix64(seed + kGoldenGamma) ^
-               Mix64(index * kGoldenGamma + domain * 0xD1B54A32D192ED03ULL));
+  return StreamKeyOf(seed, index, domain);
 }
 
 namespace random_detail {

@@ -24,9 +24,7 @@ ActionEvaluation SeamActionEvaluator::EvaluateFirst(int kick_index, double rotat
     AddOutcome(hypothesis, simulator_.Simulate(sample.state, action), value_);
   }
   const EvaluationParams& params = situation_.evaluation;
-  return count == samples_.size()
-             ? hypothesis.Finish(params)
-             : hypothesis.FinishFirst(params, MaxOuts(params, sample_count()));
+  return hypothesis.Finish(params, sample_count());
 }
 
 std::vector<Outcome> SeamActionEvaluator::Outcomes(int kick_index, double rotation_rad) const {

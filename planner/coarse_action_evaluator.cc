@@ -1,6 +1,7 @@
 #include "planner/coarse_action_evaluator.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "planner/ball_roll.h"
@@ -119,18 +120,32 @@ ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
                                             bool stop_when_trimmed) {
   ++evaluations_;
   const EvaluationParams& params = situation_.evaluation;
-  double sin_rho, cos_rho;
-  SinCos(rotation_rad, &sin_rho, &cos_rho);
+  // SinCos(+0.0) is (+0.0, 1.0) exactly; the paper's decision turns by no more.
+  double sin_rho = 0.0, cos_rho = 1.0;
+  if (rotation_rad != 0.0 || std::signbit(rotation_rad)) SinCos(rotation_rad, &sin_rho, &cos_rho);
   const int count = std::min(samples, sample_count_);
   // More outs than this, or one own goal, trims the N-sample action whatever the other
   // samples do.
   const int max_outs = MaxOuts(params, sample_count_);
-  HypothesisAccumulator hypothesis;
-  // Chunks of kChunkGroups lane groups: rolled, then valued together (independent work side by
-  // side), then summed in sample order, as the scalar reference sums. A search stops after the
-  // chunk in which the candidate is certainly trimmed, with the sums up to that sample.
+  constexpr int kOut = static_cast<int>(Category::kOut);
+  constexpr int kOwnGoal = static_cast<int>(Category::kOwnGoal);
+  // HypothesisAccumulator's slot sums in lanes: sample i goes to slot i mod 8, which is lane
+  // i mod kLanes of slot vector (i mod 8) / kLanes.
+  constexpr int kSlotVectors = HypothesisAccumulator::kSumSlots / kLanes;
+  static_assert(kSlotVectors * kLanes == HypothesisAccumulator::kSumSlots);
+  const Lanes zero = Broadcast(0.0);
+  Lanes value_sum[kSlotVectors], potential_sum[kSlotVectors], potential_all_sum[kSlotVectors];
+  for (int v = 0; v < kSlotVectors; ++v) {
+    value_sum[v] = potential_sum[v] = potential_all_sum[v] = zero;
+  }
+  int counts[kCategoryCount] = {};  // copied out at the end: kept in registers meanwhile
+  HypothesisAccumulator by_sample;   // the 2-lane build's sums
+  bool trimmed = false;
+  // Chunks of kChunkGroups lane groups (32 samples, a multiple of the 8 slots): rolled, then
+  // valued together (independent work side by side), then summed. A search stops at the sample
+  // with which the candidate is certainly trimmed, with the sums up to that sample.
   constexpr int kChunkGroups = 32 / kLanes;
-  for (std::size_t chunk = 0; chunk < static_cast<std::size_t>(count);
+  for (std::size_t chunk = 0; chunk < static_cast<std::size_t>(count) && !trimmed;
        chunk += kChunkGroups * kLanes) {
     Lanes x[kChunkGroups], y[kChunkGroups], potential[kChunkGroups];
     LaneMask category[kChunkGroups];
@@ -149,54 +164,62 @@ ActionEvaluation CoarseActionEvaluator::Run(int kick_index, double rotation_rad,
           std::min<std::size_t>(kLanes, static_cast<std::size_t>(count) - first));
     }
     value_.PotentialLanes(x, y, potential, groups);
-    for (int g = 0; g < groups; ++g) {
+    for (int g = 0; g < groups && !trimmed; ++g) {
       const Lanes value = value_.ValueOfPotentialLanes(potential[g]);
       const std::size_t first = chunk + static_cast<std::size_t>(g) * kLanes;
       const int lanes = static_cast<int>(
           std::min<std::size_t>(kLanes, static_cast<std::size_t>(count) - first));
-      // The sums in sample order. With 4 or 8 lanes the counts of a group's lanes are added at
-      // once (integers: the order does not matter; a memory counter incremented per sample made
-      // a chain of stores); with 2 lanes a sample at a time is as fast.
-      bool trimmed = false;
-      if constexpr (kLanes > 2) {
-        const HypothesisAccumulator before = hypothesis;
-        const LaneMask infield = category[g] == static_cast<std::int64_t>(Category::kInfield);
-        const Lanes zero = Broadcast(0.0);
-        const Lanes infield_value = Select(infield, value, zero);
-        const Lanes infield_potential = Select(infield, potential[g], zero);
-        for (int l = 0; l < lanes; ++l) {
-          hypothesis.AddSums(infield_value[l], infield_potential[l], potential[g][l]);
+      if constexpr (kLanes == 2) {
+        // With 2 lanes the accumulator's Add, sample by sample, is as fast (its 8 slots are
+        // independent chains) and needs no lane masks (measured: the masks cost silvermont's
+        // optimal_all 6 %).
+        for (int l = 0; l < lanes && !trimmed; ++l) {
+          by_sample.Add(static_cast<Category>(category[g][l]), value[l], potential[g][l]);
+          trimmed = stop_when_trimmed && by_sample.CertainlyTrimmed(max_outs);
         }
-        const unsigned summed = (1U << lanes) - 1U;
-        for (int c = 0; c < kCategoryCount; ++c) {
-          hypothesis.AddCount(static_cast<Category>(c),
-                              __builtin_popcount(MaskBits(category[g] == c) & summed));
-        }
-        trimmed = stop_when_trimmed && hypothesis.CertainlyTrimmed(max_outs);
-        if (trimmed) hypothesis = before;  // trimmed within this group: found below
       } else {
-        trimmed = stop_when_trimmed;
-      }
-      if (trimmed) {
-        // Sample by sample: a search stops with the sums up to the sample that trimmed.
-        for (int l = 0; l < lanes; ++l) {
-          hypothesis.Add(static_cast<Category>(category[g][l]), value[l], potential[g][l]);
-          if (hypothesis.CertainlyTrimmed(max_outs)) {
-            ActionEvaluation result = hypothesis.Finish(params);
-            result.too_risky = true;
-            result.trimmed_utility = 0.0;
-            return result;
+        // The lanes summed: all samples of the group, or up to the one that trims.
+        unsigned taken = (1U << lanes) - 1U;
+        int added[kCategoryCount];
+        for (int c = 0; c < kCategoryCount; ++c) {
+          added[c] = __builtin_popcount(MaskBits(category[g] == c) & taken);
+        }
+        if (stop_when_trimmed &&
+            Trimmed(counts[kOut] + added[kOut], counts[kOwnGoal] + added[kOwnGoal], max_outs)) {
+          int outs = counts[kOut], own_goals = counts[kOwnGoal], l = 0;
+          for (;; ++l) {
+            outs += category[g][l] == kOut;
+            own_goals += category[g][l] == kOwnGoal;
+            if (Trimmed(outs, own_goals, max_outs)) break;
           }
+          taken = (2U << l) - 1U;
+          for (int c = 0; c < kCategoryCount; ++c) {
+            added[c] = __builtin_popcount(MaskBits(category[g] == c) & taken);
+          }
+          trimmed = true;
         }
-      } else if constexpr (kLanes == 2) {
-        for (int l = 0; l < lanes; ++l) {
-          hypothesis.Add(static_cast<Category>(category[g][l]), value[l], potential[g][l]);
-        }
+        const LaneMask take = MaskOfBits(taken);
+        const LaneMask infield =
+            take & (category[g] == static_cast<std::int64_t>(Category::kInfield));
+        const int v = g % kSlotVectors;
+        value_sum[v] += Select(infield, value, zero);
+        potential_sum[v] += Select(infield, potential[g], zero);
+        potential_all_sum[v] += Select(take, potential[g], zero);
+        for (int c = 0; c < kCategoryCount; ++c) counts[c] += added[c];
       }
     }
   }
-  return count == sample_count_ ? hypothesis.Finish(params)
-                                : hypothesis.FinishFirst(params, max_outs);
+  if constexpr (kLanes == 2) return by_sample.Finish(params, sample_count_);
+  alignas(64) double slots[3][HypothesisAccumulator::kSumSlots];
+  for (int v = 0; v < kSlotVectors; ++v) {
+    Store(value_sum[v], &slots[0][v * kLanes]);
+    Store(potential_sum[v], &slots[1][v * kLanes]);
+    Store(potential_all_sum[v], &slots[2][v * kLanes]);
+  }
+  std::array<int, kCategoryCount> counted;
+  for (int c = 0; c < kCategoryCount; ++c) counted[c] = counts[c];
+  return HypothesisAccumulator::FromSlots(counted, slots[0], slots[1], slots[2])
+      .Finish(params, sample_count_);
 }
 
 std::vector<Outcome> CoarseActionEvaluator::Outcomes(int kick_index, double rotation_rad) const {

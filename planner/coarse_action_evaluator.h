@@ -6,7 +6,8 @@
 // start's category are computed once, and a candidate costs one rotation of u_ik by rho per
 // sample instead of a sine and cosine. The samples are drawn, rolled, classified and valued
 // kLanes at a time in SIMD lanes (planner/sampling.h, planner/roll_lanes.h,
-// PositionValue::PotentialLanes) and summed in sample order, so an evaluation has the bits of
+// PositionValue::PotentialLanes) and summed in HypothesisAccumulator's slots (sample i in slot
+// i mod 8, each slot in sample order), so an evaluation has the bits of
 // the scalar reference (EvaluateReference: one RollBall per sample, tested equal) and equals
 // SeamActionEvaluator's over a CoarseSimulator up to rounding (tested).
 //

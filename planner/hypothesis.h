@@ -49,49 +49,84 @@ struct ActionEvaluation {
 // The most samples of N that may be out without trimming the hypothesis: floor(T_out * N).
 int MaxOuts(const EvaluationParams& params, int samples);
 
+// Eq. 6's trimming, the one definition: an own goal, or more than MaxOuts(N) of a hypothesis's
+// N samples out (p_out > T_out). The outs counted may be those of its first samples only: a
+// hypothesis is then trimmed when it is whatever its other samples do.
+inline bool Trimmed(int outs, int own_goals, int max_outs) {
+  return outs > max_outs || own_goals > 0;
+}
+
 // Sums the samples of one hypothesis; Finish() turns the sums into an ActionEvaluation.
 // `potential` is the potential at the sample's rest position whatever its category; `value`
 // counts only for infield samples.
+//
+// Each sum is kept as kSumSlots strided partial sums: the i-th sample added (from 0) goes to slot
+// i mod 8, each slot sums its samples in the order they come, from +0.0, and Finish adds the slots
+// pairwise, ((s0 + s1) + (s2 + s3)) + ((s4 + s5) + (s6 + s7)). One fixed order of additions, so
+// SIMD lanes of any width (2, 4 or 8: 4, 2 or 1 vectors of slots, FromSlots) give exactly the
+// bits of Add sample by sample, and no sum is a chain of one dependent addition per sample.
 class HypothesisAccumulator {
  public:
+  static constexpr int kSumSlots = 8;
+
   void Add(Category category, double value, double potential) {
+    const int slot = added_ % kSumSlots;
+    ++added_;
     ++counts_[static_cast<int>(category)];
-    potential_all_sum_ += potential;
+    potential_all_sum_[slot] += potential;
     // Without a branch (the category is a coin toss for the predictor): adding +0.0 leaves these
     // sums' bits unchanged, as a sum that starts at +0.0 is never -0.0 (round to nearest).
     const bool infield = category == Category::kInfield;
-    value_sum_ += infield ? value : 0.0;
-    potential_sum_ += infield ? potential : 0.0;
+    value_sum_[slot] += infield ? value : 0.0;
+    potential_sum_[slot] += infield ? potential : 0.0;
   }
-  // Add in two parts, for callers that count many samples at once (SIMD lanes): the sums of one
-  // sample, in sample order, with `value` and `potential` already +0.0 unless it is infield
-  // (what Add adds), and the counts of n samples of one category.
-  void AddSums(double infield_value, double infield_potential, double potential) {
-    potential_all_sum_ += potential;
-    value_sum_ += infield_value;
-    potential_sum_ += infield_potential;
+  // The accumulator of a hypothesis's first samples from their counts and slot sums, as Add
+  // would have summed them (the slots of `value` and `infield_potential` hold +0.0 for samples
+  // that are not infield): for callers that sum in SIMD lanes.
+  static HypothesisAccumulator FromSlots(const std::array<int, kCategoryCount>& counts,
+                                         const double* value, const double* infield_potential,
+                                         const double* potential) {
+    HypothesisAccumulator h;
+    h.counts_ = counts;
+    h.added_ = h.Samples();
+    for (int s = 0; s < kSumSlots; ++s) {
+      h.value_sum_[s] = value[s];
+      h.potential_sum_[s] = infield_potential[s];
+      h.potential_all_sum_[s] = potential[s];
+    }
+    return h;
   }
-  void AddCount(Category category, int n) { counts_[static_cast<int>(category)] += n; }
-  ActionEvaluation Finish(const EvaluationParams& params) const;
-  // The sums of the first n of a hypothesis's N samples (a search's coarse look): the utility of
-  // those n, trimmed only when the whole hypothesis is certain to be, whatever its other samples
-  // do (CertainlyTrimmed(max_outs), max_outs = MaxOuts(params, N)). A look at fewer samples then
-  // never trims an action that all N would keep: with 10 of 30 samples 2 outs would trim
-  // (p_out = 0.2 > 0.15), 4 of 30 do not.
-  ActionEvaluation FinishFirst(const EvaluationParams& params, int max_outs) const;
+
+  // The evaluation of the samples added, trimmed as eq. 6 trims a hypothesis of
+  // `hypothesis_samples` samples (N) of which these are the first n: the utility of those n,
+  // trimmed only when the whole hypothesis is certain to be, whatever its other samples do
+  // (Trimmed with MaxOuts(params, N)). A look at fewer samples then never trims an action that
+  // all N would keep: with 10 of 30 samples 2 outs would trim (p_out = 0.2 > 0.15), 4 of 30 do
+  // not. With all N added it is eq. 6 itself.
+  ActionEvaluation Finish(const EvaluationParams& params, int hypothesis_samples) const;
+  // A hypothesis of the samples added.
+  ActionEvaluation Finish(const EvaluationParams& params) const {
+    return Finish(params, Samples());
+  }
+  int Samples() const {
+    int n = 0;
+    for (int c : counts_) n += c;
+    return n;
+  }
 
   // True once the hypothesis is trimmed whatever its remaining samples do: more than
   // `max_outs` samples out (max_outs = floor(T_out * N)) or an own goal.
   bool CertainlyTrimmed(int max_outs) const {
-    return counts_[static_cast<int>(Category::kOut)] > max_outs ||
-           counts_[static_cast<int>(Category::kOwnGoal)] > 0;
+    return Trimmed(counts_[static_cast<int>(Category::kOut)],
+                   counts_[static_cast<int>(Category::kOwnGoal)], max_outs);
   }
 
  private:
   std::array<int, kCategoryCount> counts_{};
-  double value_sum_ = 0.0;
-  double potential_sum_ = 0.0;
-  double potential_all_sum_ = 0.0;
+  int added_ = 0;
+  double value_sum_[kSumSlots] = {};
+  double potential_sum_[kSumSlots] = {};
+  double potential_all_sum_[kSumSlots] = {};
 };
 
 }  // namespace foresight

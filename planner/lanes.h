@@ -82,6 +82,13 @@ inline unsigned MaskBits(LaneMask m) {
 #endif
 }
 
+// The mask whose lane l is set where bit l of `bits` is (MaskBits's inverse).
+inline LaneMask MaskOfBits(unsigned bits) {
+  LaneMask lane{};
+  for (int l = 0; l < kLanes; ++l) lane[l] = l;
+  return ((static_cast<std::int64_t>(bits) >> lane) & 1) != 0;
+}
+
 // std::min, std::max and std::clamp's definitions lane by lane (the same lane wins on ties).
 inline Lanes Min(Lanes a, Lanes b) {
   return Select(b < a, b, a);

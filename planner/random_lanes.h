@@ -18,11 +18,9 @@ inline LaneBits BroadcastBits(std::uint64_t x) {
   return v;
 }
 
-// Mix64 of each lane: the same integer operations (wrapping 64-bit products) per lane.
+// Mix64 of each lane (common/random.h's Mix64Of: the same wrapping products per lane).
 inline LaneBits Mix64Lanes(LaneBits z) {
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  return z ^ (z >> 31);
+  return Mix64Of(z);
 }
 
 // StreamKey(seed, first + l, domain) in lane l.
@@ -30,11 +28,7 @@ inline LaneBits StreamKeyLanes(std::uint64_t seed, std::uint64_t first, std::uin
   alignas(64) static constexpr std::uint64_t kLaneNumbers[8] = {0, 1, 2, 3, 4, 5, 6, 7};
   LaneBits index;
   __builtin_memcpy(&index, kLaneNumbers, sizeof index);
-  index += first;
-  const std::uint64_t seed_mix = Mix64(seed + kGoldenGamma);
-  return Mix64Lanes(BroadcastBits(seed_mix) ^
-                    Mix64Lanes(index * kGoldenGamma +
-                               static_cast<std::uint64_t>(domain * 0xD1B54A32D192ED03ULL)));
+  return StreamKeyOf(seed, index + first, domain);
 }
 
 // Draw `draw` (1 for the first) of the streams keyed `key`: RandomStream(key)'s draw-th NextBits.

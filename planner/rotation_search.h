@@ -14,7 +14,7 @@
 //      usually seen it) ends the walk at once: most optima are peaks, not plateaus.
 // Coarse then fine: the grid only finds the hills, so it looks at the first
 // ceil(coarse_sample_share * N) samples (u(rho) from fewer of the same common random numbers),
-// trimmed only where all N samples certainly are (HypothesisAccumulator::FinishFirst), so that
+// trimmed only where all N samples certainly are (HypothesisAccumulator::Finish with N), so that
 // no hill the N samples keep is lost to a look at few. Candidates are compared, refined and
 // walked on all N: the chosen rotation's utility is the paper's N-sample one (eqs. 5, 6), and
 // every comparison is between evaluations of the same samples.

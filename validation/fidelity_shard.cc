@@ -59,7 +59,8 @@ ActionEvaluation ReadEvaluation(const ShardValue& v, const EvaluationParams& par
   if (e.utility != utility) v["utility"].Fail("must be eq. 5 of the shares, " + FormatNumber(utility));
   e.too_risky = v["too_risky"].Bool();
   if (e.samples > 0 &&
-      e.too_risky != (e.p_out > params.max_out_share || e.Count(Category::kOwnGoal) > 0)) {
+      e.too_risky != Trimmed(e.Count(Category::kOut), e.Count(Category::kOwnGoal),
+                             MaxOuts(params, e.samples))) {
     v["too_risky"].Fail("must follow from p_out and the own goals");
   }
   e.trimmed_utility = v["trimmed_utility"].Double();

@@ -80,8 +80,7 @@ ActionEvaluation PhysicsActionEvaluator::EvaluateFirst(int kick_index, double ro
   for (int i = 0; i < samples; ++i) {
     AddOutcome(hypothesis, h.outcomes[static_cast<std::size_t>(i)], value_);
   }
-  return hypothesis.FinishFirst(situation_.evaluation,
-                                MaxOuts(situation_.evaluation, sample_count()));
+  return hypothesis.Finish(situation_.evaluation, sample_count());
 }
 
 std::vector<Outcome> PhysicsActionEvaluator::Outcomes(int kick_index, double rotation_rad) const {

@@ -1,6 +1,8 @@
 // Category shares, utility (eq. 5) and trimming (eq. 6) on hand-made hypotheses.
 #include "planner/hypothesis.h"
 
+#include <array>
+
 #include <gtest/gtest.h>
 
 #include "tests/support/test_situations.h"
@@ -43,7 +45,7 @@ TEST(HypothesisTest, FirstSamplesAreTrimmedOnlyWhenAllWouldBe) {
     for (int i = 0; i < infield; ++i) h.Add(Category::kInfield, 0.5, -0.5);
     for (int i = 0; i < own; ++i) h.Add(Category::kOwnGoal, 0.0, 0.0);
     for (int i = 0; i < out; ++i) h.Add(Category::kOut, 0.0, 0.0);
-    return h.FinishFirst(params, max_outs);
+    return h.Finish(params, 30);
   };
   const ActionEvaluation two_out = first(8, 0, 2);
   EXPECT_FALSE(two_out.too_risky);
@@ -100,6 +102,41 @@ TEST(HypothesisTest, OutcomeUtilityIsEq5ForOneSample) {
                        OutcomeUtility(Category::kOppGoal, 0.0, p)) /
                       4.0;
   EXPECT_DOUBLE_EQ(e.utility, mean);
+}
+
+TEST(HypothesisTest, SlotSumsGiveTheBitsOfAddSampleBySample) {
+  // 37 samples (not a multiple of 8) with values whose sum depends on the order of additions:
+  // FromSlots with slot s summing samples s, s + 8, ... in order is Add's accumulator exactly,
+  // and the slots' order differs from one running sum in the last bits.
+  const EvaluationParams params = Params();
+  HypothesisAccumulator added;
+  double value[8] = {}, infield_potential[8] = {}, potential[8] = {};
+  std::array<int, kCategoryCount> counts{};
+  double running = 0.0;
+  for (int i = 0; i < 37; ++i) {
+    const Category c = i % 5 == 3 ? Category::kOppGoal : Category::kInfield;
+    const double v = 1.0 / (3 + i), f = (i % 2 == 0 ? 1e8 : -1e8) + 1.0 / (7 + i);
+    added.Add(c, v, f);
+    const bool infield = c == Category::kInfield;
+    value[i % 8] += infield ? v : 0.0;
+    infield_potential[i % 8] += infield ? f : 0.0;
+    potential[i % 8] += f;
+    running += f;
+    ++counts[static_cast<int>(c)];
+  }
+  const ActionEvaluation a = added.Finish(params, 37);
+  const ActionEvaluation b = HypothesisAccumulator::FromSlots(counts, value, infield_potential,
+                                                              potential)
+                                 .Finish(params, 37);
+  EXPECT_EQ(a.counts, b.counts);
+  EXPECT_EQ(a.value_avg, b.value_avg);
+  EXPECT_EQ(a.potential_avg, b.potential_avg);
+  EXPECT_EQ(a.potential_all_avg, b.potential_all_avg);
+  EXPECT_EQ(a.utility, b.utility);
+  const double slots = ((potential[0] + potential[1]) + (potential[2] + potential[3])) +
+                       ((potential[4] + potential[5]) + (potential[6] + potential[7]));
+  EXPECT_EQ(a.potential_all_avg, slots / 37);
+  EXPECT_NE(slots, running);  // the order is the slots', not one running sum's
 }
 
 }  // namespace
