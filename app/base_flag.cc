@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "common/error.h"
+#include "report/provenance.h"
 
 namespace foresight {
 
@@ -18,16 +19,14 @@ std::optional<RobotBase> ParseBaseFlag(const std::string& text) {
 std::string BaseUsed(const std::optional<RobotBase>& flag,
                      const std::vector<std::filesystem::path>& physics_files) {
   if (flag) return std::string(RobotBaseName(*flag));
-  std::vector<RobotBase> bases;
+  std::vector<std::filesystem::path> read;  // each file once: a run of many situations repeats it
+  std::vector<std::string> bases;
   for (const std::filesystem::path& file : physics_files) {
-    const RobotBase base = LoadPhysicsParams(file).robot.base;
-    if (std::find(bases.begin(), bases.end(), base) == bases.end()) bases.push_back(base);
+    if (std::ranges::find(read, file) != read.end()) continue;
+    read.push_back(file);
+    bases.emplace_back(RobotBaseName(LoadPhysicsParams(file).robot.base));
   }
-  std::sort(bases.begin(), bases.end());
-  std::string used;
-  for (RobotBase base : bases)
-    used += (used.empty() ? "" : ", ") + std::string(RobotBaseName(base));
-  return used;
+  return JoinDistinct(bases);
 }
 
 void AddBaseOption(CLI::App& command, std::string& text) {

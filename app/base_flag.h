@@ -17,8 +17,8 @@ namespace foresight {
 std::optional<RobotBase> ParseBaseFlag(const std::string& text);
 
 // The base a run's trials use, as its records name it: `flag` (--base) when given, else the
-// `robot.base` of each physics file the run reads ("floating"; "fixed, floating" when the files
-// differ).
+// `robot.base` of each physics file the run reads, distinct ones joined in the order read
+// ("floating"; "fixed, floating" when the files differ).
 std::string BaseUsed(const std::optional<RobotBase>& flag,
                      const std::vector<std::filesystem::path>& physics_files);
 void AddBaseOption(CLI::App& command, std::string& text);
