@@ -44,7 +44,9 @@ TEST_P(FloatingFallsTest, ABatchOfTrialsStandsThroughTheKick) {
                                    [](const auto& t) { return t.first == GetParam(); });
   ASSERT_NE(target, targets.end()) << "robot.json gives " << GetParam() << " no launch target";
   EXPECT_GT(summary.launch_speed_mean_mps, target->second.min_mps);
-  if (target->second.max_mps) EXPECT_LT(summary.launch_speed_mean_mps, *target->second.max_mps);
+  if (target->second.max_mps) {
+    EXPECT_LT(summary.launch_speed_mean_mps, *target->second.max_mps);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(NaoKicks, FloatingFallsTest,
