@@ -4,10 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <vector>
 
 #include "common/random.h"
+#include "common/same_bits.h"
 #include "planner/random_lanes.h"
 #include "tests/support/test_situations.h"
 
@@ -94,10 +94,6 @@ TEST(SamplingTest, SampleIDependsOnlyOnSeedAndI) {
 
 namespace foresight {
 namespace {
-
-bool SameBits(double a, double b) {
-  return std::memcmp(&a, &b, sizeof a) == 0;
-}
 
 // The drawing in lanes against DrawSample, sample by sample and bit by bit, over enough samples
 // that many lanes have a normal on the ziggurat's slow path (the wedge in lanes, the rare tail by
