@@ -20,6 +20,9 @@ void AddPassingRunOptions(CLI::App& cmd, PassingOptions& o) {
                  "Physics file (default: MODELS/physics/<field>.json)");
   AddBaseOption(cmd, o.base);
   cmd.add_option("--kicks", o.kicks_file, "AIBO kick model replacing the simulation file's");
+  cmd.add_option("--goalie", o.goalie,
+                 "Goalie model replacing the configuration's: ros2009 (the paper's) or "
+                 "runswift2005 (rUNSWift's competition goalie)");
   cmd.add_option("--params", o.params, "Experiment file, or a name in MODELS/experiments/")
       ->capture_default_str();
   cmd.add_option("--seed", o.seed, "Random seed")->capture_default_str();
@@ -38,6 +41,7 @@ PassingInputs LoadPassingInputs(const PassingOptions& o, const std::string& team
   if (!o.trials.empty()) request.trials = ParseCount("--trials", o.trials, 1, 10000000);
   request.mirrored = o.mirror;
   request.kicks_file = o.kicks_file;
+  request.goalie = o.goalie;
   if (!o.physics && !o.physics_file.empty()) throw InputError("--physics-file needs --physics");
   if (!o.physics && !o.base.empty()) throw InputError("--base needs --physics");
   const std::optional<RobotBase> base = ParseBaseFlag(o.base);
@@ -71,6 +75,9 @@ RunProvenance PassingProvenance(const PassingOptions& o, const PassingInputs& in
               {"team", team},
               {"team_file", team_file},
               {"executor", o.physics ? "physics" : "coarse"},
+              {"goalie", setup.config.HasGoalie()
+                             ? std::string(GoalieModelName(setup.config.goalie.model))
+                             : std::string("none")},
               {"mirrored", setup.mirrored ? "yes" : "no"}};
   if (o.physics) p.SetInput("physics", in.physics_file);
   if (o.physics) p.SetInput("robot_base", in.robot_base);
@@ -82,7 +89,8 @@ nlohmann::ordered_json PassingSettings(const PassingOptions& o) {
           {"--trials", o.trials},   {"--mirror", o.mirror},
           {"--physics", o.physics}, {"--physics-file", o.physics_file},
           {"--base", o.base},
-          {"--kicks", o.kicks_file}, {"--params", o.params},
+          {"--kicks", o.kicks_file}, {"--goalie", o.goalie},
+          {"--params", o.params},
           {"--seed", o.seed}};
 }
 
@@ -96,6 +104,7 @@ PassingOptions PassingOptionsOf(const ShardPart& part, const std::string& out_di
   o.physics_file = SettingString(part, "--physics-file");
   o.base = SettingString(part, "--base");
   o.kicks_file = SettingString(part, "--kicks");
+  o.goalie = SettingString(part, "--goalie");
   o.params = SettingString(part, "--params");
   o.seed = SettingString(part, "--seed");
   o.out_dir = out_dir;

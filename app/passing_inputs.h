@@ -28,6 +28,7 @@ struct PassingOptions {
   std::string physics_file;
   std::string base;  // --base, with --physics; empty: the physics file's
   std::string kicks_file;  // replaces the simulation file's kick model
+  std::string goalie;      // replaces the configuration's goalie model
   std::string variants = "cbr_variants";  // experiment ablations only: the CBR team's variants
   std::string seed = "1";
   std::string threads = "0";

@@ -11,7 +11,7 @@ namespace foresight {
 namespace {
 
 // The largest value of each stored enum (the enums are dense from 0).
-constexpr int kLastEventKind = static_cast<int>(EventKind::kKickEnd);
+constexpr int kLastEventKind = static_cast<int>(EventKind::kBallMoved);
 constexpr int kLastSide = static_cast<int>(Side::kOpponents);
 
 int EnumNumber(const ShardValue& value, int last) {
@@ -75,7 +75,8 @@ nlohmann::json CountersJson(const TrialCounters& c) {
           {"time_s", ExactJson(c.time_s)},
           {"last_touch", {c.last_touch_side, c.last_touch_robot}},
           {"attacker_kick_sent", c.attacker_kick_sent ? 1 : 0},
-          {"shots", {c.shots_on_target, c.shots_saved}}};
+          {"shots", {c.shots_on_target, c.shots_saved}},
+          {"contests_resolved", c.contests_resolved}};
 }
 
 TrialCounters ReadCounters(const ShardValue& v, const TrialShape& shape) {
@@ -110,6 +111,7 @@ TrialCounters ReadCounters(const ShardValue& v, const TrialShape& shape) {
   c.shots_on_target = shots.At(0).Count();
   c.shots_saved = shots.At(1).Count();
   if (c.shots_saved > c.shots_on_target) shots.At(1).Fail("must not exceed the shots on target");
+  c.contests_resolved = v["contests_resolved"].Count();
   return c;
 }
 

@@ -184,6 +184,51 @@ const std::vector<PaperTerm>* PaperClaim::Terms(const std::string& config) const
   return nullptr;
 }
 
+namespace {
+
+WorldCheckSpec ParseWorldCheck(const JsonObject& o) {
+  o.RejectUnknownKeys({"notes", "team", "within_points", "measures"});
+  WorldCheckSpec w;
+  w.team = o.String("team");
+  w.within_points = o.Number("within_points");
+  WithFile(o.file(), [&] { RequireInRange(o.PathOf("within_points"), w.within_points, 0.0, 100.0); });
+  const JsonObject m = o.Object("measures");
+  for (const std::string& config : m.Keys()) w.measures.emplace_back(config, m.StringArray(config));
+  return w;
+}
+
+void ValidateWorldCheck(const PaperTables& p) {
+  const WorldCheckSpec& w = p.world_check;
+  if (w.team != "cbr" && w.team != "reactive") {
+    throw InputError("world_check.team: must be cbr or reactive, got '" + w.team + "'");
+  }
+  for (const auto& [config, list] : w.measures) {
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const bool found = std::any_of(p.tables.begin(), p.tables.end(), [&](const PaperTable& t) {
+        const bool has_rows = std::any_of(t.rows.begin(), t.rows.end(),
+                                          [&](const PaperRow& r) { return r.team == w.team; });
+        return t.config == config && has_rows &&
+               std::any_of(t.columns.begin(), t.columns.end(), [&](const PaperColumn& c) {
+                 return c.measure == list[k] && c.stat == PaperStat::kPct && c.robot.empty();
+               });
+      });
+      if (!found) {
+        throw InputError("world_check.measures." + At(config, k) + ": no table of " + config +
+                         " has a share column '" + list[k] + "' with rows of " + w.team);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>* WorldCheckSpec::Measures(const std::string& config) const {
+  for (const auto& [name, list] : measures) {
+    if (name == config) return &list;
+  }
+  return nullptr;
+}
+
 const PaperTable* PaperTables::Table(int number) const {
   for (const PaperTable& t : tables) {
     if (t.table == number) return &t;
@@ -201,6 +246,7 @@ void PaperTables::Validate() const {
                        " twice");
     }
   }
+  ValidateWorldCheck(*this);
   for (std::size_t i = 0; i < claims.size(); ++i) {
     for (const auto& [config, list] : claims[i].terms) {
       for (std::size_t k = 0; k < list.size(); ++k) {
@@ -231,10 +277,11 @@ PaperTables LoadPaperTables(const std::string& reference,
   p.file = ResolveModelFile(reference, DataFolder::kExperiments, ".", models_dir);
   const JsonDocument doc = JsonDocument::Load(p.file);
   const JsonObject root = doc.Root();
-  root.RejectUnknownKeys({"article", "tables", "claims"});
+  root.RejectUnknownKeys({"article", "tables", "claims", "world_check"});
   p.article = root.String("article");
   for (const JsonObject& t : root.ObjectArray("tables")) p.tables.push_back(ParseTable(t));
   for (const JsonObject& c : root.ObjectArray("claims")) p.claims.push_back(ParseClaim(c));
+  p.world_check = ParseWorldCheck(root.Object("world_check"));
   WithFile(p.file.string(), [&] { p.Validate(); });
   return p;
 }

@@ -70,16 +70,30 @@ struct PaperClaim {
   const std::vector<PaperTerm>* Terms(const std::string& config) const;  // null if none
 };
 
+// The world check (experiments/world_check.h): one team's rows of the paper's tables test the
+// simulated world without the method under test. Per configuration, the outcome shares
+// (`measures`, pct columns) whose agreement judges a scenario: the paper's value inside our
+// interval, or within `within_points` percentage points of ours.
+struct WorldCheckSpec {
+  std::string team;
+  double within_points = 0.0;
+  std::vector<std::pair<std::string, std::vector<std::string>>> measures;  // per config
+
+  const std::vector<std::string>* Measures(const std::string& config) const;  // null if none
+};
+
 struct PaperTables {
   std::filesystem::path file;
   std::string article;
   std::vector<PaperTable> tables;
   std::vector<PaperClaim> claims;
+  WorldCheckSpec world_check;
 
   const PaperTable* Table(int number) const;
   // Every row's values match its columns and lie in range (shares in [0, 100], means and sds
   // >= 0), a table holds a (scenario, team) once, and every claim term names a value column of a
-  // table of its configuration.
+  // table of its configuration; every world-check measure names a share column of a table of its
+  // configuration with rows of the check's team.
   void Validate() const;
 };
 

@@ -123,6 +123,17 @@ PassingSetup LoadPassingSetup(const PassingRequest& request,
       LoadPhysicsParams(DataFile(models_dir, DataFolder::kPhysics, s.field.name))
           .materials.restitution.robot;
   s.config = LoadMatchConfig(request.config, models_dir, s.field, s.sim, s.robot);
+  if (!request.goalie.empty()) {
+    const std::optional<GoalieModel> goalie = GoalieModelNamed(request.goalie);
+    if (!goalie) {
+      throw InputError("--goalie: unknown goalie model '" + request.goalie +
+                       "' (one of: ros2009, runswift2005)");
+    }
+    if (!s.config.HasGoalie()) {
+      throw InputError("--goalie: " + s.config.file.string() + " has no goalie");
+    }
+    s.config.goalie.model = *goalie;
+  }
   s.reactive = LoadReactiveParams("reactive", models_dir);
   // Kick names are checked here, before any work.
   RequireKick(s.kicks, s.config.clear_kick, s.config.file.string(), "clear_kick");

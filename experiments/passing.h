@@ -90,6 +90,7 @@ struct PassingRequest {
   int trials = 0;              // 0: the config's default
   bool mirrored = false;
   std::filesystem::path kicks_file;  // replaces the simulation file's kick model when not empty
+  std::string goalie;  // replaces the configuration's goalie model when not empty (GoalieModelName)
 };
 PassingSetup LoadPassingSetup(const PassingRequest& request,
                               const std::filesystem::path& models_dir);

@@ -49,6 +49,7 @@ std::vector<ScenarioCauses> SummariseCauses(const PassingResult& result, const P
       c.shots_saved += t.counters.shots_saved;
       c.safety_cap_ended +=
           setup.config.time_limit_is_safety_cap && t.outcome == TrialOutcome::kTimeout;
+      c.contests_resolved += t.counters.contests_resolved;
       CountOpponentKicks(t, attack_sign, setup.params.kick_moved_min_m, c);
     }
     FillIntervals(confidence, c);
@@ -67,6 +68,7 @@ ScenarioCauses PoolCauses(const std::vector<ScenarioCauses>& scenarios, double c
     pooled.opponent_kicks_moved += c.opponent_kicks_moved;
     pooled.opponent_kicks_own_goal += c.opponent_kicks_own_goal;
     pooled.safety_cap_ended += c.safety_cap_ended;
+    pooled.contests_resolved += c.contests_resolved;
   }
   FillIntervals(confidence, pooled);
   return pooled;

@@ -9,7 +9,8 @@
 //  - the opponents' kicks that moved the ball at least min_moved_m (from the kick event to its
 //    kick_end event: rest, a body, a grab or the end) and how many of those moved it towards
 //    their own goal (the displacement's component along the attack direction is positive);
-//  - the trials the configuration's safety cap ended (a time limit the paper does not have).
+//  - the trials the configuration's safety cap ended (a time limit the paper does not have);
+//  - how often the referee set down a ball both teams fought over too long.
 #pragma once
 
 #include <vector>
@@ -30,6 +31,7 @@ struct ScenarioCauses {
   int opponent_kicks_own_goal = 0;  // of those, towards the opponents' own goal
   Interval opponent_kicks_own_goal_ci;  // Wilson, of the share of the moved kicks
   int safety_cap_ended = 0;         // 0 unless the time limit is a safety cap
+  int contests_resolved = 0;        // the referee's contest rule fired (match/match.h)
 };
 
 std::vector<ScenarioCauses> SummariseCauses(const PassingResult& result, const PassingSetup& setup,

@@ -239,6 +239,8 @@ PassingScorecard BuildPassingScorecard(const PaperTables& paper, const std::stri
   }
   card.kick_moved_min_m = setup.params.kick_moved_min_m;
   card.has_goalie = setup.config.HasGoalie();
+  card.goalie = card.has_goalie ? std::string(GoalieModelName(setup.config.goalie.model)) : "none";
+  card.world_check = BuildWorldCheck(paper, card.tables, card.config);
   AddWorldRows(cbr, card.world);
   AddWorldRows(reactive, card.world);
   return card;

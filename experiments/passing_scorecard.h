@@ -22,32 +22,10 @@
 #include "experiments/paper_tables.h"
 #include "experiments/passing_causes.h"
 #include "experiments/passing_report.h"
+#include "experiments/scorecard_table.h"
+#include "experiments/world_check.h"
 
 namespace foresight {
-
-struct ScorecardCell {
-  double paper = 0.0;
-  std::optional<double> ours;   // none when we did not play the row's scenario
-  std::optional<Interval> ci;   // none for sds and shares of a team's total
-  std::optional<bool> inside;   // the paper's value within ci
-};
-
-struct ScorecardRow {
-  int scenario = 0;
-  std::string team;
-  int trials = 0;  // our trials behind the row (0: not played)
-  std::vector<ScorecardCell> cells;
-};
-
-struct ScorecardTable {
-  int table = 0;
-  std::string source;
-  std::string caption;
-  std::vector<std::string> columns;  // PaperColumn::Label
-  std::vector<ScorecardRow> rows;
-  int judged = 0;  // cells with an interval
-  int inside = 0;  // of those, the paper's value inside ours
-};
 
 enum class ClaimVerdict { kHolds, kOpposite, kNoClearDifference, kNotPlayed };
 std::string ClaimVerdictName(ClaimVerdict verdict);  // "holds", "opposite", ...
@@ -96,6 +74,8 @@ struct PassingScorecard {
   double kick_moved_min_m = 0.0;  // the opponents' kicks counted moved at least this far
   bool has_goalie = false;        // the opponents have a goalie (saves mean something)
   std::vector<ScorecardWorldRow> world;  // per team: its scenarios, then all of them pooled
+  std::string goalie;        // the goalie model that played (GoalieModelName), or "none"
+  WorldCheck world_check;    // the paper's reactive rows beside ours (experiments/world_check.h)
 };
 
 // `cbr` and `reactive`: the two teams' runs of the same setup and seed (summaries filled).

@@ -116,6 +116,7 @@ std::vector<std::pair<std::string, std::string>> Header(const PassingScorecard& 
           {"paper's figures", card.paper_file},
           {"kick model", card.kicks},
           {"executor", card.executor},
+          {"goalie", card.goalie},
           {"trials per scenario and team", std::to_string(card.trials)},
           {"our intervals", Percent(card.confidence) + " (shares Wilson, means Student t)"},
           {"seed", std::to_string(card.seed)},
@@ -146,6 +147,23 @@ void ClaimsHtml(HtmlReport& html, const PassingScorecard& card) {
     rows.push_back(std::move(row));
   }
   html.Table(header, rows);
+}
+
+void WorldCheckHtml(HtmlReport& html, const PassingScorecard& card) {
+  const WorldCheck& w = card.world_check;
+  html.Heading(2, "The world against the paper's " + w.team + " rows");
+  std::string measures;
+  for (const std::string& m : w.measures) measures += (measures.empty() ? "" : ", ") + m;
+  html.Paragraph(
+      "The " + w.team + " team is built from the paper's description of it, not from the method "
+      "under test, so its rows test the simulated world. A scenario agrees when each of " +
+      measures + " lies inside our " + Percent(card.confidence) + " interval or within " +
+      Format("%g", w.within_points) + " percentage points of ours; " +
+      std::to_string(w.agreeing) + " of " + std::to_string(w.scenarios.size()) +
+      " scenarios agree. Goalie: " + card.goalie + ".");
+  html.Table({"scenario", "trials", "verdict"}, WorldCheckScenarioRows(w));
+  html.Table({"scenario", "table", "measure", "paper", "ours", "our interval", "verdict"},
+             WorldCheckCellRows(w));
 }
 
 void TableHtml(HtmlReport& html, const ScorecardTable& t) {
@@ -203,16 +221,18 @@ const char* kWorldDefinitions =
     "roll would have entered the goal) that the goalie touched before its travel ended, the "
     "paper's block (sec. 5.1.4). Opponents' long kicks: kicks that moved the ball at least the "
     "stated distance before it rested, met a body, was grabbed or the trial ended; towards their "
-    "own goal when the displacement has any component towards it.";
+    "own goal when the displacement has any component towards it. Contests the referee ended: a "
+    "ball robots of both teams fought over within grabbing reach for longer than the "
+    "ball-holding rule allows, set down clear of every robot (match/match.h).";
 
 std::string WorldText(const PassingScorecard& card) {
   std::string text = Format(
       "the world (to goal by the attackers; on-target shots saved; opponents' kicks >= %.2g m "
-      "towards their own goal; safety cap):\n",
+      "towards their own goal; safety cap; contests the referee ended):\n",
       card.kick_moved_min_m);
   for (const ScorecardWorldRow& w : card.world) {
     const ScenarioCauses& c = w.causes;
-    text += Format("  %-3s %-8s to goal %d, by the attackers %s | %s | %d of %d, %s | %d\n",
+    text += Format("  %-3s %-8s to goal %d, by the attackers %s | %s | %d of %d, %s | %d | %d\n",
                    ScenarioName(c.scenario).c_str(), w.team.c_str(), w.to_goal,
                    ShareText(c.to_goal_by_attackers, c.trials, c.to_goal_by_attackers_ci).c_str(),
                    SavedText(card, c).c_str(), c.opponent_kicks_own_goal,
@@ -220,7 +240,7 @@ std::string WorldText(const PassingScorecard& card) {
                    ShareText(c.opponent_kicks_own_goal, c.opponent_kicks_moved,
                              c.opponent_kicks_own_goal_ci)
                        .c_str(),
-                   c.safety_cap_ended);
+                   c.safety_cap_ended, c.contests_resolved);
   }
   return text;
 }
@@ -241,11 +261,13 @@ void WorldHtml(HtmlReport& html, const PassingScorecard& card) {
              std::to_string(c.opponent_kicks_moved) + ": " +
              ShareText(c.opponent_kicks_own_goal, c.opponent_kicks_moved,
                        c.opponent_kicks_own_goal_ci),
-         std::to_string(c.safety_cap_ended)});
+         std::to_string(c.safety_cap_ended),
+         Format("%d (%.2f per trial)", c.contests_resolved,
+                c.trials > 0 ? static_cast<double>(c.contests_resolved) / c.trials : 0.0)});
   }
   html.Table({"scenario", "team", "trials", "to goal", "to goal by the attackers (share of trials)",
               "on-target shots saved", "opponents' long kicks towards their own goal",
-              "ended by the safety cap"},
+              "ended by the safety cap", "contests the referee ended"},
              rows);
 }
 
@@ -263,11 +285,13 @@ Json PassingScorecardJson(const PassingScorecard& card) {
           {"paper", {{"file", card.paper_file}, {"article", card.article}}},
           {"kicks", card.kicks},
           {"executor", card.executor},
+          {"goalie", card.goalie},
           {"trials_per_scenario", card.trials},
           {"confidence", card.confidence},
           {"tables", tables},
           {"claims", claims},
-          {"world", WorldJson(card)}};
+          {"world", WorldJson(card)},
+          {"world_check", WorldCheckJson(card.world_check)}};
 }
 
 std::string PassingScorecardText(const PassingScorecard& card) {
@@ -293,13 +317,14 @@ std::string PassingScorecardText(const PassingScorecard& card) {
   }
   text += "claims (CBR - reactive, paired):\n";
   for (const ClaimTally& c : card.claims) text += ClaimLine(c);
-  return text + WorldText(card);
+  return text + WorldCheckText(card.world_check) + WorldText(card);
 }
 
 std::string PassingScorecardHtml(const PassingScorecard& card) {
   HtmlReport html("Reproduction scorecard: passing, " + card.config + " (Ros et al. 2009, Tables " +
                   TableNumbers(card) + ")");
   html.KeyValues(Header(card));
+  WorldCheckHtml(html, card);
   ClaimsHtml(html, card);
   WorldHtml(html, card);
   for (const ScorecardTable& t : card.tables) TableHtml(html, t);

@@ -62,6 +62,7 @@ class Match {
       const std::vector<int> met = StepBall(world_, BallParams());
       const std::optional<TrialOutcome> touched_end = UpdateTouches(met);
       EndKickTravel(met);
+      UpdateContest();
       std::optional<TrialOutcome> end = referee_.Judge(ball_before, world_.ball.p_F);
       if (!end) end = touched_end;
       if (world_.time_s >= next_trace_s_ || end) Record();
@@ -214,6 +215,9 @@ class Match {
   void Launch(int robot);
   Pose2 Propose(int robot, const RobotCommand& command);
   std::optional<TrialOutcome> UpdateTouches(const std::vector<int>& met);
+  bool Contested() const;
+  void UpdateContest();
+  std::optional<Vec2> FreeSpotNear(const Vec2& p_F) const;
   void UpdateBlock(RobotState& r) const;
   bool InStealCone(const RobotState& challenger, int holder) const;
 
@@ -231,6 +235,7 @@ class Match {
   int last_toucher_ = -1;  // the robot that began the last counted touch
   int kick_in_flight_ = -1;  // the kicker whose kick's travel has not ended yet
   bool shot_on_target_ = false;  // that kick is an attacker's shot on target
+  double contested_since_s_ = -1.0;  // < 0: the ball is not fought over
 };
 
 void Match::Act(const std::vector<RobotCommand>& commands) {
@@ -257,8 +262,11 @@ Pose2 Match::Propose(int robot, const RobotCommand& command) {
   const RobotParams& rp = *s_.robot;
   const double dt = s_.sim->control_step_s;
   const bool holding = world_.ball.holder == robot;
-  const WalkLimits limits = holding ? WalkLimits{rp.dribble_speed_mps, rp.dribble_turn_speed_radps}
-                                    : WalkLimits{rp.walk_speed_mps, rp.turn_speed_radps};
+  const WalkLimits limits =
+      holding ? WalkLimits{rp.dribble_speed_mps, rp.dribble_turn_speed_radps,
+                           rp.dribble_sideways_mps, rp.dribble_backward_mps}
+              : WalkLimits{rp.walk_speed_mps, rp.turn_speed_radps, rp.walk_sideways_mps,
+                           rp.walk_backward_mps};
   switch (command.kind) {
     case CommandKind::kStand:
       return r.pose;
@@ -271,6 +279,13 @@ Pose2 Match::Propose(int robot, const RobotCommand& command) {
         r.kick_index = command.kick_index;
         r.launch_at_s = world_.time_s + rp.kick_launch_s;
         r.busy_until_s = world_.time_s + rp.kick_time_s;
+      }
+      return r.pose;
+    case CommandKind::kRelease:
+      if (holding) {
+        world_.ball.holder = -1;  // it lies where it was held, at the robot's front, at rest
+        world_.ball.roll.reset();
+        Event(EventKind::kRelease, robot);
       }
       return r.pose;
     case CommandKind::kBlock:
@@ -417,6 +432,74 @@ std::optional<TrialOutcome> Match::UpdateTouches(const std::vector<int>& met) {
     r.touching = touching;
   }
   return end;
+}
+
+// Fought over: within grabbing reach of a robot of each team (held, rolling or at rest).
+bool Match::Contested() const {
+  const double reach_m = contact_m_ + s_.robot->grab_reach_m;
+  bool near[2] = {false, false};
+  for (const RobotState& r : world_.robots) {
+    if ((world_.ball.p_F - r.pose.p_F).norm() <= reach_m + 1e-9) {
+      near[static_cast<int>(r.side)] = true;
+    }
+  }
+  return near[0] && near[1];
+}
+
+// The referee's rule: a contest begins when a robot holds the ball within reach of the other
+// team, and lasts while both teams stay within reach (through steals, releases and kicks into
+// the other body). Once it has lasted longer than a robot may hold the ball and the ball is held
+// or at rest, the ball is set down at the nearest spot clear of every body, free. A holder that
+// kicks the ball away at its holding limit ends the contest itself.
+void Match::UpdateContest() {
+  if (!Contested()) {
+    contested_since_s_ = -1.0;
+    return;
+  }
+  if (contested_since_s_ < 0.0) {
+    if (world_.ball.holder < 0) return;
+    contested_since_s_ = world_.time_s;
+  }
+  if (world_.time_s - contested_since_s_ <= s_.sim->ball_holding_limit_s + 1e-9) return;
+  if (world_.ball.roll) return;  // a kick on its way: it may yet leave the contest
+  const std::optional<Vec2> spot = FreeSpotNear(world_.ball.p_F);
+  if (!spot) return;  // no free spot on the whole field: the contest goes on
+  world_.ball.holder = -1;
+  world_.ball.roll.reset();
+  world_.ball.leaving_kicker = -1;
+  world_.ball.p_F = *spot;
+  ++result_.counters.contests_resolved;
+  result_.events.push_back({world_.time_s, EventKind::kBallMoved, Side::kAttackers, 0,
+                            world_.ball.p_F, "contest"});
+  contested_since_s_ = -1.0;
+}
+
+// The nearest point to p_F on rings kSpotStepM apart (kSpotAngles points each, the first one
+// upfield of the attackers, then alternately to either side) that lies inside the field lines and
+// contest_clearance_m clear of every body.
+std::optional<Vec2> Match::FreeSpotNear(const Vec2& p_F) const {
+  constexpr double kSpotStepM = 0.02;
+  constexpr int kSpotAngles = 72;
+  const double ball_m = s_.field->ball.radius_m;
+  const double x_max = s_.field->HalfLength() - ball_m;
+  const double y_max = s_.field->HalfWidth() - ball_m;
+  const double clear_m = contact_m_ + s_.sim->contest_clearance_m;
+  const double start_rad = s_.attack_sign > 0.0 ? 0.0 : kPi;
+  const int rings = static_cast<int>(std::ceil(2.0 * (x_max + y_max) / kSpotStepM));
+  for (int ring = 1; ring <= rings; ++ring) {
+    for (int k = 0; k < kSpotAngles; ++k) {
+      // 0, +step, -step, +2 step, ...: the two sides of the field alike (counted from the attack
+      // direction, so the mirrored game tries the mirrored spots in the same order).
+      const int turn = (k + 1) / 2 * (k % 2 == 1 ? 1 : -1);
+      const double heading = start_rad + s_.attack_sign * turn * (2.0 * kPi / kSpotAngles);
+      const Vec2 q = p_F + ring * kSpotStepM * UnitVector(heading);
+      if (std::abs(q.x()) > x_max || std::abs(q.y()) > y_max) continue;
+      bool clear = true;
+      for (const RobotState& r : world_.robots) clear = clear && (q - r.pose.p_F).norm() >= clear_m;
+      if (clear) return q;
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace

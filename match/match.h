@@ -14,7 +14,8 @@
 //     drawn from the kick model); moves follow match/robot_collisions.h (bodies never overlap,
 //     opponents never leave their regions, nobody leaves the carpet);
 //     A held ball can be taken only by a robot within the holder's steal cone (in front of it);
-//     blocking (a goalie) spreads the body across its heading (RobotParams' block figures);
+//     releasing leaves a held ball at rest where it lies, in front of the robot; blocking (a
+//     goalie) spreads the body across its heading (RobotParams' block figures);
 //  4. the ball: held, it sits at the holder's front; rolling, it advances and rebounds off the
 //     bodies it meets with the ball-robot restitution (match/match_world.h); resting, a body that
 //     walks into it pushes it out to the body's edge;
@@ -23,7 +24,12 @@
 //     since the last kick) touched the ball last; the goalie's touch ends the trial as "block".
 //     Each kick's own travel ends in a kick_end event (rest, a body, a grab or the trial's end);
 //     the robot that touched the ball last and whether an attacker's kick sent it are recorded;
-//  6. the referee judges the ball's move; the time limit ends the trial as "timeout".
+//  6. contests: a ball held within grabbing reach of the other team begins a contest, which lasts
+//     while both teams stay within reach; one that has lasted longer than the ball-holding limit
+//     (the league's rule, models/match/simulation.json) with the ball held or at rest is ended:
+//     the ball is set down free at the nearest spot on the field contest_clearance_m clear of
+//     every body, and counted;
+//  7. the referee judges the ball's move; the time limit ends the trial as "timeout".
 // Randomness comes from the trial's key only (perception noise, grabs, message loss, kicks), so a
 // trial gives the same result on any thread.
 #pragma once

@@ -83,6 +83,17 @@ std::string RegionText(const FieldBox& r) {
 
 }  // namespace
 
+std::string_view GoalieModelName(GoalieModel model) {
+  return model == GoalieModel::kRos2009 ? "ros2009" : "runswift2005";
+}
+
+std::optional<GoalieModel> GoalieModelNamed(std::string_view name) {
+  for (GoalieModel m : {GoalieModel::kRos2009, GoalieModel::kRunswift2005}) {
+    if (GoalieModelName(m) == name) return m;
+  }
+  return std::nullopt;
+}
+
 FieldBox PenaltyArea(const FieldSpec& field, const SimulationParams& sim, double sign) {
   const FieldBox area{field.HalfLength() - sim.penalty_area_depth_m, field.HalfLength(),
                       -sim.penalty_area_half_width_m, sim.penalty_area_half_width_m};
@@ -171,9 +182,17 @@ MatchConfig LoadMatchConfig(const std::string& reference, const std::filesystem:
                           "clear_side_kicks", "clear_direction_margin_sd", "clear_free_distance_m",
                           "clear_free_cone_deg", "penalty_area_ends_trial", "time_limit_s",
                           "time_limit_kind", "goalie", "default_trials", "scenarios"});
-  std::vector<std::string_view> figures{
-      "opponents",       "clear_side_kicks", "clear_direction_margin_sd", "clear_free_distance_m",
-      "clear_free_cone_deg", "time_limit_s", "default_trials",            "scenarios"};
+  std::vector<std::string_view> figures{"opponents",
+                                        "clear_kick",
+                                        "clear_side_kicks",
+                                        "clear_direction_margin_sd",
+                                        "clear_free_distance_m",
+                                        "clear_free_cone_deg",
+                                        "penalty_area_ends_trial",
+                                        "time_limit_s",
+                                        "time_limit_kind",
+                                        "default_trials",
+                                        "scenarios"};
   c.name = root.String("name");
   c.clear_kick = root.String("clear_kick");
   c.clear_side_kicks = root.StringArray("clear_side_kicks");
@@ -204,8 +223,12 @@ MatchConfig LoadMatchConfig(const std::string& reference, const std::filesystem:
   RequireSources(root, figures);
   if (c.HasGoalie()) {
     const JsonObject g = root.Object("goalie");
-    g.RejectUnknownKeys({"latency_s", "guard_distance_m", "walk_speed_mps", "block_earliest_s",
-                         "block_refractory_s"});
+    g.RejectUnknownKeys({"model", "latency_s", "guard_distance_m", "walk_speed_mps",
+                         "block_earliest_s", "block_refractory_s"});
+    const std::string model = g.String("model");
+    const std::optional<GoalieModel> named = GoalieModelNamed(model);
+    if (!named) g.Fail("model", "must be ros2009 or runswift2005, got '" + model + "'");
+    c.goalie.model = *named;
     c.goalie.latency_s = g.Number("latency_s");
     c.goalie.guard_distance_m = g.Number("guard_distance_m");
     c.goalie.walk_speed_mps = g.Number("walk_speed_mps");

@@ -14,7 +14,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/geometry.h"
@@ -39,12 +41,22 @@ struct Scenario {
   std::vector<Pose2> opponents;  // in the configuration's order
 };
 
-// How the goalie plays (match/goalie.h): it sees the ball latency_s late (vision and
-// decision), stands on the line from the ball to its goal's centre guard_distance_m in front of
-// the goal line (as far as its region allows), walks there at most at walk_speed_mps, and blocks
-// a ball its block would stop that arrives within block_earliest_s, at most once every
-// block_refractory_s.
+// Which goalie plays. kRos2009: the paper's (sec. 5.1.2: every opponent, the goalie included,
+// stays in its home region, goes for a ball inside it and clears it, and otherwise stands at the
+// region's boundary facing the ball; match/opponent_team.h). kRunswift2005: rUNSWift 2005's
+// competition goalie (match/goalie.h), a stronger keeper.
+enum class GoalieModel : std::uint8_t { kRos2009, kRunswift2005 };
+std::string_view GoalieModelName(GoalieModel model);  // "ros2009", "runswift2005"
+// The model called `name`, or nothing.
+std::optional<GoalieModel> GoalieModelNamed(std::string_view name);
+
+// How the goalie plays. `model` chooses it; the figures below are the rUNSWift goalie's
+// (match/goalie.h): it sees the ball latency_s late (vision and decision), stands on the line
+// from the ball to its goal's centre guard_distance_m in front of the goal line (as far as its
+// region allows), walks there at most at walk_speed_mps, and blocks a ball its block would stop
+// that arrives within block_earliest_s, at most once every block_refractory_s.
 struct GoalieParams {
+  GoalieModel model = GoalieModel::kRos2009;
   double latency_s = 0.0;
   double guard_distance_m = 0.0;
   double walk_speed_mps = 0.0;

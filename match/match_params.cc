@@ -15,6 +15,10 @@ void RobotParams::Validate() const {
   RequireInRange("turn_speed_deg_per_s", turn_speed_radps * kRadToDeg, 1.0, 1000.0);
   RequireInRange("dribble_speed_mps", dribble_speed_mps, 0.01, walk_speed_mps);
   RequireInRange("dribble_turn_speed_deg_per_s", dribble_turn_speed_radps * kRadToDeg, 1.0, 1000.0);
+  RequireInRange("walk_sideways_mps", walk_sideways_mps, 0.01, 5.0);
+  RequireInRange("walk_backward_mps", walk_backward_mps, 0.0, 5.0);
+  RequireInRange("dribble_sideways_mps", dribble_sideways_mps, 0.0, 5.0);
+  RequireInRange("dribble_backward_mps", dribble_backward_mps, 0.0, 5.0);
   RequireInRange("grab_reach_m", grab_reach_m, 0.0, 0.5);
   RequireInRange("grab_cone_deg", grab_cone_rad * kRadToDeg, 1.0, 180.0);
   RequireInRange("grab_time_s", grab_time_s, 0.0, 10.0);
@@ -40,6 +44,7 @@ void SimulationParams::Validate() const {
   RequireInRange("penalty_area_half_width_m", penalty_area_half_width_m, 0.05, 3.0);
   RequireInRange("touch_tolerance_m", touch_tolerance_m, 0.0, 0.1);
   RequireInRange("ball_holding_limit_s", ball_holding_limit_s, 0.1, 60.0);
+  RequireInRange("contest_clearance_m", contest_clearance_m, 0.0, 1.0);
 }
 
 RobotParams LoadRobotParams(const std::string& reference, const std::filesystem::path& models_dir) {
@@ -49,12 +54,16 @@ RobotParams LoadRobotParams(const std::string& reference, const std::filesystem:
   const JsonObject root = doc.Root();
   root.RejectUnknownKeys(
       {"name", "sources", "body_radius_m", "walk_speed_mps", "turn_speed_deg_per_s",
-       "dribble_speed_mps", "dribble_turn_speed_deg_per_s", "grab_reach_m", "grab_cone_deg",
+       "dribble_speed_mps", "dribble_turn_speed_deg_per_s", "walk_sideways_mps",
+       "walk_backward_mps", "dribble_sideways_mps", "dribble_backward_mps", "grab_reach_m",
+       "grab_cone_deg",
        "grab_time_s", "grab_failure_rate", "kick_time_s", "kick_launch_s", "steal_success_rate",
        "steal_cone_deg", "block_half_span_m", "block_down_s", "block_hold_s", "block_recover_s"});
   RequireSources(root,
                  {"body_radius_m", "walk_speed_mps", "turn_speed_deg_per_s", "dribble_speed_mps",
-                  "dribble_turn_speed_deg_per_s", "grab_reach_m", "grab_cone_deg", "grab_time_s",
+                  "dribble_turn_speed_deg_per_s", "walk_sideways_mps", "walk_backward_mps",
+                  "dribble_sideways_mps", "dribble_backward_mps", "grab_reach_m", "grab_cone_deg",
+                  "grab_time_s",
                   "grab_failure_rate", "kick_time_s", "kick_launch_s", "steal_success_rate",
                   "steal_cone_deg", "block_half_span_m", "block_down_s", "block_hold_s",
                   "block_recover_s"});
@@ -65,6 +74,10 @@ RobotParams LoadRobotParams(const std::string& reference, const std::filesystem:
   p.turn_speed_radps = root.Number("turn_speed_deg_per_s") * kDegToRad;
   p.dribble_speed_mps = root.Number("dribble_speed_mps");
   p.dribble_turn_speed_radps = root.Number("dribble_turn_speed_deg_per_s") * kDegToRad;
+  p.walk_sideways_mps = root.Number("walk_sideways_mps");
+  p.walk_backward_mps = root.Number("walk_backward_mps");
+  p.dribble_sideways_mps = root.Number("dribble_sideways_mps");
+  p.dribble_backward_mps = root.Number("dribble_backward_mps");
   p.grab_reach_m = root.Number("grab_reach_m");
   p.grab_cone_rad = root.Number("grab_cone_deg") * kDegToRad;
   p.grab_time_s = root.Number("grab_time_s");
@@ -91,11 +104,12 @@ SimulationParams LoadSimulationParams(const std::string& reference,
                           "ball_noise_sigma_m", "robot_noise_sigma_m", "message_latency_s",
                           "message_loss_rate", "close_margin_m", "penalty_area_depth_m",
                           "penalty_area_half_width_m", "touch_tolerance_m",
-                          "ball_holding_limit_s"});
+                          "ball_holding_limit_s", "contest_clearance_m"});
   RequireSources(
       root, {"control_step_s", "ball_noise_sigma_m", "robot_noise_sigma_m", "message_latency_s",
              "message_loss_rate", "close_margin_m", "penalty_area_depth_m",
-             "penalty_area_half_width_m", "touch_tolerance_m", "ball_holding_limit_s"});
+             "penalty_area_half_width_m", "touch_tolerance_m", "ball_holding_limit_s",
+             "contest_clearance_m"});
   p.field = root.String("field");
   p.kicks = root.String("kicks");
   p.robot = root.String("robot");
@@ -109,6 +123,7 @@ SimulationParams LoadSimulationParams(const std::string& reference,
   p.penalty_area_half_width_m = root.Number("penalty_area_half_width_m");
   p.touch_tolerance_m = root.Number("touch_tolerance_m");
   p.ball_holding_limit_s = root.Number("ball_holding_limit_s");
+  p.contest_clearance_m = root.Number("contest_clearance_m");
   WithFile(p.file.string(), [&] { p.Validate(); });
   return p;
 }

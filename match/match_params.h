@@ -3,9 +3,10 @@
 // "sources" object: where it comes from, or "assumption: why" (RequireSources checks this).
 //
 // robot (models/match/aibo_ers7.json): an AIBO ERS-7 as the simulator moves it, a disc of
-//   body_radius_m that walks at up to walk_speed_mps (any direction in the robot frame) while
-//   turning at up to turn_speed_radps; holding the ball it walks at dribble_speed_mps and turns
-//   at dribble_turn_speed_radps. It grabs a ball whose centre lies within grab_reach_m of its
+//   body_radius_m that walks in any direction of its frame at up to walk_speed_mps forward,
+//   walk_backward_mps backward and walk_sideways_mps sideways (match/robot_motion.h) while
+//   turning at up to turn_speed_radps; holding the ball it walks at dribble_speed_mps,
+//   dribble_backward_mps and dribble_sideways_mps and turns at dribble_turn_speed_radps. It grabs a ball whose centre lies within grab_reach_m of its
 //   front (the body's edge) and within grab_cone_rad of straight ahead; a grab takes
 //   grab_time_s and fails with grab_failure_rate; grabbing a ball another robot holds (a steal)
 //   then also needs steal_success_rate, and is possible only from within steal_cone_rad of the
@@ -18,7 +19,8 @@
 //   control step; perception noise (Gaussian sigmas on the perceived ball and other robots,
 //   0 = the paper's noiseless simulator); message latency and loss; the referee's "close"
 //   margin (sec. 5.1.4); the penalty area (the field file has none); how near a ball must be to
-//   a body to count as touching it; the ball-holding rule both teams' policies obey.
+//   a body to count as touching it; the ball-holding rule both teams' policies obey, and the
+//   referee's end of a ball fought over by both teams for longer than that rule allows.
 #pragma once
 
 #include <filesystem>
@@ -37,6 +39,10 @@ struct RobotParams {
   double turn_speed_radps = 0.0;
   double dribble_speed_mps = 0.0;
   double dribble_turn_speed_radps = 0.0;
+  double walk_sideways_mps = 0.0;
+  double walk_backward_mps = 0.0;
+  double dribble_sideways_mps = 0.0;
+  double dribble_backward_mps = 0.0;  // 0: no walking backwards with the ball
   double grab_reach_m = 0.0;
   double grab_cone_rad = 0.0;
   double grab_time_s = 0.0;
@@ -68,6 +74,10 @@ struct SimulationParams {
   double penalty_area_half_width_m = 0.0;
   double touch_tolerance_m = 0.0;
   double ball_holding_limit_s = 0.0;  // a rule both teams obey: release the ball within it
+  // The referee's end of a contest (match/match.h): a ball held or fought over within grabbing
+  // reach of both teams for longer than ball_holding_limit_s is set down contest_clearance_m
+  // clear of every body.
+  double contest_clearance_m = 0.0;
 
   void Validate() const;
 };

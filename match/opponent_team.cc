@@ -81,7 +81,14 @@ RobotCommand OpponentTeam::Clear(Memory& m, const Perception& p) const {
   };
   RobotCommand kick;
   kick.kind = CommandKind::kKick;
-  for (int k : clear_kicks_) {  // a safe, free kick now: the clear kick first
+  const double side_y = p.p_F_ball.y() >= -1e-9 ? 1.0 : -1.0;  // the nearer side line's sign
+  // A safe, free kick now: the clear kick first, then the side kicks, the one towards the nearer
+  // side line first (a rule in field terms, so the mirrored game kicks the mirrored kick).
+  std::vector<int> order = clear_kicks_;
+  std::stable_sort(order.begin() + 1, order.end(), [&](int a, int b) {
+    return std::sin(kick_heading(a)) * side_y > std::sin(kick_heading(b)) * side_y;
+  });
+  for (int k : order) {
     if (SafeDirection(p, kick_heading(k), k) && BlockedAt(p, kick_heading(k)) == kFree) {
       kick.kick_index = k;
       return kick;
@@ -104,7 +111,6 @@ RobotCommand OpponentTeam::Clear(Memory& m, const Perception& p) const {
   // Turn with the ball towards the nearest safe, free heading of the clear kick.
   const int clear = clear_kicks_.front();
   const double clear_dir = kicks_->kicks[static_cast<std::size_t>(clear)].direction_rad;
-  const double side_y = p.p_F_ball.y() >= -1e-9 ? 1.0 : -1.0;  // the nearer side line's sign
   double target = p.attack_sign > 0.0 ? 0.0 : kPi;  // upfield when no heading is free
   for (int step = 0; step <= 180; ++step) {
     const double turn = step * kHeadingStepRad;
@@ -140,7 +146,8 @@ RobotCommand OpponentTeam::Decide(const Perception& p) {
   Memory& m = memory_[self];
   if (p.holding_ball && !m.was_holding) m.holding_since_s = p.time_s;
   m.was_holding = p.holding_ball;
-  if (config_->opponents[self].role == OpponentRole::kGoalie && !p.holding_ball) {
+  if (config_->opponents[self].role == OpponentRole::kGoalie &&
+      config_->goalie.model == GoalieModel::kRunswift2005 && !p.holding_ball) {
     return goalies_[self].Decide(p);  // it sees every step, busy or not
   }
   if (p.busy) return {};

@@ -14,13 +14,16 @@
 // when its mean direction lies within 90 deg - clear_direction_margin_sd x its direction sd of
 // straight upfield (away from the own goal) and no body stands within clear_free_distance_m and
 // clear_free_cone_rad of that line. Holding the ball it kicks at once with a safe kick (the clear
-// kick first, then the side kicks: a defender facing its own goal kicks sideways); otherwise it
+// kick first, then the side kicks, towards the nearer side line first: a defender facing its own
+// goal kicks sideways); otherwise it
 // turns with the ball towards the safe heading of the clear kick nearest its own (ties towards the
 // side line the ball is nearer to); when the ball-holding rule makes it kick (held for the limit
 // minus kick_launch_s) it kicks the kick whose direction is safest: unblocked first, then the
 // most upfield.
 //
-// The goalie plays match/goalie.h.
+// The goalie: the paper's (GoalieModel::kRos2009, the default) is one of these robots, its home
+// region in the penalty area ("Each robot has a home region ...", the sentence above, says it of
+// every opponent); rUNSWift's competition goalie (kRunswift2005) plays match/goalie.h instead.
 #pragma once
 
 #include <vector>
@@ -62,7 +65,7 @@ class OpponentTeam final : public TeamPolicy {
   double dt_s_;
   double release_after_s_;  // kick when the ball has been held this long
   std::vector<Memory> memory_;
-  std::vector<Goalie> goalies_;  // one per opponent (used for the goalie's index only)
+  std::vector<Goalie> goalies_;  // one per opponent (used for a kRunswift2005 goalie's index only)
 };
 
 // The index of the kick `name` in `kicks`, or an InputError "FILE: FIELD: unknown kick ..."

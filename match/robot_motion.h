@@ -1,7 +1,9 @@
 // How a robot's walk command moves it in one control step (policies steer with the inverse,
 // models/walk_command.h): omnidirectional walking (the AIBO walks in any direction of its frame
-// while turning), the velocity scaled down to the speed limit along its own direction, the
-// turning rate clamped. The position advances with the heading at the start of the step.
+// while turning), the velocity scaled down along its own direction onto the ellipse of the
+// gait's top speeds (forward or backward along x, sideways along y: (vx / vx_max)^2 +
+// (vy / vy_max)^2 <= 1; a top speed of 0 forbids that way), the turning rate clamped. The
+// position advances with the heading at the start of the step.
 #pragma once
 
 #include "common/geometry.h"
@@ -10,8 +12,10 @@
 namespace foresight {
 
 struct WalkLimits {
-  double speed_mps = 0.0;
+  double forward_mps = 0.0;
   double turn_radps = 0.0;
+  double sideways_mps = 0.0;
+  double backward_mps = 0.0;
 };
 
 // The pose after walking with v_R_mps and turn_radps (both clamped to `limits`) for dt_s.

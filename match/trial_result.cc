@@ -15,7 +15,7 @@ inline constexpr EnumNames<TrialOutcome, kTrialOutcomeCount> kOutcomeNames{{{
     {TrialOutcome::kTimeout, "timeout"},
 }}};
 
-inline constexpr EnumNames<EventKind, 10> kEventNames{{{
+inline constexpr EnumNames<EventKind, 12> kEventNames{{{
     {EventKind::kGrab, "grab"},
     {EventKind::kGrabFailed, "grab_failed"},
     {EventKind::kSteal, "steal"},
@@ -26,6 +26,8 @@ inline constexpr EnumNames<EventKind, 10> kEventNames{{{
     {EventKind::kBackUp, "back_up"},
     {EventKind::kEnd, "end"},
     {EventKind::kKickEnd, "kick_end"},
+    {EventKind::kRelease, "release"},
+    {EventKind::kBallMoved, "ball_moved"},
 }}};
 
 inline constexpr EnumNames<Side, 2> kSideNames{

@@ -38,6 +38,8 @@ enum class EventKind : std::uint8_t {
   // "grab" when one took it, "end" when the trial ended first). With the kick event before it,
   // it gives how far and which way the kick moved the ball.
   kKickEnd,
+  kRelease,    // a holder let the ball go without kicking it
+  kBallMoved,  // the referee set down a ball both teams fought over too long (robot 0, unused)
 };
 std::string_view EventKindName(EventKind kind);
 
@@ -80,6 +82,9 @@ struct TrialCounters {
   // the goalie touched before their travel ended (saves).
   int shots_on_target = 0;
   int shots_saved = 0;
+  // How often the referee set down a ball robots of both teams had fought over for longer than
+  // the ball-holding rule allows (match/match.h).
+  int contests_resolved = 0;
 };
 
 // Every robot and the ball at one time (attackers first, then opponents).

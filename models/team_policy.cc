@@ -5,12 +5,13 @@
 namespace foresight {
 
 namespace {
-inline constexpr EnumNames<CommandKind, 5> kCommandKindNames{{{
+inline constexpr EnumNames<CommandKind, 6> kCommandKindNames{{{
     {CommandKind::kStand, "stand"},
     {CommandKind::kWalk, "walk"},
     {CommandKind::kGetBall, "get_ball"},
     {CommandKind::kKick, "kick"},
     {CommandKind::kBlock, "block"},
+    {CommandKind::kRelease, "release"},
 }}};
 }  // namespace
 

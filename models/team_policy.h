@@ -8,7 +8,8 @@
 // command: a velocity in the robot frame and a turning rate), get the ball (walk to it and grab
 // it; a grab can fail), dribble (walk while holding the ball: the same walk command, which the
 // simulator executes slower), kick with a kick of the kick model (by index into the match's
-// KickModel; the robot stands still while it kicks), block (a goalie's block: the robot goes
+// KickModel; the robot stands still while it kicks), release (let a held ball go where it lies,
+// in front of the robot, without kicking it), block (a goalie's block: the robot goes
 // down across its heading for the robot's block time and gets up again, unable to move) and send
 // a message to the teammates (delivered after a latency, possibly lost).
 #pragma once
@@ -52,7 +53,7 @@ struct Perception {
   std::span<const TeamMessage> inbox;  // messages delivered at this step
 };
 
-enum class CommandKind : std::uint8_t { kStand, kWalk, kGetBall, kKick, kBlock };
+enum class CommandKind : std::uint8_t { kStand, kWalk, kGetBall, kKick, kBlock, kRelease };
 std::string_view CommandKindName(CommandKind kind);
 
 struct RobotCommand {

@@ -103,6 +103,7 @@ py::dict Passing(const py::object& config, const py::object& team, const py::obj
         results, [&, field](int, S s, int i) { return at(s, i).counters.*field; });
   };
   out["shots_on_target"] = counter(&TrialCounters::shots_on_target);
+  out["contests_resolved"] = counter(&TrialCounters::contests_resolved);
   out["shots_saved"] = counter(&TrialCounters::shots_saved);
   out["grabs_failed"] = counter(&TrialCounters::grabs_failed);
   // Kicks whose physics trial did not end ok (physics=True only; models/outcome.h).
@@ -148,9 +149,9 @@ void AddMatchAndCbr(py::module_& m) {
         "scenarios a list of 1-based numbers (None: all), trials per scenario. Returns NumPy "
         "arrays, one entry per trial in play order: team (code into team_names), scenario, "
         "trial, outcome (code into outcome_names), to_goal, time_s (simulated seconds), "
-        "attacker_kicks, opponent_touches, shots_on_target, shots_saved, grabs_failed, and the "
-        "kicks whose physics trial missed, did not settle, fell or was blocked (kicks_missed, "
-        "kicks_not_settled, kicks_fell, kicks_blocked; 0 without physics). base 'fixed' or "
+        "attacker_kicks, opponent_touches, shots_on_target, shots_saved, contests_resolved, "
+        "grabs_failed, and the kicks whose physics trial missed, did not settle, fell or was "
+        "blocked (kicks_missed, kicks_not_settled, kicks_fell, kicks_blocked; 0 without physics). base 'fixed' or "
         "'floating' (with physics=True) replaces the physics file's. The same seed gives the "
         "same trials as the command. Ctrl-C stops it; progress(label, done, total).");
   py::class_<CaseBaseObject>(m, "CaseBase",

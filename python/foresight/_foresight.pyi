@@ -198,6 +198,7 @@ def passing(config: Union[str, PathLike], team: Optional[str] = None,
     scenario. NumPy arrays, one entry per trial in play order: team (int8 code into
     team_names), scenario, trial (int32), outcome (int8 code into outcome_names: goal, close,
     block, out, penalty_area, timeout), to_goal (bool), time_s (simulated), attacker_kicks,
-    opponent_touches, shots_on_target, shots_saved, grabs_failed, kicks_missed,
+    opponent_touches, shots_on_target, shots_saved, contests_resolved (the referee set down a
+    ball both teams fought over too long), grabs_failed, kicks_missed,
     kicks_not_settled, kicks_fell, kicks_blocked (int32; the last four count physics kicks
     that did not end ok). base: "fixed" or "floating", with physics=True."""

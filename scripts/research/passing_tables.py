@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Markdown tables for docs/EXPERIMENTS.md from `foresight experiment passing --team both` output
-folders: the claims tally, the outcomes with who caused them, and the reactive team's back-ups
-(Table 2). Reads only what the run wrote (scorecard.json, passing_<team>.json,
+folders: the world check (the reactive team against the paper's reactive rows), the claims
+tally, the outcomes with who caused them, and the reactive team's back-ups (Table 2). Reads only what the run wrote (scorecard.json, passing_<team>.json,
 passing_<team>_trials.csv); computes nothing the tool does not, except the share of outs whose
 last touch was an attacker's, counted from the trials CSV.
 
@@ -15,6 +15,28 @@ from pathlib import Path
 
 TEAMS = ("cbr", "reactive")
 ATTACKERS = ("A", "B")  # the robots last_touch names on the attacking side
+
+
+def world_check(card):
+    w = card["world_check"]
+    print(f"{card['config'].upper()}, goalie {card['goalie']}: {w['scenarios_agreeing']} of "
+          f"{len(w['scenarios'])} scenarios agree (the paper's {w['team']} value inside our "
+          f"interval or within {w['within_points']:g} points)")
+    print()
+    print("| scn | measure | paper | ours | our 95 % interval | verdict |")
+    print("| --- | --- | --- | --- | --- | --- |")
+    for s in w["scenarios"]:
+        for c in s["cells"]:
+            if c["ours"] is None:
+                continue
+            share = c["column"].endswith("%")
+            ours = f"{c['ours']:.1f}" if share else f"{c['ours']:.2f}"
+            ci = (f"[{c['ours_ci'][0]:.1f}, {c['ours_ci'][1]:.1f}]" if share else
+                  f"[{c['ours_ci'][0]:.2f}, {c['ours_ci'][1]:.2f}]") if c["ours_ci"] else "-"
+            name = f"**{c['column']}**" if c["decides"] else c["column"]
+            print(f"| {s['scenario']} | {name} | {c['paper']:g} | {ours} | {ci} | {c['verdict']} |")
+        print(f"| {s['scenario']} | **scenario** | | | | {s['verdict']} |")
+    print()
 
 
 def claims(cards):
@@ -43,8 +65,8 @@ def outs_by_attackers(folder, team):
 def outcomes(folder, card):
     print("| cfg | scn | team | goal | close | block | out (attackers last) | p. area | to goal "
           "| by the attackers | timeout / cap | opp. touches | time (s) | shots on target, saved "
-          "| opp. kicks >= 0.3 m, towards own goal |")
-    print("| --- " * 15 + "|")
+          "| opp. kicks >= 0.3 m, towards own goal | contests ended |")
+    print("| --- " * 16 + "|")
     for team in TEAMS:
         run = json.loads((folder / f"passing_{team}.json").read_text())
         outs = outs_by_attackers(folder, team)
@@ -59,7 +81,8 @@ def outcomes(folder, card):
                   f"{pct('penalty_area')} | {100 * s['to_goal']['share']:.1f} | "
                   f"{100 * c['to_goal_by_attackers']['share']:.1f} | {pct('timeout')} | {touches} | "
                   f"{s['time_s']['mean']:.1f} | {c['shots_on_target']}, {c['shots_saved']} | "
-                  f"{c['opponent_kicks_moved']}, {c['opponent_kicks_towards_own_goal']} |")
+                  f"{c['opponent_kicks_moved']}, {c['opponent_kicks_towards_own_goal']} | "
+                  f"{c['contests_resolved_per_trial']:.2f} |")
 
 
 def backups(card):
@@ -105,6 +128,8 @@ def main(folders):
     if not folders:
         return
     cards = [json.loads((f / "scorecard.json").read_text()) for f in folders]
+    for card in cards:
+        world_check(card)
     claims(cards)
     print()
     for folder, card in zip(folders, cards):

@@ -44,6 +44,7 @@ class GoalieTest : public ::testing::Test {
     robot_ = LoadRobotParams("aibo_ers7", models);
     kicks_ = LoadKickModel(models / "kicks" / "aibo_ers7_published.json");
     config_ = LoadMatchConfig("dg", models, field_, sim_, robot_);
+    config_.goalie.model = GoalieModel::kRunswift2005;  // match/goalie.h, not the paper's
     restitution_ = LoadPhysicsParams(models / "physics" / "four_legged.json")
                        .materials.restitution.robot;
   }

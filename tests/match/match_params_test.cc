@@ -41,7 +41,7 @@ std::string ErrorOf(const std::function<void()>& load) {
 TEST(MatchParamsTest, ShippedFilesLoad) {
   const auto models = testing::ModelsDir();
   const RobotParams robot = LoadRobotParams("aibo_ers7", models);
-  EXPECT_DOUBLE_EQ(robot.walk_speed_mps, 0.3);
+  EXPECT_DOUBLE_EQ(robot.walk_speed_mps, 0.406);
   const SimulationParams sim = LoadSimulationParams("simulation", models);
   const FieldSpec field = LoadFieldSpec(models / "fields" / "four_legged.json");
   for (const char* config : {"dg", "2d"}) {
@@ -53,11 +53,11 @@ TEST(MatchParamsTest, ShippedFilesLoad) {
 
 TEST(MatchParamsTest, EveryFigureNeedsASource) {
   const auto file = testing::WriteTempFile(
-      "robot.json", Replace(Shipped("aibo_ers7.json"), "\"kick_time_s\": \"assumption",
-                            "\"kick_time_x\": \"assumption"));
+      "robot.json", Replace(Shipped("aibo_ers7.json"), "\"kick_launch_s\": \"assumption",
+                            "\"kick_launch_x\": \"assumption"));
   const std::string error = ErrorOf([&] { LoadRobotParams(file.string(), "."); });
   EXPECT_THAT(error, HasSubstr(file.string() + ": sources"));
-  EXPECT_THAT(error, HasSubstr("kick_time_x"));
+  EXPECT_THAT(error, HasSubstr("kick_launch_x"));
 }
 
 TEST(MatchParamsTest, BadValueNamesFileFieldAndValue) {
@@ -79,6 +79,30 @@ TEST(MatchParamsTest, ReactiveTeamNeedsARoleRegionPerAttacker) {
   const std::string error = ErrorOf([&] { LoadReactiveParams(file.string(), "."); });
   EXPECT_THAT(error,
               HasSubstr(file.string() + ": role_regions: must give one region per attacker"));
+}
+
+TEST(MatchParamsTest, ContestClearanceIsCheckedAndNeedsASource) {
+  const auto bad = testing::WriteTempFile(
+      "sim.json", Replace(Shipped("simulation.json"), "\"contest_clearance_m\": 0.3",
+                          "\"contest_clearance_m\": -0.3"));
+  const std::string error = ErrorOf([&] { LoadSimulationParams(bad.string(), "."); });
+  EXPECT_THAT(error, HasSubstr(bad.string() + ": contest_clearance_m"));
+  EXPECT_THAT(error, HasSubstr("-0.3"));
+  const auto unsourced = testing::WriteTempFile(
+      "sim.json", Replace(Shipped("simulation.json"), "\"contest_clearance_m\": \"assumption",
+                          "\"contest_clearance_x\": \"assumption"));
+  const std::string unsourced_error = ErrorOf([&] { LoadSimulationParams(unsourced.string(), "."); });
+  EXPECT_THAT(unsourced_error, HasSubstr(unsourced.string() + ": sources"));
+  EXPECT_THAT(unsourced_error, HasSubstr("contest_clearance_x"));
+}
+
+TEST(MatchParamsTest, ReactiveRuleFiguresAreChecked) {
+  const auto file = testing::WriteTempFile(
+      "reactive.json",
+      Replace(Shipped("reactive.json"), "\"regrab_delay_s\": 2.0", "\"regrab_delay_s\": -1"));
+  const std::string error = ErrorOf([&] { LoadReactiveParams(file.string(), "."); });
+  EXPECT_THAT(error, HasSubstr(file.string() + ": regrab_delay_s"));
+  EXPECT_THAT(error, HasSubstr("-1"));
 }
 
 class ConfigTest : public ::testing::Test {
@@ -115,6 +139,18 @@ TEST_F(ConfigTest, OpponentStartingOutsideItsRegionIsAnError) {
   const std::string error =
       Load(Replace(Shipped("dg.json"), "\"x_min_m\": -0.3", "\"x_min_m\": 0.5"));
   EXPECT_THAT(error, HasSubstr("opponent D starts outside its region"));
+}
+
+TEST_F(ConfigTest, TheGoalieModelIsThePapersByDefaultRunswiftsOnRequestAndNothingElse) {
+  const MatchConfig dg = LoadMatchConfig("dg", models_, field_, sim_, robot_);
+  EXPECT_EQ(dg.goalie.model, GoalieModel::kRos2009);
+  EXPECT_EQ(Load(Replace(Shipped("dg.json"), "\"model\": \"ros2009\"",
+                         "\"model\": \"runswift2005\"")),
+            "no error");
+  const std::string error =
+      Load(Replace(Shipped("dg.json"), "\"model\": \"ros2009\"", "\"model\": \"keeper9\""));
+  EXPECT_THAT(error, HasSubstr("config.json: goalie.model: must be ros2009 or runswift2005"));
+  EXPECT_THAT(error, HasSubstr("keeper9"));
 }
 
 TEST_F(ConfigTest, UnknownScenarioNamesTheMissingFile) {

@@ -181,5 +181,108 @@ TEST_F(MatchTest, PerceptionNoiseHasTheGivenSigmaAndNoneByDefault) {
   EXPECT_NEAR(sigma, 0.05, 0.005);  // 250 steps x 2 axes
 }
 
+// Every robot of the team goes for the ball and never lets it go: a fight that only the referee
+// ends (robot 1 of the attackers stands).
+class Grabber final : public TeamPolicy {
+ public:
+  RobotCommand Decide(const Perception& p) override {
+    RobotCommand c;
+    if (p.self == 0 && !p.busy && !p.holding_ball) c.kind = CommandKind::kGetBall;
+    return c;
+  }
+};
+
+TEST_F(MatchTest, TheRefereeEndsAFightForTheBallAfterTheHoldingLimitClearOfEveryBody) {
+  robot_.steal_success_rate = 1.0;
+  robot_.steal_cone_rad = kPi;  // the ball is taken from any side: the fight never ends itself
+  config_.time_limit_s = 20.0;
+  Grabber attackers, opponents;
+  // Attacker and defender face each other with the ball between them.
+  const Scenario nose_to_nose{"fight",
+                              Vec2(0.0, 0.0),
+                              {Pose2{Vec2(-0.2, 0.0), 0.0}, Pose2{Vec2(-2.0, -1.0), 0.0}},
+                              {Pose2{Vec2(0.2, 0.0), kPi}}};
+  const MatchTrialResult r = RunTrial(setup_, nose_to_nose, attackers, opponents, 5);
+  ASSERT_GT(r.counters.contests_resolved, 1);  // and again after each walk back to the ball
+  std::vector<double> moved_s;
+  for (const MatchEvent& e : r.events) {
+    if (e.kind == EventKind::kBallMoved) moved_s.push_back(e.time_s);
+  }
+  ASSERT_EQ(static_cast<int>(moved_s.size()), r.counters.contests_resolved);
+  // The first fight begins with the first grab and lasts the holding limit, to the step; no later
+  // one is shorter.
+  double first_grab_s = -1.0;
+  for (const MatchEvent& e : r.events) {
+    if (e.kind == EventKind::kGrab && first_grab_s < 0.0) first_grab_s = e.time_s;
+  }
+  ASSERT_GE(first_grab_s, 0.0);
+  EXPECT_GT(moved_s.front() - first_grab_s, sim_.ball_holding_limit_s);
+  EXPECT_LE(moved_s.front() - first_grab_s, sim_.ball_holding_limit_s + sim_.control_step_s + 1e-9);
+  for (std::size_t i = 1; i < moved_s.size(); ++i) {
+    EXPECT_GT(moved_s[i] - moved_s[i - 1], sim_.ball_holding_limit_s);
+  }
+}
+
+TEST_F(MatchTest, FreeSpotIsClearOfEveryBody) {
+  robot_.steal_success_rate = 1.0;
+  robot_.steal_cone_rad = kPi;
+  config_.time_limit_s = 5.0;
+  setup_.trace_period_s = sim_.control_step_s;
+  Grabber attackers, opponents;
+  const Scenario nose_to_nose{"fight",
+                              Vec2(0.0, 0.0),
+                              {Pose2{Vec2(-0.2, 0.0), 0.0}, Pose2{Vec2(-2.0, -1.0), 0.0}},
+                              {Pose2{Vec2(0.2, 0.0), kPi}}};
+  const MatchTrialResult r = RunTrial(setup_, nose_to_nose, attackers, opponents, 5);
+  ASSERT_EQ(r.counters.contests_resolved, 1);
+  for (const MatchEvent& e : r.events) {
+    if (e.kind != EventKind::kBallMoved) continue;
+    // The robots' poses at that step: the trace frame of the same time.
+    for (const TraceFrame& f : r.trace) {
+      if (std::abs(f.time_s - e.time_s) > 1e-9) continue;
+      for (const Pose2& body : f.robots) {
+        EXPECT_GE((e.p_F_ball - body.p_F).norm(),
+                  robot_.body_radius_m + field_.ball.radius_m + sim_.contest_clearance_m - 1e-9);
+      }
+    }
+  }
+}
+
+// A holder that releases the ball leaves it at rest where it held it.
+class GrabAndRelease final : public TeamPolicy {
+ public:
+  RobotCommand Decide(const Perception& p) override {
+    RobotCommand c;
+    if (p.self != 0 || p.busy || released_) return c;
+    if (p.holding_ball) {
+      c.kind = CommandKind::kRelease;
+      released_ = true;
+    } else {
+      c.kind = CommandKind::kGetBall;
+    }
+    return c;
+  }
+
+ private:
+  bool released_ = false;
+};
+
+TEST_F(MatchTest, AReleasedBallLiesAtRestInFrontOfTheRobot) {
+  GrabAndRelease attackers;
+  Stand opponents;
+  const MatchTrialResult r = RunTrial(setup_, OneOpponentAhead(-2.0), attackers, opponents, 7);
+  Vec2 at(0.0, 0.0);
+  int releases = 0;
+  for (const MatchEvent& e : r.events) {
+    if (e.kind == EventKind::kRelease) {
+      ++releases;
+      at = e.p_F_ball;
+    }
+  }
+  ASSERT_EQ(releases, 1);
+  EXPECT_EQ(r.events.back().p_F_ball, at);
+  EXPECT_EQ(r.counters.attacker_kicks[0], 0);
+}
+
 }  // namespace
 }  // namespace foresight

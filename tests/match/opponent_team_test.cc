@@ -92,7 +92,7 @@ TEST_F(OpponentDecisionTest, WaitsOnTheBoundaryNearestTheBallFacingIt) {
   const RobotCommand c = team.Decide(See(at, Vec2(-1.5, 0.8)));
   ASSERT_EQ(c.kind, CommandKind::kWalk);
   // One step of this command would reach (x_min, 0.8): the region's point nearest the ball.
-  const Pose2 next = ApplyWalk(at, c.v_R_mps, c.turn_radps, {1e9, 1e9}, 0.04);
+  const Pose2 next = ApplyWalk(at, c.v_R_mps, c.turn_radps, {1e9, 1e9, 1e9, 1e9}, 0.04);
   EXPECT_NEAR(next.p_F.x(), config_.opponents[0].region.x_min_m, 1e-9);
   EXPECT_NEAR(next.p_F.y(), 0.8, 1e-9);
   EXPECT_NEAR(WrapAngle(next.theta_rad - HeadingTowards(at.p_F, Vec2(-1.5, 0.8))), 0.0, 1e-9);
@@ -132,6 +132,35 @@ TEST_F(OpponentDecisionTest, ADefenderFacingItsOwnGoalNeverClearsTowardsIt) {
   const RobotCommand kick = team.Decide(holding);
   ASSERT_EQ(kick.kind, CommandKind::kKick);
   EXPECT_NE(kicks_.kicks[static_cast<std::size_t>(kick.kick_index)].name, config_.clear_kick);
+}
+
+TEST_F(OpponentDecisionTest, ThePapersGoalieWaitsOnItsRegionsBoundaryAndGoesForABallInIt) {
+  ASSERT_EQ(config_.goalie.model, GoalieModel::kRos2009);
+  const FieldBox& box = config_.opponents[1].region;
+  OpponentTeam team(config_, field_, kicks_, robot_, sim_);
+  // Ball at midfield: the goalie walks to its region's point nearest the ball, facing it.
+  const Pose2 at{Vec2(2.4, 0.0), kPi};
+  Perception p = See(at, Vec2(0.0, 0.3));
+  p.self = 1;
+  const RobotCommand wait = team.Decide(p);
+  ASSERT_EQ(wait.kind, CommandKind::kWalk);
+  const Pose2 next = ApplyWalk(at, wait.v_R_mps, wait.turn_radps, {1e9, 1e9, 1e9, 1e9}, 0.04);
+  EXPECT_NEAR(next.p_F.x(), box.x_min_m, 1e-9);
+  EXPECT_NEAR(next.p_F.y(), 0.3, 1e-9);
+  EXPECT_NEAR(WrapAngle(next.theta_rad - HeadingTowards(at.p_F, Vec2(0.0, 0.3))), 0.0, 1e-9);
+  // A ball in its region, in reach in front: it grabs it (its touch ends the trial as a block).
+  const Vec2 ball = at.ToField(Vec2(robot_.body_radius_m + field_.ball.radius_m + 0.01, 0.0));
+  Perception near = See(at, ball);
+  near.self = 1;
+  EXPECT_EQ(team.Decide(near).kind, CommandKind::kGetBall);
+  // It never blocks: that is rUNSWift's goalie, on request.
+  MatchConfig runswift = config_;
+  runswift.goalie.model = GoalieModel::kRunswift2005;
+  OpponentTeam keeper(runswift, field_, kicks_, robot_, sim_);
+  const RobotCommand guard = keeper.Decide(p);
+  ASSERT_EQ(guard.kind, CommandKind::kWalk);
+  const Pose2 guarded = ApplyWalk(at, guard.v_R_mps, guard.turn_radps, {1e9, 1e9, 1e9, 1e9}, 0.04);
+  EXPECT_GT(guarded.p_F.x(), box.x_min_m + 0.05);  // it stays back on the ball-goal line
 }
 
 TEST_F(OpponentDecisionTest, ADefenderFacingUpfieldClearsAtOnceUnlessABodyBlocksTheLine) {
