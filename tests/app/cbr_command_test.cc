@@ -233,9 +233,9 @@ TEST_F(CbrCommandTest, CheckFailsOnACaseThatHoldsTheBallTooLong) {
   base["cases"] = {(work() / "held.json").string()};
   Write("held_base.json", base.dump());
   const RunResult r = Cbr({"check", "--case-base", (work() / "held_base.json").string()});
-  EXPECT_THAT(r.out, HasSubstr("error: case dribbles_too_far: teammate 1 holds the ball 8.29 s "
-                               "before its kick forward (trajectory 0): dribbles 0.67 m at 0.15 "
-                               "m/s and turns 172 deg at 45 deg/s, beyond the ball-holding limit "
+  EXPECT_THAT(r.out, HasSubstr("error: case dribbles_too_far: teammate 1 holds the ball 2.86 s "
+                               "before its kick forward (trajectory 0): dribbles 0.67 m at 0.33 "
+                               "m/s and turns 172 deg at 209 deg/s, beyond the ball-holding limit "
                                "2.70 s\n"));
   EXPECT_THAT(r.out, HasSubstr("cases holding the ball beyond the holding limit (2.70 s): 1 of 1\n"));
   EXPECT_THAT(r.out, HasSubstr("case base FAILED"));

@@ -15,15 +15,17 @@
 namespace foresight {
 namespace {
 
-// Attacker 0 gets the ball and kicks it with kick 0 as soon as it holds it; the rest stand.
+// Attacker 0 gets the ball and kicks it with kick 0 (or releases it) as soon as it holds it; the
+// rest stand.
 class GetAndKick final : public TeamPolicy {
  public:
+  explicit GetAndKick(CommandKind then = CommandKind::kKick) : then_(then) {}
   RobotCommand Decide(const Perception& p) override {
     RobotCommand c;
     if (p.self != 0 || p.busy || kicked_) return c;
     if (p.holding_ball) {
-      c.kind = CommandKind::kKick;
-      c.kick_index = 0;
+      c.kind = then_;
+      c.kick_index = then_ == CommandKind::kKick ? 0 : kNoKick;
       kicked_ = true;
     } else {
       c.kind = CommandKind::kGetBall;
@@ -32,6 +34,7 @@ class GetAndKick final : public TeamPolicy {
   }
 
  private:
+  CommandKind then_;
   bool kicked_ = false;
 };
 
@@ -61,6 +64,13 @@ class MatchTest : public ::testing::Test {
     setup_.sim = &sim_;
     setup_.config = &config_;
     setup_.executor = executor_.get();
+  }
+  // Attacker and defender face each other with the ball between them.
+  static Scenario NoseToNose() {
+    return Scenario{"fight",
+                    Vec2(0.0, 0.0),
+                    {Pose2{Vec2(-0.2, 0.0), 0.0}, Pose2{Vec2(-2.0, -1.0), 0.0}},
+                    {Pose2{Vec2(0.2, 0.0), kPi}}};
   }
   Scenario OneOpponentAhead(double opponent_x) const {
     return Scenario{"test",
@@ -197,12 +207,7 @@ TEST_F(MatchTest, TheRefereeEndsAFightForTheBallAfterTheHoldingLimitClearOfEvery
   robot_.steal_cone_rad = kPi;  // the ball is taken from any side: the fight never ends itself
   config_.time_limit_s = 20.0;
   Grabber attackers, opponents;
-  // Attacker and defender face each other with the ball between them.
-  const Scenario nose_to_nose{"fight",
-                              Vec2(0.0, 0.0),
-                              {Pose2{Vec2(-0.2, 0.0), 0.0}, Pose2{Vec2(-2.0, -1.0), 0.0}},
-                              {Pose2{Vec2(0.2, 0.0), kPi}}};
-  const MatchTrialResult r = RunTrial(setup_, nose_to_nose, attackers, opponents, 5);
+  const MatchTrialResult r = RunTrial(setup_, NoseToNose(), attackers, opponents, 5);
   ASSERT_GT(r.counters.contests_resolved, 1);  // and again after each walk back to the ball
   std::vector<double> moved_s;
   for (const MatchEvent& e : r.events) {
@@ -229,11 +234,7 @@ TEST_F(MatchTest, FreeSpotIsClearOfEveryBody) {
   config_.time_limit_s = 5.0;
   setup_.trace_period_s = sim_.control_step_s;
   Grabber attackers, opponents;
-  const Scenario nose_to_nose{"fight",
-                              Vec2(0.0, 0.0),
-                              {Pose2{Vec2(-0.2, 0.0), 0.0}, Pose2{Vec2(-2.0, -1.0), 0.0}},
-                              {Pose2{Vec2(0.2, 0.0), kPi}}};
-  const MatchTrialResult r = RunTrial(setup_, nose_to_nose, attackers, opponents, 5);
+  const MatchTrialResult r = RunTrial(setup_, NoseToNose(), attackers, opponents, 5);
   ASSERT_EQ(r.counters.contests_resolved, 1);
   for (const MatchEvent& e : r.events) {
     if (e.kind != EventKind::kBallMoved) continue;
@@ -249,26 +250,8 @@ TEST_F(MatchTest, FreeSpotIsClearOfEveryBody) {
 }
 
 // A holder that releases the ball leaves it at rest where it held it.
-class GrabAndRelease final : public TeamPolicy {
- public:
-  RobotCommand Decide(const Perception& p) override {
-    RobotCommand c;
-    if (p.self != 0 || p.busy || released_) return c;
-    if (p.holding_ball) {
-      c.kind = CommandKind::kRelease;
-      released_ = true;
-    } else {
-      c.kind = CommandKind::kGetBall;
-    }
-    return c;
-  }
-
- private:
-  bool released_ = false;
-};
-
 TEST_F(MatchTest, AReleasedBallLiesAtRestInFrontOfTheRobot) {
-  GrabAndRelease attackers;
+  GetAndKick attackers(CommandKind::kRelease);
   Stand opponents;
   const MatchTrialResult r = RunTrial(setup_, OneOpponentAhead(-2.0), attackers, opponents, 7);
   Vec2 at(0.0, 0.0);
