@@ -25,6 +25,7 @@
 #include "common/checks.h"
 #include "common/data_file.h"
 #include "common/error.h"
+#include "models/xml_nesting.h"
 
 namespace foresight {
 namespace {
@@ -102,6 +103,8 @@ std::string DescribeUrdfErrors(std::vector<std::string> errors) {
 
 urdf::ModelInterfaceSharedPtr ParseUrdf(const std::filesystem::path& file) {
   const std::string text = ReadText(file);
+  // Before urdfdom: its parser recurses once per level (a stack overflow far below 16 MiB).
+  if (const auto problem = XmlNestingProblem(text)) Fail(file, "urdf: " + *problem);
   ErrorCollector collector;
   urdf::ModelInterfaceSharedPtr model;
   {

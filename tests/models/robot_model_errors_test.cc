@@ -264,6 +264,18 @@ TEST(RobotModelTest, MalformedXmlIsOneLineNamingTheFile) {
   EXPECT_THAT(message, Not(HasSubstr("\n")));
 }
 
+// urdfdom's XML parser recurses per level: 100,000 nested elements (1.3 MB) overflowed its
+// stack. They are refused before urdfdom sees them, in one line naming the file.
+TEST(RobotModelTest, DeeplyNestedXmlIsRefusedBeforeUrdfdom) {
+  std::string text = "<?xml version=\"1.0\"?>\n<robot name=\"r\">\n";
+  for (int i = 0; i < 100000; ++i) text += "<link name=\"a\">";
+  for (int i = 0; i < 100000; ++i) text += "</link>";
+  text += "</robot>\n";
+  const auto file = WriteTempFile("robot_model_deep.urdf", text);
+  EXPECT_EQ(LoadError(file),
+            file.string() + ": urdf: elements nested deeper than 64 levels (line 3)");
+}
+
 TEST(RobotModelTest, MissingFileCannotBeOpened) {
   const std::filesystem::path file = ModelsDir() / "robots" / "no_such_robot.urdf";
   EXPECT_EQ(LoadError(file), file.string() + ": cannot open file");
