@@ -186,6 +186,20 @@ TEST(RobotModelTest, MeshWithoutVerticesIsRejected) {
       file.string() + ": link foot: collision mesh robot_model_empty.stl: mesh has no vertices");
 }
 
+// A mesh with every vertex on one point (or flat) has no volume: each kick at it silently
+// missed. Refused as a box of size 0 is.
+TEST(RobotModelTest, MeshWithoutExtentIsRejected) {
+  WriteTempFile("robot_model_point.obj",
+                "v 0.5 0.25 0.125\nv 0.5 0.25 0.125\nv 0.5 0.25 0.125\nf 1 2 3\n");
+  const auto point = TesterUrdf("point_mesh", "CUBE_OBJ", "robot_model_point.obj");
+  EXPECT_EQ(LoadError(point), point.string() +
+                                  ": link foot: collision mesh robot_model_point.obj: mesh has no "
+                                  "extent in x (every vertex at x = 0.25)");
+  WriteTempFile("robot_model_flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const auto flat = TesterUrdf("flat_mesh", "CUBE_OBJ", "robot_model_flat.obj");
+  EXPECT_THAT(LoadError(flat), HasSubstr("mesh has no extent in z (every vertex at z = 0)"));
+}
+
 TEST(RobotModelTest, PackageUrisAreNotSupported) {
   const auto file = TesterUrdf("package_uri", "CUBE_OBJ", "package://tester/meshes/cube.obj");
   EXPECT_EQ(LoadError(file), file.string() +
