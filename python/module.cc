@@ -81,7 +81,7 @@ py::object Decide(const py::object& situation, const py::object& strategy,
   r.state = r.core->situation.state;
   r.seed = seed.is_none() ? 1 : SeedFrom(seed);
   r.samples = r.core->samples;
-  std::lock_guard<std::mutex> lock(r.core->mutex);
+  const PlannerLock lock(*r.core);
   DecideLocked(*r.core, r.state, r.core->strategy, r.samples, r.seed);
   r.decision = r.core->scratch;
   return DecisionDict(r);

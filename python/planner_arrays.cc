@@ -72,8 +72,8 @@ py::dict DecideMany(const std::shared_ptr<PlannerCore>& core, const py::object& 
   auto rot = rotation_deg.mutable_unchecked<1>();
   auto u = utility.mutable_unchecked<1>();
   auto h = hypotheses.mutable_unchecked<1>();
+  const PlannerLock lock(*core);
   RunLongCall(progress, [&] {
-    std::lock_guard<std::mutex> lock(core->mutex);
     const ProgressFunction report = LongCallProgress("decide", "poses", {});  // rate-limited
     for (py::ssize_t i = 0; i < n; ++i) {
       WithFile("robots[" + std::to_string(i) + "]",

@@ -3,10 +3,13 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <stdexcept>
+
 #include "app/decision_json.h"
 #include "common/error.h"
 #include "common/geometry.h"
 #include "common/json_reader.h"
+#include "common/long_call.h"
 #include "models/evaluation_params.h"
 #include "models/model_paths.h"
 #include "planner/strategy_names.h"
@@ -18,11 +21,26 @@ namespace py = pybind11;
 
 namespace foresight::python {
 
-std::unique_lock<std::mutex> LockPlanner(PlannerCore& core) {
-  std::unique_lock<std::mutex> lock(core.mutex, std::defer_lock);
-  const pybind11::gil_scoped_release release;
-  lock.lock();
-  return lock;
+PlannerLock::PlannerLock(PlannerCore& core) : core_(core) {
+  if (core.owner.load() == std::this_thread::get_id()) {
+    throw std::runtime_error(
+        "Planner: decide and decide_many cannot be called from within a decide_many of the same "
+        "planner (its progress callback): the planner is busy with that call; use another "
+        "Planner");
+  }
+  {
+    const py::gil_scoped_release release;
+    while (!core.mutex.try_lock_for(kPollInterval)) {
+      const py::gil_scoped_acquire gil;
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    }
+  }
+  core.owner.store(std::this_thread::get_id());
+}
+
+PlannerLock::~PlannerLock() {
+  core_.owner.store(std::thread::id{});
+  core_.mutex.unlock();
 }
 
 std::uint64_t SeedFrom(const py::handle& value) {
@@ -213,7 +231,7 @@ void AddPlannerObjects(py::module_& m) {
             r.samples = SamplesFrom(samples, core->samples);
             const Strategy s = StrategyFrom(strategy, core->strategy);
             {
-              const std::unique_lock<std::mutex> lock = LockPlanner(*core);
+              const PlannerLock lock(*core);
               DecideLocked(*core, r.state, s, r.samples, r.seed);
               r.decision = core->scratch;
             }
