@@ -73,12 +73,12 @@ int SamplesFrom(const py::handle& value, int fallback) {
     throw InputError("samples: must be an integer in [1, " + std::to_string(kMaxSamples) +
                      "], got a " + TypeName(value));
   }
-  const long long samples = value.cast<long long>();
-  if (samples < 1 || samples > kMaxSamples) {
+  const std::optional<long long> samples = AsInteger(value);
+  if (!samples || *samples < 1 || *samples > kMaxSamples) {
     throw InputError("samples: must be an integer in [1, " + std::to_string(kMaxSamples) +
-                     "], got " + std::to_string(samples));
+                     "], got " + py::repr(value).cast<std::string>());
   }
-  return static_cast<int>(samples);
+  return static_cast<int>(*samples);
 }
 
 // --- the planner ----------------------------------------------------------------------------
@@ -95,7 +95,14 @@ std::shared_ptr<PlannerCore> MakePlannerCore(const py::object& situation, const 
     overrides.kicks_file = model.source;
     overrides.kicks = std::move(model.model);
   }
-  if (!coarse_rebounds.is_none()) overrides.coarse_rebounds = coarse_rebounds.cast<bool>();
+  if (!coarse_rebounds.is_none()) {
+    // Only a bool: pybind11's cast would take any number's truth (nan, 1.5 and -1 as on).
+    if (!py::isinstance<py::bool_>(coarse_rebounds)) {
+      throw InputError("coarse_rebounds: must be True, False or None, got " +
+                       py::repr(coarse_rebounds).cast<std::string>());
+    }
+    overrides.coarse_rebounds = coarse_rebounds.cast<bool>();
+  }
   if (const auto path = AsPath(situation)) {
     core->situation = LoadSituation(*path, core->models, overrides);
     core->situation_file = path->string();
