@@ -151,7 +151,7 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
       options.json ? SimulationJson(run).dump(2, ' ', false,
                                               nlohmann::ordered_json::error_handler_t::replace) +
                          "\n"
-                   : SimulationText(run);
+                   : PrintableLines(SimulationText(run));  // names from data files
   if (outputs.Has("--svg")) outputs.Put("--svg", SimulationSvg(run));
   if (outputs.Has("--trace")) outputs.Put("--trace", SimulationTraceCsv(run));
   if (outputs.Has("--view")) outputs.Put("--view", SimulationViewHtml(run));
