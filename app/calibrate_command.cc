@@ -293,7 +293,11 @@ CalibrationRun CalibrateInMemory(const CalibrateOptions& options,
     }
     CalibrateFromCsv(options, run, run.base);
   }
-  Fit(run);
+  if (options.from_csv.empty()) {
+    Fit(run);
+  } else {
+    WithFile(options.from_csv, [&] { Fit(run); });  // a log too short for a fit names the log
+  }
   run.provenance.run_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
