@@ -9,6 +9,7 @@
 #include "app/shard_output.h"
 #include "app/variation_fit_output.h"
 #include "common/error.h"
+#include "common/one_line.h"
 #include "common/input_log.h"
 #include "models/model_paths.h"
 #include "models/robot_spec.h"
@@ -246,7 +247,7 @@ int RunVariationFit(const CalibrateOptions& options, const std::filesystem::path
   };
   const VariationFit fit = FitVariation(settings, spreads, models);
   const std::string json = VariationFitJson(options.robot, options.from_csv, fit).dump(2) + "\n";
-  const std::string text = VariationFitText(fit);
+  const std::string text = PrintableLines(VariationFitText(fit));
   outputs.Put("--out", json);
   outputs.Commit();
   std::cout << text << "wrote the fitted trial_variation to " << options.out_file
@@ -292,7 +293,11 @@ CalibrationRun CalibrateInMemory(const CalibrateOptions& options,
     }
     CalibrateFromCsv(options, run, run.base);
   }
-  Fit(run);
+  if (options.from_csv.empty()) {
+    Fit(run);
+  } else {
+    WithFile(options.from_csv, [&] { Fit(run); });  // a log too short for a fit names the log
+  }
   run.provenance.run_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
@@ -405,7 +410,7 @@ int WriteCalibration(const CalibrateOptions& options, const CalibrationRun& run,
     files.push_back({dir / "calibration_summary.csv", CalibrationSummaryCsv(run)});
     files.push_back({dir / "calibration.html", CalibrationHtml(run)});
   }
-  const std::string text = CalibrationText(run);
+  const std::string text = PrintableLines(CalibrationText(run));  // names from data files
   if (model_in_report) {
     files.push_back({options.out_file, model});
     outputs.Put("--out", ReportFolderFiles(files));

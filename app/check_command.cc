@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 #include <vector>
 
 #include "app/base_flag.h"
 #include "app/cli_values.h"
 #include "common/error.h"
+#include "common/one_line.h"
 #include "models/model_paths.h"
 #include "report/output_set.h"
 #include "report/provenance.h"
@@ -57,9 +59,10 @@ int RunCheckCommand(const CheckOptions& options, const std::string& models_dir) 
   const std::vector<CheckResult> results =
       RunChecks(suite, models, threads, [&](const CheckResult& r) {
         failed += !r.passed;
-        std::cout << (r.passed ? "PASS " : "FAIL ") << r.name << " (" << r.kind << ", "
-                  << static_cast<int>(r.time_s * 10.0 + 0.5) / 10.0 << " s): " << r.detail << "\n"
-                  << std::flush;
+        std::ostringstream line;
+        line << (r.passed ? "PASS " : "FAIL ") << r.name << " (" << r.kind << ", "
+             << static_cast<int>(r.time_s * 10.0 + 0.5) / 10.0 << " s): " << r.detail;
+        std::cout << PrintableName(line.str()) << "\n" << std::flush;
       });
   if (outputs.Has("--junit")) {
     outputs.Put("--junit", JUnitXml("foresight check " + suite.name, results,

@@ -8,6 +8,7 @@
 #include "app/decision_text.h"
 #include "common/checks.h"
 #include "common/error.h"
+#include "common/one_line.h"
 #include "models/model_paths.h"
 #include "report/output_set.h"
 
@@ -77,7 +78,7 @@ int RunDecide(const DecideOptions& options, const std::string& models_dir) {
         options.json ? DecisionJson(run).dump(2, ' ', false,
                                               nlohmann::ordered_json::error_handler_t::replace) +
                            "\n"
-                     : DecisionText(run);
+                     : PrintableLines(DecisionText(run));  // names from data files
     if (outputs.Has("--svg")) outputs.Put("--svg", DecisionSvg(run));
     outputs.Commit();
     std::cout << printed << std::flush;

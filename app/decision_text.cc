@@ -1,4 +1,6 @@
 #include "app/decision_text.h"
+
+#include "common/one_line.h"
 #include "report/report_format.h"
 
 #include <cmath>
@@ -30,17 +32,20 @@ std::string DecisionText(const DecisionRun& run) {
   const Decision& d = run.decision;
   const Situation& s = run.planner->situation();
   std::string out;
-  out += "situation: " + s.name + " (" + run.situation_file.string() + ")\n";
+  // Names from data files in their printable form: a newline in one cannot split a line.
+  out += "situation: " + PrintableName(s.name) + " (" +
+         PrintableName(run.situation_file.string()) + ")\n";
   out += Format("strategy: %s, %d samples per hypothesis, seed %llu\n",
                 std::string(StrategyName(d.strategy)).c_str(), run.samples,
                 static_cast<unsigned long long>(run.seed));
-  out += "decision: " + KickName(run, d.kick_index) + " " + TurnText(d.rotation_rad) + "\n";
+  out += "decision: " + PrintableName(KickName(run, d.kick_index)) + " " +
+         TurnText(d.rotation_rad) + "\n";
   if (!d.note.empty()) out += "note: " + d.note + "\n";
   out += "\n";
   out += Format("%-18s %9s %7s %7s %7s %9s %8s %8s\n", "action", "turn_deg", "p_goal", "p_own",
                 "p_out", "p_infield", "utility", "trimmed");
   for (const KickOption& k : d.kicks) {
-    const std::string name = KickName(run, k.kick_index);
+    const std::string name = PrintableName(KickName(run, k.kick_index));
     if (!k.considered) {
       out += Format(
           "%-18s %9s  (%s)\n", name.c_str(), "-",

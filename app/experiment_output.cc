@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "common/error.h"
+#include "common/one_line.h"
 #include "models/model_paths.h"
 
 namespace foresight {
@@ -31,7 +32,8 @@ void WriteReport(OutputSet& outputs, const std::string& out_dir, const ReportFil
                  const std::string& text, const std::string& main_file) {
   outputs.Put("--out", ReportFolderFiles(files));
   outputs.Commit();
-  std::cout << text << "figures and data: " << (std::filesystem::path(out_dir) / main_file).string()
+  std::cout << PrintableLines(text)
+            << "figures and data: " << (std::filesystem::path(out_dir) / main_file).string()
             << " and the other files in " << out_dir << "\n"
             << std::flush;
   if (!std::cout) throw InputError("cannot write to standard output");

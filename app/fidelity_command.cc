@@ -7,6 +7,7 @@
 #include "app/cli_values.h"
 #include "app/shard_output.h"
 #include "common/error.h"
+#include "common/one_line.h"
 #include "models/model_paths.h"
 #include "report/provenance.h"
 #include "validation/fidelity_html.h"
@@ -119,7 +120,7 @@ int WriteFidelityReport(OutputSet& outputs, const std::string& out_dir, const Fi
   for (auto& [name, page] : FidelityViewPages(run.result, run.settings, models)) {
     files.push_back({dir / name, std::move(page)});
   }
-  const std::string text = FidelityText(run);
+  const std::string text = PrintableLines(FidelityText(run));  // names from data files
   outputs.Put("--out", ReportFolderFiles(files));
   outputs.Commit();
   std::cout << text << "report: " << (dir / "fidelity.html").string() << "\n" << std::flush;

@@ -5,7 +5,9 @@
 #include "app/base_flag.h"
 #include "app/cli_values.h"
 #include "app/simulation_output.h"
+#include "common/checks.h"
 #include "common/error.h"
+#include "common/one_line.h"
 #include "models/model_paths.h"
 #include "physics/physics_setup.h"
 #include "report/output_set.h"
@@ -20,6 +22,36 @@ constexpr int kMaxThreads = 1024;
 // one per kick step of any physics file in models/physics (1 ms), beyond which frames repeat.
 constexpr double kMinViewRateHz = 1.0;
 constexpr double kMaxViewRateHz = 1000.0;
+constexpr const char* kDefaultViewRateHz = "100";
+// Every trial's scene stays in memory until the page is written, each costing about 2 MB plus
+// 11 kB per Hz at its peak (the NAO's forward kick: 100 trials at 100 Hz took 343 MB, 20 at
+// 1000 Hz 294 MB, without --view 33 MB; 100 at 1000 Hz 522 MB): a view holds at most 100
+// trials and --trials times --view-rate at most 20000, about 450 MB for such kicks.
+constexpr int kMaxViewTrials = 100;
+constexpr double kMaxViewFramesPerS = 20000.0;
+
+// --view-rate, checked against --view and the view's cap; 0 without --view (no scene recorded).
+double ViewRateHz(const SimulateOptions& options, int trials) {
+  if (options.view_file.empty() && !options.view_rate_hz.empty()) {
+    throw InputError("--view-rate needs --view");
+  }
+  const std::string rate =
+      options.view_rate_hz.empty() ? kDefaultViewRateHz : options.view_rate_hz;
+  const double rate_hz = ParseNumber("--view-rate", rate, kMinViewRateHz, kMaxViewRateHz);
+  if (options.view_file.empty()) return 0.0;
+  const std::string kept = " (every trial's scene is kept until the page is written)";
+  if (trials > kMaxViewTrials) {
+    throw InputError("--view: replays at most " + std::to_string(kMaxViewTrials) + " trials" +
+                     kept + ", got --trials " + std::to_string(trials));
+  }
+  if (trials * rate_hz > kMaxViewFramesPerS) {
+    throw InputError("--view: " + std::to_string(trials) + " trials at " + FormatNumber(rate_hz) +
+                     " Hz are " + FormatNumber(trials * rate_hz) +
+                     " frames per simulated second, at most " + FormatNumber(kMaxViewFramesPerS) +
+                     kept + ": fewer --trials or a lower --view-rate");
+  }
+  return rate_hz;
+}
 
 }  // namespace
 
@@ -46,8 +78,8 @@ void AddSimulateCommand(CLI::App& app, SimulateOptions& options) {
   cmd->add_option("--view", options.view_file,
                   "Write a 3D viewer page (HTML) replaying every trial (docs/VIEWER.md)");
   cmd->add_option("--view-rate", options.view_rate_hz,
-                  "Frames per simulated second recorded for --view")
-      ->capture_default_str();
+                  std::string("Frames per simulated second recorded for --view (default ") +
+                      kDefaultViewRateHz + ")");
 }
 
 SimulationPlan PlanSimulation(const SimulateOptions& options, const std::filesystem::path& models) {
@@ -81,9 +113,7 @@ SimulationPlan PlanSimulation(const SimulateOptions& options, const std::filesys
   request.state = plan.setup->state;  // physics plays the world as it is: the mean state
   request.record_trace = !options.trace_file.empty();
   request.progress = CommandProgress("simulate", "trials");
-  const double rate_hz = ParseNumber("--view-rate", options.view_rate_hz, kMinViewRateHz,
-                                     kMaxViewRateHz);
-  if (!options.view_file.empty()) request.scene_rate_hz = rate_hz;
+  request.scene_rate_hz = ViewRateHz(options, request.trials);
   return plan;
 }
 
@@ -121,7 +151,7 @@ int RunSimulate(const SimulateOptions& options, const std::string& models_dir) {
       options.json ? SimulationJson(run).dump(2, ' ', false,
                                               nlohmann::ordered_json::error_handler_t::replace) +
                          "\n"
-                   : SimulationText(run);
+                   : PrintableLines(SimulationText(run));  // names from data files
   if (outputs.Has("--svg")) outputs.Put("--svg", SimulationSvg(run));
   if (outputs.Has("--trace")) outputs.Put("--trace", SimulationTraceCsv(run));
   if (outputs.Has("--view")) outputs.Put("--view", SimulationViewHtml(run));

@@ -26,7 +26,7 @@ struct SimulateOptions {
   std::string svg_file;
   std::string trace_file;
   std::string view_file;          // --view: the 3D viewer page
-  std::string view_rate_hz = "100";  // --view-rate: its frames per simulated second
+  std::string view_rate_hz;  // --view-rate: its frames per simulated second (empty: 100)
 };
 
 void AddSimulateCommand(CLI::App& app, SimulateOptions& options);

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "common/geometry.h"
+#include "common/one_line.h"
 #include "models/model_paths.h"
 #include "report/field_svg.h"
 #include "report/provenance.h"
@@ -42,8 +43,9 @@ std::string SimulationText(const SimulationRun& run) {
   const TrialSummary& s = run.summary;
   std::ostringstream out;
   out << Format("physics: %s kicks '%s' in %s, %d trials, seed %llu, turn %+.1f deg\n",
-                run.robot->spec.name.c_str(), run.kick.c_str(), run.situation->name.c_str(),
-                s.trials, static_cast<unsigned long long>(run.seed), run.rotation_rad * kRadToDeg);
+                PrintableName(run.robot->spec.name).c_str(), PrintableName(run.kick).c_str(),
+                PrintableName(run.situation->name).c_str(), s.trials,
+                static_cast<unsigned long long>(run.seed), run.rotation_rad * kRadToDeg);
   out << Format("robot (%.3f, %.3f) m heading %.1f deg, ball (%.3f, %.3f) m\n\n",
                 run.state.robot.p_F.x(), run.state.robot.p_F.y(),
                 run.state.robot.theta_rad * kRadToDeg, run.state.p_F_ball.x(),

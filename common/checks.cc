@@ -6,7 +6,6 @@
 #include <string>
 
 #include "common/error.h"
-#include "common/one_line.h"
 
 namespace foresight {
 
@@ -47,36 +46,6 @@ void RequireInRange(std::string_view field, double value, double lo, double hi) 
   if (!(value >= lo && value <= hi)) {
     Fail(field, "in [" + FormatNumber(lo) + ", " + FormatNumber(hi) + "]", value);
   }
-}
-
-namespace {
-void AppendShown(std::string& line, char c, bool keep_newline) {
-  if ((static_cast<unsigned char>(c) >= 0x20 && c != 0x7f) || (keep_newline && c == '\n')) {
-    line += c;
-  } else if (c == '\n') {
-    line += "\\n";
-  } else {
-    char escaped[8];
-    std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned char>(c));
-    line += escaped;
-  }
-}
-}  // namespace
-
-std::string PrintableLines(std::string_view text) {
-  std::string shown;
-  shown.reserve(text.size());
-  for (const char c : text) AppendShown(shown, c, true);
-  return shown;
-}
-
-std::string OneLine(std::string_view message, std::size_t max_bytes) {
-  std::string line;
-  for (const char c : message.substr(0, max_bytes)) AppendShown(line, c, false);
-  if (message.size() > max_bytes) {
-    line += "... (" + std::to_string(message.size()) + " bytes)";
-  }
-  return line;
 }
 
 }  // namespace foresight

@@ -17,6 +17,7 @@
 #include "common/checks.h"
 #include "common/error.h"
 #include "common/json_reader.h"
+#include "models/physics_params.h"
 #include "models/robot_model.h"
 
 namespace foresight {
@@ -137,6 +138,11 @@ void KickMotion::Validate(const std::string& file) const {
     if (!std::isfinite(key.time_s))
       fail(time_field, "must be finite, got " + FormatNumber(key.time_s));
     if (k == 0 && key.time_s != 0.0) fail(time_field, "must be 0, got " + FormatNumber(key.time_s));
+    if (key.time_s > kMaxKickTimeLimitS) {
+      fail(time_field, "must be at most " + FormatNumber(kMaxKickTimeLimitS) +
+                           " s (the longest kick phase a physics file's steps.max_kick_time_s "
+                           "may time), got " + FormatNumber(key.time_s));
+    }
     if (k > 0 && !(key.time_s > keyframes[k - 1].time_s)) {
       fail(time_field, "must be greater than the previous keyframe's " +
                            FormatNumber(keyframes[k - 1].time_s) + ", got " +

@@ -62,7 +62,7 @@ void PhysicsParams::Validate() const {
   RequireInRange("steps.slow_time_step_s", steps.slow_time_step_s, steps.near_time_step_s,
                  steps.free_time_step_s);
   RequireInRange("steps.slow_speed_mps", steps.slow_speed_mps, 0.0, 2.0);
-  RequireInRange("steps.max_kick_time_s", steps.max_kick_time_s, 0.1, 60.0);
+  RequireInRange("steps.max_kick_time_s", steps.max_kick_time_s, 0.1, kMaxKickTimeLimitS);
   RequireInRange("steps.max_roll_time_s", steps.max_roll_time_s, 1.0, 3600.0);
   RequireInRange("steps.rest_speed_mps", steps.rest_speed_mps, 1e-5, 0.1);
   RequireInRange("steps.min_launch_roll_m", steps.min_launch_roll_m, 0.0, 0.5);

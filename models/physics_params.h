@@ -41,6 +41,10 @@ struct MaterialParams {
   double net_thickness_m = 0.0;
 };
 
+// The longest kick phase a physics file may time (steps.max_kick_time_s): a kick motion may last
+// no longer either (models/kick_motion.h), so no motion file makes a trial run for hours.
+inline constexpr double kMaxKickTimeLimitS = 60.0;
+
 struct StepParams {
   double kick_time_step_s = 0.0;  // while the kicking robot is simulated
   double near_time_step_s = 0.0;  // rolling near a post, net or obstacle, ...

@@ -25,6 +25,7 @@
 #include "common/checks.h"
 #include "common/data_file.h"
 #include "common/error.h"
+#include "models/xml_nesting.h"
 
 namespace foresight {
 namespace {
@@ -102,6 +103,8 @@ std::string DescribeUrdfErrors(std::vector<std::string> errors) {
 
 urdf::ModelInterfaceSharedPtr ParseUrdf(const std::filesystem::path& file) {
   const std::string text = ReadText(file);
+  // Before urdfdom: its parser recurses once per level (a stack overflow far below 16 MiB).
+  if (const auto problem = XmlNestingProblem(text)) Fail(file, "urdf: " + *problem);
   ErrorCollector collector;
   urdf::ModelInterfaceSharedPtr model;
   {
@@ -217,11 +220,23 @@ RobotShape ReadMeshShape(const urdf::Mesh& mesh, const std::filesystem::path& fi
   shape.kind = RobotShape::Kind::kMesh;
   shape.mesh_file = (file.parent_path() / mesh.filename).lexically_normal();
   shape.mesh_vertices_S_m = ReadMeshVertices(shape.mesh_file, file, element, &shape.mesh_triangles);
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(kMaxRobotLengthM), hi = -lo;
   for (Eigen::Vector3d& v : shape.mesh_vertices_S_m) {
     v = v.cwiseProduct(scale);
     if (!(v.cwiseAbs().maxCoeff() <= kMaxRobotLengthM)) {
       Fail(file, element + ": scale: the scaled mesh reaches farther than " +
                      FormatNumber(kMaxRobotLengthM) + " m from its origin (a unit error?)");
+    }
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  // As a box's sizes: a mesh flat in one direction (all on one point: in every one) has no
+  // volume, and every kick at it would pass through unseen.
+  for (int i = 0; i < 3; ++i) {
+    if (!(hi[i] > lo[i])) {
+      Fail(file, element + ": mesh has no extent in " + std::string(1, "xyz"[i]) +
+                     " (every vertex at " + std::string(1, "xyz"[i]) + " = " +
+                     FormatNumber(lo[i]) + ")");
     }
   }
   return shape;

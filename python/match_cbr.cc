@@ -52,21 +52,23 @@ py::dict Passing(const py::object& config, const py::object& team, const py::obj
                  const std::optional<std::filesystem::path>& models, const py::object& progress,
                  const py::object& base) {
   PassingOptions o;
-  o.config = FlagText(config);
-  if (!team.is_none()) o.team = FlagText(team);
+  o.config = FlagText(config, "config");
+  if (!team.is_none()) o.team = FlagText(team, "team");
   if (!scenarios.is_none()) {
     std::string list;
-    for (const py::handle s : scenarios)
-      list += (list.empty() ? "" : ",") + FlagText(py::reinterpret_borrow<py::object>(s));
+    for (const py::handle s : scenarios) {
+      const std::string name = FlagText(py::reinterpret_borrow<py::object>(s), "scenarios");
+      list += (list.empty() ? "" : ",") + name;
+    }
     o.scenarios = list;
   }
-  if (!trials.is_none()) o.trials = FlagText(trials);
-  if (!seed.is_none()) o.seed = FlagText(seed);
-  if (!threads.is_none()) o.threads = FlagText(threads);
+  if (!trials.is_none()) o.trials = FlagText(trials, "trials");
+  if (!seed.is_none()) o.seed = FlagText(seed, "seed");
+  if (!threads.is_none()) o.threads = FlagText(threads, "threads");
   o.mirror = mirror;
   o.physics = physics;
-  if (!kicks.is_none()) o.kicks_file = FlagText(kicks);
-  if (!base.is_none()) o.base = FlagText(base);
+  if (!kicks.is_none()) o.kicks_file = FlagText(kicks, "kicks");
+  if (!base.is_none()) o.base = FlagText(base, "base");
   const std::filesystem::path dir = ModelsDir(models);
   std::vector<std::string> teams;
   const std::vector<PassingResult> results = RunLongCall(progress, [&] {
@@ -160,8 +162,8 @@ void AddMatchAndCbr(py::module_& m) {
       .def(py::init([](const py::object& case_base, const py::object& params,
                        const std::optional<std::filesystem::path>& models) {
              CbrOptions options;
-             if (!case_base.is_none()) options.case_base = FlagText(case_base);
-             if (!params.is_none()) options.params_file = FlagText(params);
+             if (!case_base.is_none()) options.case_base = FlagText(case_base, "case_base");
+             if (!params.is_none()) options.params_file = FlagText(params, "params");
              return CaseBaseObject{LoadCbrRetriever(options, ModelsDir(models))};
            }),
            py::arg("case_base") = py::none(), py::arg("params") = py::none(),

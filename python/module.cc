@@ -26,17 +26,19 @@ std::filesystem::path ModelsDir(const std::optional<std::filesystem::path>& mode
   return models ? *models : DefaultModelsDir();
 }
 
-std::string FlagText(const py::object& value) {
+std::string FlagText(const py::object& value, const std::string& name) {
   if (value.is_none()) return "";
   if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "true" : "false";
-  return py::str(value).cast<std::string>();
+  std::string text = py::str(value).cast<std::string>();
+  if (text.empty()) throw InputError(name + ": empty value (pass None for the default)");
+  return text;
 }
 
 namespace {
 
 // Sets `flag` from a keyword argument unless it is None (the command's default stays).
-void SetFlag(std::string& flag, const py::object& value) {
-  if (!value.is_none()) flag = FlagText(value);
+void SetFlag(std::string& flag, const py::object& value, const char* name) {
+  if (!value.is_none()) flag = FlagText(value, name);
 }
 
 // `work()`'s JSON, computed without the GIL (a short call: no Ctrl-C polling), as Python objects.
@@ -57,7 +59,7 @@ py::object LoadDataFile(const std::filesystem::path& file) {
 py::dict LoadSituationDict(const std::filesystem::path& file, const py::object& kicks,
                            const std::optional<std::filesystem::path>& models) {
   SituationOverrides overrides;
-  if (!kicks.is_none()) overrides.kicks_file = FlagText(kicks);
+  if (!kicks.is_none()) overrides.kicks_file = FlagText(kicks, "kicks");
   return SituationDict(LoadSituation(file, ModelsDir(models), overrides));
 }
 
@@ -70,10 +72,10 @@ py::object Decide(const py::object& situation, const py::object& strategy,
   if (situation_path && (kicks.is_none() || AsPath(kicks))) {
     DecideOptions options;
     options.situation_file = situation_path->string();
-    SetFlag(options.strategy, strategy);
-    SetFlag(options.samples, samples);
-    SetFlag(options.seed, seed);
-    SetFlag(options.kicks_file, kicks);
+    SetFlag(options.strategy, strategy, "strategy");
+    SetFlag(options.samples, samples, "samples");
+    SetFlag(options.seed, seed, "seed");
+    SetFlag(options.kicks_file, kicks, "kicks");
     return JsonWithoutGil([&] { return DecideJson(options, ModelsDir(models)); });
   }
   DecisionResult r;
@@ -81,7 +83,7 @@ py::object Decide(const py::object& situation, const py::object& strategy,
   r.state = r.core->situation.state;
   r.seed = seed.is_none() ? 1 : SeedFrom(seed);
   r.samples = r.core->samples;
-  std::lock_guard<std::mutex> lock(r.core->mutex);
+  const PlannerLock lock(*r.core);
   DecideLocked(*r.core, r.state, r.core->strategy, r.samples, r.seed);
   r.decision = r.core->scratch;
   return DecisionDict(r);
@@ -96,18 +98,18 @@ py::object Calibrate(const std::string& robot, const py::object& kick, const py:
                      const py::object& progress) {
   CalibrateOptions options;
   options.robot = robot;
-  SetFlag(options.kick, kick);
+  SetFlag(options.kick, kick, "kick");
   options.all = kick.is_none();
-  SetFlag(options.trials, trials);
-  SetFlag(options.seed, seed);
-  SetFlag(options.threads, threads);
-  SetFlag(options.situation_file, situation);
-  SetFlag(options.kicks_file, kicks);
-  SetFlag(options.physics_file, physics);
-  SetFlag(options.from_csv, from_csv);
-  SetFlag(options.confidence, confidence);
-  SetFlag(options.resamples, resamples);
-  SetFlag(options.base, base);
+  SetFlag(options.trials, trials, "trials");
+  SetFlag(options.seed, seed, "seed");
+  SetFlag(options.threads, threads, "threads");
+  SetFlag(options.situation_file, situation, "situation");
+  SetFlag(options.kicks_file, kicks, "kicks");
+  SetFlag(options.physics_file, physics, "physics");
+  SetFlag(options.from_csv, from_csv, "from_csv");
+  SetFlag(options.confidence, confidence, "confidence");
+  SetFlag(options.resamples, resamples, "resamples");
+  SetFlag(options.base, base, "base");
   const std::filesystem::path dir = ModelsDir(models);
   return ToPython(RunLongCall(progress, [&] {
     return CalibrationJson(CalibrateInMemory(options, dir));
@@ -120,15 +122,15 @@ py::object Fidelity(const py::object& situations, const py::object& trials,
                     const std::optional<std::filesystem::path>& models, const py::object& base,
                     const py::object& progress) {
   FidelityOptions options;
-  SetFlag(options.situations, situations);
-  SetFlag(options.trials, trials);
-  SetFlag(options.samples, samples);
-  SetFlag(options.converged, converged);
-  SetFlag(options.seed, seed);
-  SetFlag(options.threads, threads);
-  SetFlag(options.kicks_file, kicks);
-  SetFlag(options.physics_file, physics);
-  SetFlag(options.base, base);
+  SetFlag(options.situations, situations, "situations");
+  SetFlag(options.trials, trials, "trials");
+  SetFlag(options.samples, samples, "samples");
+  SetFlag(options.converged, converged, "converged");
+  SetFlag(options.seed, seed, "seed");
+  SetFlag(options.threads, threads, "threads");
+  SetFlag(options.kicks_file, kicks, "kicks");
+  SetFlag(options.physics_file, physics, "physics");
+  SetFlag(options.base, base, "base");
   const std::filesystem::path dir = ModelsDir(models);
   return ToPython(RunLongCall(progress, [&] {
     return FidelityJson(RunFidelityInMemory(options, dir));
@@ -141,8 +143,8 @@ py::object CbrRetrieve(const py::object& problem, const py::object& case_base,
   if (const auto path = AsPath(problem)) {
     CbrOptions options;
     options.problem_file = path->string();
-    SetFlag(options.case_base, case_base);
-    SetFlag(options.params_file, params);
+    SetFlag(options.case_base, case_base, "case_base");
+    SetFlag(options.params_file, params, "params");
     return JsonWithoutGil([&] { return CbrRetrieveJsonFor(options, ModelsDir(models)); });
   }
   return py::module_::import("foresight").attr("CaseBase")(case_base, params, models)

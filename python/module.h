@@ -16,7 +16,9 @@ namespace foresight::python {
 std::filesystem::path ModelsDir(const std::optional<std::filesystem::path>& models);
 
 // A keyword argument as the flag's text: "" for None, str(value) otherwise (so 0.1 stays 0.1).
-std::string FlagText(const pybind11::object& value);
+// An empty text is an InputError naming the argument `name`: '' is never "not given", as the
+// command line refuses `--flag ''`.
+std::string FlagText(const pybind11::object& value, const std::string& name);
 
 // `simulate`: physics trials as NumPy arrays (module_physics.cc).
 void AddPhysicsFunctions(pybind11::module_& module);

@@ -34,16 +34,16 @@ py::dict Simulate(const std::filesystem::path& situation, const std::string& kic
   SimulateOptions options;
   options.situation_file = situation.string();
   options.kick = kick;
-  const auto set = [](std::string& flag, const py::object& value) {
-    if (!value.is_none()) flag = FlagText(value);
+  const auto set = [](std::string& flag, const py::object& value, const char* name) {
+    if (!value.is_none()) flag = FlagText(value, name);
   };
-  set(options.trials, trials);
-  set(options.seed, seed);
-  set(options.rotation_deg, rotation_deg);
-  set(options.threads, threads);
-  set(options.kicks_file, kicks);
-  set(options.physics_file, physics);
-  set(options.base, base);
+  set(options.trials, trials, "trials");
+  set(options.seed, seed, "seed");
+  set(options.rotation_deg, rotation_deg, "rotation_deg");
+  set(options.threads, threads, "threads");
+  set(options.kicks_file, kicks, "kicks");
+  set(options.physics_file, physics, "physics");
+  set(options.base, base, "base");
   const std::filesystem::path dir = ModelsDir(models);
   const std::vector<TrialResult> r = RunLongCall(progress, [&] {
     const SimulationPlan plan = PlanSimulation(options, dir);

@@ -21,7 +21,28 @@ namespace {
 
 using Rows = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
+// NumPy's cast to double would drop a complex number's imaginary part and a masked array's
+// mask without a word: both are refused.
+void RequireRealUnmasked(const py::object& value, const char* what) {
+  const py::module_ numpy = py::module_::import("numpy");
+  py::object array;
+  try {
+    array = numpy.attr("asanyarray")(value);
+  } catch (const py::error_already_set&) {
+    return;  // no array at all (ragged rows): RowsOf says what it must be
+  }
+  if (py::isinstance(array, numpy.attr("ma").attr("MaskedArray"))) {
+    throw InputError(std::string(what) +
+                     ": a masked array (its mask would be ignored): pass the rows to use");
+  }
+  if (array.attr("dtype").attr("kind").cast<std::string>() == "c") {
+    throw InputError(std::string(what) +
+                     ": complex numbers (the imaginary part would be dropped): pass real ones");
+  }
+}
+
 Rows RowsOf(const py::object& value, int columns, const char* what, const char* layout) {
+  RequireRealUnmasked(value, what);
   Rows rows = Rows::ensure(value);
   if (!rows || rows.ndim() != 2 || rows.shape(1) != columns) {
     PyErr_Clear();
@@ -72,8 +93,8 @@ py::dict DecideMany(const std::shared_ptr<PlannerCore>& core, const py::object& 
   auto rot = rotation_deg.mutable_unchecked<1>();
   auto u = utility.mutable_unchecked<1>();
   auto h = hypotheses.mutable_unchecked<1>();
+  const PlannerLock lock(*core);
   RunLongCall(progress, [&] {
-    std::lock_guard<std::mutex> lock(core->mutex);
     const ProgressFunction report = LongCallProgress("decide", "poses", {});  // rate-limited
     for (py::ssize_t i = 0; i < n; ++i) {
       WithFile("robots[" + std::to_string(i) + "]",

@@ -3,10 +3,13 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <stdexcept>
+
 #include "app/decision_json.h"
 #include "common/error.h"
 #include "common/geometry.h"
 #include "common/json_reader.h"
+#include "common/long_call.h"
 #include "models/evaluation_params.h"
 #include "models/model_paths.h"
 #include "planner/strategy_names.h"
@@ -18,11 +21,26 @@ namespace py = pybind11;
 
 namespace foresight::python {
 
-std::unique_lock<std::mutex> LockPlanner(PlannerCore& core) {
-  std::unique_lock<std::mutex> lock(core.mutex, std::defer_lock);
-  const pybind11::gil_scoped_release release;
-  lock.lock();
-  return lock;
+PlannerLock::PlannerLock(PlannerCore& core) : core_(core) {
+  if (core.owner.load() == std::this_thread::get_id()) {
+    throw std::runtime_error(
+        "Planner: decide and decide_many cannot be called from within a decide_many of the same "
+        "planner (its progress callback): the planner is busy with that call; use another "
+        "Planner");
+  }
+  {
+    const py::gil_scoped_release release;
+    while (!core.mutex.try_lock_for(kPollInterval)) {
+      const py::gil_scoped_acquire gil;
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    }
+  }
+  core.owner.store(std::this_thread::get_id());
+}
+
+PlannerLock::~PlannerLock() {
+  core_.owner.store(std::thread::id{});
+  core_.mutex.unlock();
 }
 
 std::uint64_t SeedFrom(const py::handle& value) {
@@ -55,12 +73,12 @@ int SamplesFrom(const py::handle& value, int fallback) {
     throw InputError("samples: must be an integer in [1, " + std::to_string(kMaxSamples) +
                      "], got a " + TypeName(value));
   }
-  const long long samples = value.cast<long long>();
-  if (samples < 1 || samples > kMaxSamples) {
+  const std::optional<long long> samples = AsInteger(value);
+  if (!samples || *samples < 1 || *samples > kMaxSamples) {
     throw InputError("samples: must be an integer in [1, " + std::to_string(kMaxSamples) +
-                     "], got " + std::to_string(samples));
+                     "], got " + py::repr(value).cast<std::string>());
   }
-  return static_cast<int>(samples);
+  return static_cast<int>(*samples);
 }
 
 // --- the planner ----------------------------------------------------------------------------
@@ -77,7 +95,14 @@ std::shared_ptr<PlannerCore> MakePlannerCore(const py::object& situation, const 
     overrides.kicks_file = model.source;
     overrides.kicks = std::move(model.model);
   }
-  if (!coarse_rebounds.is_none()) overrides.coarse_rebounds = coarse_rebounds.cast<bool>();
+  if (!coarse_rebounds.is_none()) {
+    // Only a bool: pybind11's cast would take any number's truth (nan, 1.5 and -1 as on).
+    if (!py::isinstance<py::bool_>(coarse_rebounds)) {
+      throw InputError("coarse_rebounds: must be True, False or None, got " +
+                       py::repr(coarse_rebounds).cast<std::string>());
+    }
+    overrides.coarse_rebounds = coarse_rebounds.cast<bool>();
+  }
   if (const auto path = AsPath(situation)) {
     core->situation = LoadSituation(*path, core->models, overrides);
     core->situation_file = path->string();
@@ -213,7 +238,7 @@ void AddPlannerObjects(py::module_& m) {
             r.samples = SamplesFrom(samples, core->samples);
             const Strategy s = StrategyFrom(strategy, core->strategy);
             {
-              const std::unique_lock<std::mutex> lock = LockPlanner(*core);
+              const PlannerLock lock(*core);
               DecideLocked(*core, r.state, s, r.samples, r.seed);
               r.decision = core->scratch;
             }

@@ -10,9 +10,11 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <atomic>
 #include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 
 #include "models/situation.h"
 #include "planner/coarse_planner.h"
@@ -44,7 +46,8 @@ struct KickModelArg {
 };
 
 // What a Planner holds: the situation, the planner over its scene, and the evaluator and
-// Decision kept between decisions (guarded by `mutex`: one decision at a time per planner).
+// Decision kept between decisions (guarded by `mutex`, taken through PlannerLock: one decision
+// at a time per planner; `owner` is the thread that holds it).
 struct PlannerCore {
   Situation situation;
   Situation check;  // the situation with each decision's state, for Situation::Validate
@@ -55,13 +58,25 @@ struct PlannerCore {
   std::string situation_file;  // "" for a dict
   Strategy strategy = Strategy::kOptimalAll;
   int samples = 0;
-  std::mutex mutex;
+  std::timed_mutex mutex;
+  std::atomic<std::thread::id> owner{};
 };
 
-// Takes core.mutex with the GIL released while it waits: a long call (decide_many) holds the
-// mutex without the GIL and takes the GIL to poll for Ctrl-C, so a thread that waited for the
-// mutex holding the GIL would deadlock with it.
-std::unique_lock<std::mutex> LockPlanner(PlannerCore& core);
+// Holds core.mutex for one decision or one decide_many; made and destroyed with the GIL. It
+// waits with the GIL released (a long call, decide_many, holds the mutex without the GIL and
+// takes the GIL to poll for Ctrl-C), polling Python's signal handlers, so Ctrl-C ends the wait.
+// A thread that already holds the planner (a decide_many progress callback calling decide or
+// decide_many on the same planner) would wait for itself: that is refused with RuntimeError.
+class PlannerLock {
+ public:
+  explicit PlannerLock(PlannerCore& core);
+  ~PlannerLock();
+  PlannerLock(const PlannerLock&) = delete;
+  PlannerLock& operator=(const PlannerLock&) = delete;
+
+ private:
+  PlannerCore& core_;
+};
 
 // Builds the core from a situation (path or dict) with an optional kick model (path, dict or
 // KickModel) replacing the situation's.

@@ -13,6 +13,10 @@
 
 namespace foresight::python {
 
+// An int (or an object with __index__) that fits in 64 bits; nullopt otherwise (too large, not
+// an integer).
+std::optional<long long> AsInteger(const pybind11::handle& value);
+
 // The name of a value's type, for messages ("dict", "str").
 std::string TypeName(const pybind11::handle& value);
 

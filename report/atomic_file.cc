@@ -27,6 +27,26 @@ void WriteToDevice(const std::filesystem::path& file, std::string_view content,
   if (!out) throw InputError(shown + ": write failed");
 }
 
+// The file a symbolic link names, followed link by link: for a dangling link the file it would
+// name (std::filesystem::weakly_canonical stops at a dangling link and returns the link itself,
+// which the rename would then replace with a regular file).
+std::filesystem::path FollowLinks(const std::filesystem::path& link, const std::string& shown) {
+  constexpr int kMaxLinks = 40;  // Linux's own limit (ELOOP)
+  std::filesystem::path at = link;
+  for (int hop = 0; hop < kMaxLinks; ++hop) {
+    std::error_code ec;
+    if (!std::filesystem::is_symlink(std::filesystem::symlink_status(at, ec))) {
+      const std::filesystem::path resolved = std::filesystem::weakly_canonical(at, ec);
+      if (ec) throw InputError(shown + ": cannot follow the symbolic link");
+      return resolved;
+    }
+    const std::filesystem::path next = std::filesystem::read_symlink(at, ec);
+    if (ec) throw InputError(shown + ": cannot follow the symbolic link");
+    at = next.is_absolute() ? next : at.parent_path() / next;
+  }
+  throw InputError(shown + ": cannot follow the symbolic link (more than 40 links: a loop?)");
+}
+
 // /dev/stdout, /dev/stderr, /dev/fd/N and /proc/self/fd/N name a descriptor this process has
 // open (a pipe, a terminal, or the file standard output was redirected to). Following the link
 // fails for a pipe and, for a redirected standard output, would replace that file (losing what
@@ -107,8 +127,7 @@ FileTarget LocateOutputFile(const std::filesystem::path& file, const std::string
   // A symbolic link stays a link: the file it points to is replaced, atomically.
   target.target = file;
   if (std::filesystem::is_symlink(std::filesystem::symlink_status(file, ec))) {
-    target.target = std::filesystem::weakly_canonical(file, ec);
-    if (ec) throw InputError(shown + ": cannot follow the symbolic link");
+    target.target = FollowLinks(file, shown);
   }
   const std::filesystem::file_status status = std::filesystem::status(target.target, ec);
   if (std::filesystem::is_directory(status)) throw InputError(shown + ": is a directory");

@@ -7,7 +7,8 @@
 # Every input has FUZZ_TIMEOUT seconds (default 10, libFuzzer -timeout). Fuzzed inputs stay
 # small (-max_len), so after fuzzing every target also reads large inputs of several shapes
 # (LARGE_BYTES, default 4 MiB: many empty objects, many members, nested arrays, numbers; many
-# CSV rows) under the same limit: a reader whose work grows with the square of its input takes
+# CSV rows; for the URDF reader elements nested about 280,000 deep, which overflowed urdfdom's
+# stack before the nesting scan of models/xml_nesting.h) under the same limit: a reader whose work grows with the square of its input takes
 # hours on them and fails here (a linear one takes well under a second).
 set -euo pipefail
 build=$1
@@ -93,9 +94,11 @@ repeat() {  # TEXT: TEXT repeated to about $large_bytes bytes, ending after a wh
 { head -n 1 "$root/fuzz/seeds/observed_kicks.csv"
   line=$(sed -n 2p "$root/fuzz/seeds/observed_kicks.csv")
   yes "$line" | head -c "$large_bytes" || true; } >"$large/rows.csv"
+{ printf '<?xml version="1.0"?>\n<robot name="deep">'; repeat '<link name="a">'; } >"$large/deep.urdf"
 for target in $targets; do
   case $target in
-    urdf | mesh) continue ;;  # third-party readers (urdfdom, assimp)
+    urdf) inputs=("$large/deep.urdf") ;;  # urdfdom: only the nesting its own scan refuses
+    mesh) continue ;;  # a third-party reader (assimp)
     observed_kicks) inputs=("$large/rows.csv") ;;
     *) inputs=("$large"/*.json) ;;
   esac

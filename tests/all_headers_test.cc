@@ -133,6 +133,7 @@
 #include "models/situation.h"
 #include "models/team_policy.h"
 #include "models/walk_command.h"
+#include "models/xml_nesting.h"
 #include "physics/ball_placement.h"
 #include "physics/ball_state.h"
 #include "physics/bullet_convert.h"

@@ -5,10 +5,12 @@
 // candidate) and DIR/best_<rank>.json (the best `keep` candidates as motion files). DIR is a
 // report folder (report/report_folder.h), checked before the search and replaced whole after it
 // (no best_<rank>.json of an earlier, larger run remains; a user's own files stay). Bad input:
-// one line "foresight_motion_search: FILE: FIELD: problem" and exit status 2, nothing written.
+// one line "foresight_motion_search: error: FILE: FIELD: problem" and exit status 2, nothing
+// written.
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <set>
 #include <string>
 
 #include "common/error.h"
@@ -29,13 +31,21 @@ struct Arguments {
   int threads = 0;
 };
 
+// As the foresight command: a flag's value may not be empty ('' is never "not given") and a
+// flag may be given once (a second --out would silently win).
 Arguments Parse(int argc, char** argv) {
   Arguments a;
+  std::set<std::string> given;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const auto value = [&]() -> std::string {
       if (i + 1 >= argc) throw InputError(arg + ": needs a value (" + kUsage + ")");
-      return argv[++i];
+      if (!given.insert(arg).second) throw InputError(arg + ": given twice");
+      const std::string text = argv[++i];
+      if (text.empty()) {
+        throw InputError(arg + ": empty value (leave the flag out for its default)");
+      }
+      return text;
     };
     if (arg == "--out") {
       a.out = value();

@@ -1,6 +1,7 @@
 #include "validation/fidelity_report.h"
 
 #include "common/geometry.h"
+#include "common/one_line.h"
 #include "report/report_format.h"
 
 namespace foresight {
@@ -74,7 +75,7 @@ Json SituationJson(const SituationFidelity& s) {
 
 std::string FidelityText(const FidelityRun& run) {
   const FidelityResult& r = run.result;
-  std::string out = "fidelity on '" + run.provenance.Input("situations_set") +
+  std::string out = "fidelity on '" + PrintableName(run.provenance.Input("situations_set")) +
                     "': " + std::to_string(r.situations.size()) +
                     " situations, coarse N = " + std::to_string(r.coarse_samples) +
                     ", converged N = " + std::to_string(run.settings.converged_samples) +
@@ -88,7 +89,7 @@ std::string FidelityText(const FidelityRun& run) {
     char line[256];
     std::snprintf(
         line, sizeof line, "  %-18s %2d   %+11.3f  %+11.3f  %12.2f  %11.2f  %13.3f  %12.3f\n",
-        c.situation_class.c_str(), c.situations, c.tau_coarse.mean, c.tau_converged.mean,
+        PrintableName(c.situation_class).c_str(), c.situations, c.tau_coarse.mean, c.tau_converged.mean,
         c.top1_coarse.mean, c.top1_converged.mean, c.regret_coarse.mean, c.regret_converged.mean);
     out += line;
   }

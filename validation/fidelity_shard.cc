@@ -44,7 +44,10 @@ ActionEvaluation ReadEvaluation(const ShardValue& v, const EvaluationParams& par
   const auto share = [&](std::size_t at, Category c) {
     const double expected = e.samples == 0 ? 0.0 : e.Count(c) / n;
     const double stored = p.At(at).Double();
-    if (stored != expected) p.At(at).Fail("must be its count / samples, " + FormatNumber(expected));
+    if (stored != expected) {
+      p.At(at).Fail("must be its count / samples, " + FormatNumber(expected) + ", got " +
+                    FormatNumber(stored));
+    }
     return stored;
   };
   e.p_infield = share(0, Category::kInfield);
@@ -56,7 +59,10 @@ ActionEvaluation ReadEvaluation(const ShardValue& v, const EvaluationParams& par
   e.potential_all_avg = v["potential_all_avg"].Finite();
   e.utility = v["utility"].Double();
   const double utility = e.samples == 0 ? 0.0 : Utility(e.value_avg, e.p_infield, e.p_opp_goal, params);
-  if (e.utility != utility) v["utility"].Fail("must be eq. 5 of the shares, " + FormatNumber(utility));
+  if (e.utility != utility) {
+    v["utility"].Fail("must be eq. 5 of the shares, " + FormatNumber(utility) + ", got " +
+                      FormatNumber(e.utility));
+  }
   e.too_risky = v["too_risky"].Bool();
   if (e.samples > 0 &&
       e.too_risky != Trimmed(e.Count(Category::kOut), e.Count(Category::kOwnGoal),

@@ -9,6 +9,7 @@
 
 #include "common/error.h"
 #include "common/json_reader.h"
+#include "common/one_line.h"
 #include "report/svg_writer.h"
 
 namespace foresight {
@@ -258,6 +259,14 @@ std::vector<CheckResult> RunChecks(const CheckSuite& suite, const std::filesyste
   return results;
 }
 
+namespace {
+
+// A name or text from the spec in an XML attribute or element: printable first (control
+// characters are not valid XML 1.0, not even as references), then escaped.
+std::string XmlText(const std::string& text) { return SvgWriter::Escape(PrintableName(text)); }
+
+}  // namespace
+
 std::string JUnitXml(const std::string& suite_name, const std::vector<CheckResult>& results,
                      const std::vector<std::pair<std::string, std::string>>& properties) {
   int failures = 0;
@@ -267,24 +276,23 @@ std::string JUnitXml(const std::string& suite_name, const std::vector<CheckResul
     time += r.time_s;
   }
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites>\n";
-  out += "  <testsuite name=\"" + SvgWriter::Escape(suite_name) + "\" tests=\"" +
+  out += "  <testsuite name=\"" + XmlText(suite_name) + "\" tests=\"" +
          std::to_string(results.size()) + "\" failures=\"" + std::to_string(failures) +
          "\" errors=\"0\" time=\"" + Seconds(time) + "\">\n";
   if (!properties.empty()) {
     out += "    <properties>\n";
     for (const auto& [name, value] : properties) {
-      out += "      <property name=\"" + SvgWriter::Escape(name) + "\" value=\"" +
-             SvgWriter::Escape(value) + "\"/>\n";
+      out += "      <property name=\"" + XmlText(name) + "\" value=\"" + XmlText(value) + "\"/>\n";
     }
     out += "    </properties>\n";
   }
   for (const CheckResult& r : results) {
-    out += "    <testcase classname=\"foresight.check." + SvgWriter::Escape(r.kind) + "\" name=\"" +
-           SvgWriter::Escape(r.name) + "\" time=\"" + Seconds(r.time_s) + "\">\n";
+    out += "    <testcase classname=\"foresight.check." + XmlText(r.kind) + "\" name=\"" +
+           XmlText(r.name) + "\" time=\"" + Seconds(r.time_s) + "\">\n";
     if (r.passed) {
-      out += "      <system-out>" + SvgWriter::Escape(r.detail) + "</system-out>\n";
+      out += "      <system-out>" + XmlText(r.detail) + "</system-out>\n";
     } else {
-      out += "      <failure message=\"" + SvgWriter::Escape(r.detail) + "\"/>\n";
+      out += "      <failure message=\"" + XmlText(r.detail) + "\"/>\n";
     }
     out += "    </testcase>\n";
   }

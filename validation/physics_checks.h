@@ -40,7 +40,8 @@ std::vector<CheckResult> RunChecks(const CheckSuite& suite, const std::filesyste
 
 // JUnit XML (the Ant/Jenkins schema most CI systems read): one testsuite, one testcase per check.
 // `properties` (name, value) go into the testsuite's <properties>: what the run used (version,
-// spec file and its content hash).
+// spec file and its content hash). Every name and text is written in its printable form
+// (common/one_line.h), so the file is well-formed XML whatever a spec's names hold.
 std::string JUnitXml(const std::string& suite_name, const std::vector<CheckResult>& results,
                      const std::vector<std::pair<std::string, std::string>>& properties = {});
 

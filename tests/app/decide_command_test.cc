@@ -121,6 +121,20 @@ TEST_F(DecideCommandTest, TextOutputNamesTheDecision) {
   EXPECT_THAT(r.out, HasSubstr("strategy: optimal_all, 30 samples per hypothesis, seed 1"));
 }
 
+// A situation's name is the user's: an ESC, a right-to-left override or a newline in it is
+// printed in its printable form, never sent to the terminal.
+TEST_F(DecideCommandTest, TextOutputPrintsNamesInTheirPrintableForm) {
+  const auto file = Write("odd_name.json", R"({"name": "a\u001b[2Jb\u202ec\nd", "field": "spl",
+    "kicks": "nao", "robot": {"x_m": 3.6, "y_m": 1.9, "theta_deg": 10.0, "sigma_x_m": 0.1,
+    "sigma_y_m": 0.1, "sigma_theta_deg": 5.0},
+    "ball": {"x_m": 0.15, "y_m": 0.0, "sigma_x_m": 0.05, "sigma_y_m": 0.05}})");
+  const RunResult r = Decide({"--situation", file.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, StartsWith("situation: a\\x1b[2Jb\\u202ec\\nd ("));
+  EXPECT_EQ(r.out.find('\x1b'), std::string::npos);
+  EXPECT_EQ(r.out.find("\u202e"), std::string::npos);
+}
+
 // ----- SVG -----
 
 TEST_F(DecideCommandTest, SvgIsWellFormedWithOneCirclePerSamplePerKick) {

@@ -87,6 +87,38 @@ TEST_F(SimulateCommandTest, ViewIntoAMissingFolderFailsBeforeTheTrials) {
   EXPECT_THAT(rate.err, HasSubstr("--view-rate"));
 }
 
+// Every trial's scene is kept until the view is written: trials times rate is capped before the
+// trials run (100 trials at 1000 Hz took 522 MB), with the numbers and what to change.
+TEST_F(SimulateCommandTest, AViewOfTooManyFramesIsRefusedBeforeTheTrials) {
+  std::vector<std::string> args = OpenGoal("forward", 100);
+  args.insert(args.end(), {"--view", "v.html", "--view-rate", "1000"});
+  const RunResult r = Simulate(args);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "foresight: error: --view: 100 trials at 1000 Hz are 100000 frames per simulated "
+            "second, at most 20000 (every trial's scene is kept until the page is written): "
+            "fewer --trials or a lower --view-rate\n");
+  EXPECT_FALSE(fs::exists(work() / "v.html"));
+  std::vector<std::string> many = OpenGoal("forward", 101);
+  many.insert(many.end(), {"--view", "v.html"});
+  const RunResult trials = Simulate(many);
+  EXPECT_EQ(trials.exit_code, 2);
+  EXPECT_EQ(trials.err,
+            "foresight: error: --view: replays at most 100 trials (every trial's scene is kept "
+            "until the page is written), got --trials 101\n");
+}
+
+// --view-rate sets the frames of --view only: without --view it would be ignored, so it is
+// refused, as every flag without the flag it belongs to.
+TEST_F(SimulateCommandTest, ViewRateWithoutViewIsRefused) {
+  std::vector<std::string> args = OpenGoal("forward", 2);
+  args.insert(args.end(), {"--view-rate", "50"});
+  const RunResult r = Simulate(args);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "foresight: error: --view-rate needs --view\n");
+  EXPECT_EQ(r.out, "");
+}
+
 // On a floating base the robot stands on its feet: the JSON names the base and says per trial
 // whether it fell and how far its torso tilted; the fixed base reports no tilt at all.
 TEST_F(SimulateCommandTest, JsonNamesTheBaseAndEachTrialsFallAndTilt) {

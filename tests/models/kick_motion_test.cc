@@ -292,6 +292,17 @@ TEST(KickMotionTest, TimesMustIncreaseStrictly) {
                 ": keyframes[2].time_s: must be greater than the previous keyframe's 0.3, got 0.3");
 }
 
+// A keyframe 10^5 times its time made each trial run for 35 s: a motion lasts at most the
+// longest kick phase a physics file may time.
+TEST(KickMotionTest, AMotionLastsNoLongerThanTheLongestKickPhase) {
+  const auto file = MotionFile("endless", R"("time_s": 0.8,)", R"("time_s": 80000.0,)");
+  EXPECT_EQ(LoadError(file), file.string() +
+                                 ": keyframes[3].time_s: must be at most 60 s (the longest kick "
+                                 "phase a physics file's steps.max_kick_time_s may time), got "
+                                 "80000");
+  EXPECT_NO_THROW(LoadKickMotion(MotionFile("minute", R"("time_s": 0.8,)", R"("time_s": 60.0,)")));
+}
+
 TEST(KickMotionTest, EachKeyframeHasOnePositionPerJoint) {
   const auto file = MotionFile("short_keyframe", "[-40.0, 90.0]", "[-40.0]");
   EXPECT_EQ(

@@ -186,6 +186,20 @@ TEST(RobotModelTest, MeshWithoutVerticesIsRejected) {
       file.string() + ": link foot: collision mesh robot_model_empty.stl: mesh has no vertices");
 }
 
+// A mesh with every vertex on one point (or flat) has no volume: each kick at it silently
+// missed. Refused as a box of size 0 is.
+TEST(RobotModelTest, MeshWithoutExtentIsRejected) {
+  WriteTempFile("robot_model_point.obj",
+                "v 0.5 0.25 0.125\nv 0.5 0.25 0.125\nv 0.5 0.25 0.125\nf 1 2 3\n");
+  const auto point = TesterUrdf("point_mesh", "CUBE_OBJ", "robot_model_point.obj");
+  EXPECT_EQ(LoadError(point), point.string() +
+                                  ": link foot: collision mesh robot_model_point.obj: mesh has no "
+                                  "extent in x (every vertex at x = 0.25)");
+  WriteTempFile("robot_model_flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const auto flat = TesterUrdf("flat_mesh", "CUBE_OBJ", "robot_model_flat.obj");
+  EXPECT_THAT(LoadError(flat), HasSubstr("mesh has no extent in z (every vertex at z = 0)"));
+}
+
 TEST(RobotModelTest, PackageUrisAreNotSupported) {
   const auto file = TesterUrdf("package_uri", "CUBE_OBJ", "package://tester/meshes/cube.obj");
   EXPECT_EQ(LoadError(file), file.string() +
@@ -262,6 +276,18 @@ TEST(RobotModelTest, MalformedXmlIsOneLineNamingTheFile) {
   const std::string message = LoadError(file);
   EXPECT_THAT(message, StartsWith(file.string() + ": urdf: "));
   EXPECT_THAT(message, Not(HasSubstr("\n")));
+}
+
+// urdfdom's XML parser recurses per level: 100,000 nested elements (1.3 MB) overflowed its
+// stack. They are refused before urdfdom sees them, in one line naming the file.
+TEST(RobotModelTest, DeeplyNestedXmlIsRefusedBeforeUrdfdom) {
+  std::string text = "<?xml version=\"1.0\"?>\n<robot name=\"r\">\n";
+  for (int i = 0; i < 100000; ++i) text += "<link name=\"a\">";
+  for (int i = 0; i < 100000; ++i) text += "</link>";
+  text += "</robot>\n";
+  const auto file = WriteTempFile("robot_model_deep.urdf", text);
+  EXPECT_EQ(LoadError(file),
+            file.string() + ": urdf: elements nested deeper than 64 levels (line 3)");
 }
 
 TEST(RobotModelTest, MissingFileCannotBeOpened) {

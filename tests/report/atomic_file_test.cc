@@ -70,6 +70,23 @@ TEST(AtomicFileTest, ASymbolicLinkStaysALinkAndItsTargetIsReplaced) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2);
 }
 
+// A link whose target does not exist yet stays a link too, and the file it names is made
+// (it became a regular file in the link's place); a link to a link is followed to the end.
+TEST(AtomicFileTest, ADanglingSymbolicLinkStaysALinkAndItsTargetIsMade) {
+  const fs::path dir = FreshDir("dangling");
+  fs::create_directories(dir / "sub");
+  fs::create_symlink("sub/new.txt", dir / "link.txt");
+  fs::create_symlink("link.txt", dir / "link_to_link.txt");
+  WriteFileAtomically(dir / "link_to_link.txt", "made");
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir / "link.txt")));
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir / "link_to_link.txt")));
+  EXPECT_EQ(Read(dir / "sub" / "new.txt"), "made");
+  fs::create_symlink("loop_b", dir / "loop_a");
+  fs::create_symlink("loop_a", dir / "loop_b");
+  EXPECT_THROW(WriteFileAtomically(dir / "loop_a", "x"), InputError);
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir / "loop_a")));
+}
+
 TEST(AtomicFileTest, ADeviceStaysADevice) {
   WriteFileAtomically("/dev/null", "discarded");
   EXPECT_TRUE(fs::is_character_file("/dev/null"));

@@ -387,6 +387,30 @@ TEST(MotionSearchCommandTest, BadSettingsExitTwoAndGoodOnesWriteTheirFiles) {
   EXPECT_NO_THROW(LoadKickMotion(out / "good" / "best_1.json"));
 }
 
+// The tool's flags as the command's: an empty value and a flag given twice are refused in one
+// line before anything is read, not taken for "not given" or the last one given.
+TEST(MotionSearchCommandTest, EmptyAndRepeatedFlagsAreRefused) {
+  const std::filesystem::path out = testing::FreshTempDir("search_flags");
+  const std::filesystem::path good = WriteTempFile("cmd_flags.json", TinySettings());
+  const auto error = [&](const std::string& flags) {
+    const std::string command = std::string(FORESIGHT_MOTION_SEARCH) + " " + good.string() + " " +
+                                flags + " 2>" + (out / "err.txt").string();
+    const int status = std::system(command.c_str());
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << flags;
+    std::ifstream err(out / "err.txt");
+    return std::string(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
+  };
+  const std::string dir = (out / "r").string();
+  EXPECT_EQ(error("--out " + dir + " --models ''"),
+            "foresight_motion_search: error: --models: empty value (leave the flag out for its "
+            "default)\n");
+  EXPECT_EQ(error("--out " + dir + " --out " + dir + "2"),
+            "foresight_motion_search: error: --out: given twice\n");
+  EXPECT_EQ(error("--out " + dir + " --threads 1 --threads 2"),
+            "foresight_motion_search: error: --threads: given twice\n");
+  EXPECT_FALSE(std::filesystem::exists(out / "r"));
+}
+
 // --out is a report folder: checked before the search (nothing is searched for an output that
 // cannot be written) and replaced whole after it, so a smaller run leaves no best_<rank>.json of
 // a larger one behind, and a user's own file there stays.

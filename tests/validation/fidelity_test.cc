@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "common/checks.h"
 #include "common/error.h"
 #include "common/geometry.h"
 #include "planner/coarse_planner.h"
@@ -346,6 +347,21 @@ TEST(FidelityViewsTest, PagesComeFromTheRecordedTrialsAndShardsGiveTheSameBytes)
     EXPECT_EQ(merged.situations[k].candidates.front().physics_status.blocked, expected) << k;
     EXPECT_EQ(merged.situations[k].physics_status.missed,
               whole.situations[k].physics_status.missed);
+  }
+  // A value that does not follow from the others is refused with the value found beside the one
+  // it must be.
+  for (const char* field : {"utility", "p"}) {
+    std::vector<ShardPart> tampered = parts;
+    nlohmann::json& e = tampered[0].results[0]["candidates"][0]["coarse"];
+    nlohmann::json& value = std::string(field) == "p" ? e["p"][0] : e[field];
+    value = value.get<double>() + 0.25;
+    try {
+      MergeFidelityShards(set, settings, tampered);
+      ADD_FAILURE() << "a tampered " << field << " was merged";
+    } catch (const InputError& error) {
+      EXPECT_THAT(error.what(), HasSubstr(", got " + FormatNumber(value.get<double>())))
+          << error.what();
+    }
   }
   const auto pages = FidelityViewPages(whole, settings, testing::ModelsDir());
   ASSERT_EQ(pages.size(), shown.size());

@@ -236,5 +236,21 @@ TEST(PhysicsChecksTest, JUnitXmlCountsFailuresAndEscapes) {
                               "    </properties>\n    <testcase"));
 }
 
+// A spec's names may hold anything: the XML holds their printable form, so it stays well-formed
+// (no control character, not even as a reference, is valid XML 1.0) and every byte is UTF-8.
+TEST(PhysicsChecksTest, JUnitXmlHoldsNamesInTheirPrintableForm) {
+  std::vector<CheckResult> results(1);
+  results[0] = {"bell\x01\x1b[31m\u202Eok", "free_roll", false, "line\nbreak \xff", 0.5};
+  const std::string xml = JUnitXml("suite\x02", results, {{"spec", "s\x1b.json"}});
+  for (const char c : xml) {
+    EXPECT_TRUE(static_cast<unsigned char>(c) >= 0x20 || c == '\n') << static_cast<int>(c);
+  }
+  EXPECT_THAT(xml, HasSubstr(R"(name="bell\x01\x1b[31m\u202eok")"));
+  EXPECT_THAT(xml, HasSubstr(R"(<failure message="line\nbreak \xff"/>)"));
+  EXPECT_THAT(xml, HasSubstr(R"(<testsuite name="suite\x02")"));
+  EXPECT_THAT(xml, HasSubstr(R"(value="s\x1b.json")"));
+  EXPECT_EQ(xml.find("\xe2\x80\xae"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace foresight
