@@ -3,24 +3,10 @@ decide_many on the same Planner would wait for itself (it blocked for ever, deaf
 it raises RuntimeError, and the Planner is free again afterwards; another Planner may decide
 from the callback. The re-entry runs in a child interpreter with a deadline, so a regression
 fails the test instead of hanging the test run."""
-import os
-import pathlib
-import subprocess
-import sys
-import textwrap
-
 import foresight
+from child_interpreter import MODELS, in_child
 
-MODELS = pathlib.Path(os.environ["FORESIGHT_SOURCE_DIR"]) / "models"
 SITUATION = MODELS / "situations" / "near_goal_corner.json"
-
-
-def in_child(code, timeout=120):
-    """Runs `code` in a new interpreter; returns (exit code, stdout, stderr)."""
-    prelude = f"import foresight, json, pathlib\nMODELS = pathlib.Path({str(MODELS)!r})\n"
-    done = subprocess.run([sys.executable, "-c", prelude + textwrap.dedent(code)],
-                          capture_output=True, text=True, timeout=timeout, check=False)
-    return done.returncode, done.stdout, done.stderr
 
 
 def test_a_progress_callback_calling_its_own_planner_is_refused_not_a_deadlock():

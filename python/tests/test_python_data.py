@@ -4,26 +4,14 @@ or nests deeper than 64 levels is one InputError naming the argument and the pla
 C++ stack overflow (SIGSEGV), and an integer beyond 64 bits names its field. The crashes ran in
 a child interpreter, so a regression fails the test instead of ending the test run."""
 import json
-import os
 import pathlib
-import subprocess
-import sys
-import textwrap
 
 import pytest
 
 import foresight
+from child_interpreter import MODELS, in_child
 
-MODELS = pathlib.Path(os.environ["FORESIGHT_SOURCE_DIR"]) / "models"
 SITUATION = MODELS / "situations" / "near_goal_corner.json"
-
-
-def in_child(code, timeout=120):
-    """Runs `code` in a new interpreter; returns (exit code, stdout, stderr)."""
-    prelude = f"import foresight, json, pathlib\nMODELS = pathlib.Path({str(MODELS)!r})\n"
-    done = subprocess.run([sys.executable, "-c", prelude + textwrap.dedent(code)],
-                          capture_output=True, text=True, timeout=timeout, check=False)
-    return done.returncode, done.stdout, done.stderr
 
 
 def content(path):
