@@ -123,9 +123,8 @@ std::string WorldCheckText(const WorldCheck& check) {
     text += Format("  s%d %s |", s.scenario, Verdict(check, s).c_str());
     for (const WorldCheckCell& c : s.cells) {
       if (!c.decides) continue;
-      const bool share = true;
       text += Format(" %s paper %g ours %s%s;", c.column.c_str(), c.cell.paper,
-                     Number(c.cell.ours, share).c_str(),
+                     Number(c.cell.ours, true).c_str(),  // the deciding cells are shares
                      c.cell.ci ? Format(" [%.1f, %.1f]", c.cell.ci->low, c.cell.ci->high).c_str()
                                : "");
     }
