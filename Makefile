@@ -102,8 +102,8 @@ sanitize: setup
 # (so a reader that is quadratic in its input fails); a finding fails and leaves its input in
 # build-fuzz/findings/.
 fuzz: setup
-	@CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFORESIGHT_FUZZ=ON -DFORESIGHT_BUILD_TESTS=OFF -DFORESIGHT_BUILD_BENCH=OFF >/dev/null
-	@cmake --build build-fuzz -j $(JOBS)
+	@CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFORESIGHT_FUZZ=ON -DFORESIGHT_BUILD_TESTS=OFF -DFORESIGHT_BUILD_BENCH=OFF -DFORESIGHT_BUILD_PYTHON=OFF >/dev/null
+	@cmake --build build-fuzz -j $(JOBS) --target fuzz_readers
 	@FUZZ_TIMEOUT=$(FUZZ_TIMEOUT) bash scripts/run_fuzzers.sh build-fuzz $(FUZZ_RUNS)
 
 clean:

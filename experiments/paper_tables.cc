@@ -202,7 +202,10 @@ void ValidateWorldCheck(const PaperTables& p) {
   if (w.team != "cbr" && w.team != "reactive") {
     throw InputError("world_check.team: must be cbr or reactive, got '" + w.team + "'");
   }
-  for (const auto& [config, list] : w.measures) {
+  for (const auto& measure : w.measures) {
+    // Named copies, not structured bindings: C++17 lambdas cannot capture bindings (Clang).
+    const std::string& config = measure.first;
+    const std::vector<std::string>& list = measure.second;
     for (std::size_t k = 0; k < list.size(); ++k) {
       const bool found = std::any_of(p.tables.begin(), p.tables.end(), [&](const PaperTable& t) {
         const bool has_rows = std::any_of(t.rows.begin(), t.rows.end(),
