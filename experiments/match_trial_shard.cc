@@ -11,7 +11,7 @@ namespace foresight {
 namespace {
 
 // The largest value of each stored enum (the enums are dense from 0).
-constexpr int kLastEventKind = static_cast<int>(EventKind::kBallMoved);
+constexpr int kLastEventKind = static_cast<int>(EventKind::kPenalized);
 constexpr int kLastSide = static_cast<int>(Side::kOpponents);
 
 int EnumNumber(const ShardValue& value, int last) {
@@ -76,7 +76,8 @@ nlohmann::json CountersJson(const TrialCounters& c) {
           {"last_touch", {c.last_touch_side, c.last_touch_robot}},
           {"attacker_kick_sent", c.attacker_kick_sent ? 1 : 0},
           {"shots", {c.shots_on_target, c.shots_saved}},
-          {"contests_resolved", c.contests_resolved}};
+          {"contests_resolved", c.contests_resolved},
+          {"stuck_penalties", c.stuck_penalties}};
 }
 
 TrialCounters ReadCounters(const ShardValue& v, const TrialShape& shape) {
@@ -112,6 +113,7 @@ TrialCounters ReadCounters(const ShardValue& v, const TrialShape& shape) {
   c.shots_saved = shots.At(1).Count();
   if (c.shots_saved > c.shots_on_target) shots.At(1).Fail("must not exceed the shots on target");
   c.contests_resolved = v["contests_resolved"].Count();
+  c.stuck_penalties = v["stuck_penalties"].Count();
   return c;
 }
 

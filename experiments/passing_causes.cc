@@ -50,6 +50,7 @@ std::vector<ScenarioCauses> SummariseCauses(const PassingResult& result, const P
       c.safety_cap_ended +=
           setup.config.time_limit_is_safety_cap && t.outcome == TrialOutcome::kTimeout;
       c.contests_resolved += t.counters.contests_resolved;
+      c.stuck_penalties += t.counters.stuck_penalties;
       CountOpponentKicks(t, attack_sign, setup.params.kick_moved_min_m, c);
     }
     FillIntervals(confidence, c);
@@ -69,6 +70,7 @@ ScenarioCauses PoolCauses(const std::vector<ScenarioCauses>& scenarios, double c
     pooled.opponent_kicks_own_goal += c.opponent_kicks_own_goal;
     pooled.safety_cap_ended += c.safety_cap_ended;
     pooled.contests_resolved += c.contests_resolved;
+    pooled.stuck_penalties += c.stuck_penalties;
   }
   FillIntervals(confidence, pooled);
   return pooled;

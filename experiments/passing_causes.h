@@ -32,6 +32,7 @@ struct ScenarioCauses {
   Interval opponent_kicks_own_goal_ci;  // Wilson, of the share of the moved kicks
   int safety_cap_ended = 0;         // 0 unless the time limit is a safety cap
   int contests_resolved = 0;        // the referee's contest rule fired (match/match.h)
+  int stuck_penalties = 0;          // the referee called local game stuck (match/match.h)
 };
 
 std::vector<ScenarioCauses> SummariseCauses(const PassingResult& result, const PassingSetup& setup,

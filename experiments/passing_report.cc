@@ -91,7 +91,8 @@ Json PassingCausesJson(const ScenarioCauses& c) {
           {"safety_cap_ended", c.safety_cap_ended},
           {"contests_resolved", c.contests_resolved},
           {"contests_resolved_per_trial",
-           c.trials > 0 ? static_cast<double>(c.contests_resolved) / c.trials : 0.0}};
+           c.trials > 0 ? static_cast<double>(c.contests_resolved) / c.trials : 0.0},
+          {"stuck_penalties", c.stuck_penalties}};
 }
 
 Json PassingJson(const PassingRun& run) {
@@ -129,7 +130,7 @@ std::string PassingTrialsCsv(const PassingRun& run) {
   for (const std::string& a : kAttackerNames) csv += ",backups_" + a + ",kicks_" + a;
   csv +=
       ",grabs_failed,kicks_missed,kicks_not_settled,kicks_fell,kicks_blocked,last_touch,"
-      "attacker_kick_sent,shots_on_target,shots_saved,contests_resolved\n";
+      "attacker_kick_sent,shots_on_target,shots_saved,contests_resolved,stuck_penalties\n";
   for (const ScenarioTrials& st : run.result.scenarios) {
     for (std::size_t i = 0; i < st.trials.size(); ++i) {
       const TrialCounters& c = st.trials[i].counters;
@@ -147,10 +148,10 @@ std::string PassingTrialsCsv(const PassingRun& run) {
           : c.last_touch_side == static_cast<int>(Side::kAttackers)
               ? kAttackerNames[static_cast<std::size_t>(c.last_touch_robot)]
               : opponents[static_cast<std::size_t>(c.last_touch_robot)];
-      csv += Format(",%d,%d,%d,%d,%d,%s,%d,%d,%d,%d\n", c.grabs_failed, c.kicks_missed,
+      csv += Format(",%d,%d,%d,%d,%d,%s,%d,%d,%d,%d,%d\n", c.grabs_failed, c.kicks_missed,
                     c.kicks_not_settled, c.kicks_fell, c.kicks_blocked, last.c_str(),
                     c.attacker_kick_sent ? 1 : 0, c.shots_on_target, c.shots_saved,
-                    c.contests_resolved);
+                    c.contests_resolved, c.stuck_penalties);
     }
   }
   return csv;

@@ -223,16 +223,18 @@ const char* kWorldDefinitions =
     "stated distance before it rested, met a body, was grabbed or the trial ended; towards their "
     "own goal when the displacement has any component towards it. Contests the referee ended: a "
     "ball robots of both teams fought over within grabbing reach for longer than the "
-    "ball-holding rule allows, set down clear of every robot (match/match.h).";
+    "ball-holding rule allows, set down clear of every robot. Local game stuck: the league's "
+    "call on the robot closest to a ball that did not move for the rule's time, penalised at "
+    "the touchline (match/match.h).";
 
 std::string WorldText(const PassingScorecard& card) {
   std::string text = Format(
       "the world (to goal by the attackers; on-target shots saved; opponents' kicks >= %.2g m "
-      "towards their own goal; safety cap; contests the referee ended):\n",
+      "towards their own goal; safety cap; contests the referee ended; local game stuck):\n",
       card.kick_moved_min_m);
   for (const ScorecardWorldRow& w : card.world) {
     const ScenarioCauses& c = w.causes;
-    text += Format("  %-3s %-8s to goal %d, by the attackers %s | %s | %d of %d, %s | %d | %d\n",
+    text += Format("  %-3s %-8s to goal %d, by the attackers %s | %s | %d of %d, %s | %d | %d | %d\n",
                    ScenarioName(c.scenario).c_str(), w.team.c_str(), w.to_goal,
                    ShareText(c.to_goal_by_attackers, c.trials, c.to_goal_by_attackers_ci).c_str(),
                    SavedText(card, c).c_str(), c.opponent_kicks_own_goal,
@@ -240,7 +242,7 @@ std::string WorldText(const PassingScorecard& card) {
                    ShareText(c.opponent_kicks_own_goal, c.opponent_kicks_moved,
                              c.opponent_kicks_own_goal_ci)
                        .c_str(),
-                   c.safety_cap_ended, c.contests_resolved);
+                   c.safety_cap_ended, c.contests_resolved, c.stuck_penalties);
   }
   return text;
 }
@@ -263,11 +265,12 @@ void WorldHtml(HtmlReport& html, const PassingScorecard& card) {
                        c.opponent_kicks_own_goal_ci),
          std::to_string(c.safety_cap_ended),
          Format("%d (%.2f per trial)", c.contests_resolved,
-                c.trials > 0 ? static_cast<double>(c.contests_resolved) / c.trials : 0.0)});
+                c.trials > 0 ? static_cast<double>(c.contests_resolved) / c.trials : 0.0),
+         std::to_string(c.stuck_penalties)});
   }
   html.Table({"scenario", "team", "trials", "to goal", "to goal by the attackers (share of trials)",
               "on-target shots saved", "opponents' long kicks towards their own goal",
-              "ended by the safety cap", "contests the referee ended"},
+              "ended by the safety cap", "contests the referee ended", "local game stuck"},
              rows);
 }
 

@@ -63,6 +63,7 @@ class Match {
       const std::optional<TrialOutcome> touched_end = UpdateTouches(met);
       EndKickTravel(met);
       UpdateContest();
+      UpdateGameStuck();
       std::optional<TrialOutcome> end = referee_.Judge(ball_before, world_.ball.p_F);
       if (!end) end = touched_end;
       if (world_.time_s >= next_trace_s_ || end) Record();
@@ -178,6 +179,11 @@ class Match {
     std::vector<RobotCommand> commands;
     for (std::size_t i = 0; i < world_.robots.size(); ++i) {
       RobotState& r = world_.robots[i];
+      if (Penalized(r)) {  // it stands at the touchline; its team does not decide for it
+        r.backing_up = false;
+        commands.emplace_back();
+        continue;
+      }
       RobotCommand c =
           policies_[r.side == Side::kAttackers ? 0 : 1]->Decide(Perceive(static_cast<int>(i)));
       if (c.message) Send(static_cast<int>(i), *c.message);
@@ -217,6 +223,10 @@ class Match {
   std::optional<TrialOutcome> UpdateTouches(const std::vector<int>& met);
   bool Contested() const;
   void UpdateContest();
+  void UpdateGameStuck();
+  void Penalize(int robot);
+  Pose2 PenaltyPose(int robot) const;
+  bool Penalized(const RobotState& r) const { return world_.time_s < r.penalized_until_s; }
   std::optional<Vec2> FreeSpotNear(const Vec2& p_F) const;
   void UpdateBlock(RobotState& r) const;
   bool InStealCone(const RobotState& challenger, int holder) const;
@@ -236,6 +246,8 @@ class Match {
   int kick_in_flight_ = -1;  // the kicker whose kick's travel has not ended yet
   bool shot_on_target_ = false;  // that kick is an attacker's shot on target
   double contested_since_s_ = -1.0;  // < 0: the ball is not fought over
+  Vec2 stuck_ref_F_{0.0, 0.0};       // where the ball lay when it was last seen to move
+  double stuck_since_s_ = -1.0;      // < 0: no reference yet
 };
 
 void Match::Act(const std::vector<RobotCommand>& commands) {
@@ -472,6 +484,76 @@ void Match::UpdateContest() {
   result_.events.push_back({world_.time_s, EventKind::kBallMoved, Side::kAttackers, 0,
                             world_.ball.p_F, "contest"});
   contested_since_s_ = -1.0;
+}
+
+// The league's local game stuck (models/match/simulation.json, stuck_*): once the ball has stayed
+// within stuck_ball_still_m of where it lay for stuck_after_s, the robot closest to it (from its
+// body's edge, if within stuck_proximity_m) is penalised; the ball's reference is then taken
+// anew. With nobody that close the call waits for the first robot that comes close.
+void Match::UpdateGameStuck() {
+  const SimulationParams& sim = *s_.sim;
+  if (stuck_since_s_ < 0.0 || (world_.ball.p_F - stuck_ref_F_).norm() > sim.stuck_ball_still_m) {
+    stuck_ref_F_ = world_.ball.p_F;
+    stuck_since_s_ = world_.time_s;
+    return;
+  }
+  if (world_.time_s - stuck_since_s_ < sim.stuck_after_s - 1e-9) return;
+  int closest = -1;  // ties: the first robot (attackers first)
+  double closest_m = 0.0;
+  for (std::size_t i = 0; i < world_.robots.size(); ++i) {
+    const RobotState& r = world_.robots[i];
+    const double edge_m = (world_.ball.p_F - r.pose.p_F).norm() - s_.robot->body_radius_m;
+    if (!Penalized(r) && edge_m <= sim.stuck_proximity_m + 1e-9 &&
+        (closest < 0 || edge_m < closest_m)) {
+      closest = static_cast<int>(i);
+      closest_m = edge_m;
+    }
+  }
+  if (closest < 0) return;
+  Penalize(closest);
+  stuck_since_s_ = -1.0;
+}
+
+// A penalised robot lets go of the ball, stops what it was doing and stands at its penalty spot
+// for stuck_penalty_s, facing the field.
+void Match::Penalize(int robot) {
+  RobotState& r = world_.robots[static_cast<std::size_t>(robot)];
+  if (world_.ball.holder == robot) {
+    world_.ball.holder = -1;
+    world_.ball.roll.reset();
+  }
+  r.activity = Activity::kFree;
+  r.kick_index = kNoKick;
+  r.block_half_span_m = 0.0;
+  r.pose = PenaltyPose(robot);
+  r.penalized_until_s = world_.time_s + s_.sim->stuck_penalty_s;
+  ++result_.counters.stuck_penalties;
+  Event(EventKind::kPenalized, robot, "local_game_stuck");
+}
+
+// The carpet's edge next to the touchline on the robot's side, at the height of the front line
+// of its own penalty area, or the nearest spot a body's width apart (alternately towards the
+// halfway line and the goal line, within the own half) where no other robot stands.
+Pose2 Match::PenaltyPose(int robot) const {
+  const RobotState& r = world_.robots[static_cast<std::size_t>(robot)];
+  const double body_m = s_.robot->body_radius_m;
+  const double own_sign = r.side == Side::kAttackers ? -s_.attack_sign : s_.attack_sign;
+  const double y = std::copysign(rules_.y_max_m, r.pose.p_F.y() != 0.0 ? r.pose.p_F.y() : 1.0);
+  const double heading = y > 0.0 ? -0.5 * kPi : 0.5 * kPi;
+  const double x0 = own_sign * (s_.field->HalfLength() - s_.sim->penalty_area_depth_m);
+  const int spots = static_cast<int>(std::ceil(2.0 * s_.field->HalfLength() / (2.0 * body_m)));
+  for (int k = 0; k <= 2 * spots; ++k) {
+    const int step = (k + 1) / 2 * (k % 2 == 1 ? -1 : 1);  // 0, towards halfway, towards goal...
+    const Vec2 q(x0 + own_sign * step * 2.0 * body_m, y);
+    if (own_sign * q.x() < 0.0 || std::abs(q.x()) > s_.field->HalfLength()) continue;
+    bool free = true;
+    for (std::size_t j = 0; j < world_.robots.size(); ++j) {
+      free = free && (static_cast<int>(j) == robot ||
+                      (world_.robots[j].pose.p_F - q).norm() >= 2.0 * body_m);
+    }
+    if (free) return {q, heading};
+  }
+  return {Vec2(x0, y), heading};
 }
 
 // The nearest point to p_F on rings kSpotStepM apart (kSpotAngles points each, the first one

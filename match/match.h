@@ -29,7 +29,12 @@
 //     (the league's rule, models/match/simulation.json) with the ball held or at rest is ended:
 //     the ball is set down free at the nearest spot on the field contest_clearance_m clear of
 //     every body, and counted;
-//  7. the referee judges the ball's move; the time limit ends the trial as "timeout".
+//  7. local game stuck (the league's rule, models/match/simulation.json): a ball that has stayed
+//     within stuck_ball_still_m of where it lay for stuck_after_s gets the robot closest to it
+//     (within stuck_proximity_m of its body's edge) penalised: it lets go of the ball, stands
+//     stuck_penalty_s at the touchline by its own penalty area, and its team does not decide for
+//     it meanwhile; counted;
+//  8. the referee judges the ball's move; the time limit ends the trial as "timeout".
 // Randomness comes from the trial's key only (perception noise, grabs, message loss, kicks), so a
 // trial gives the same result on any thread.
 #pragma once

@@ -45,6 +45,10 @@ void SimulationParams::Validate() const {
   RequireInRange("touch_tolerance_m", touch_tolerance_m, 0.0, 0.1);
   RequireInRange("ball_holding_limit_s", ball_holding_limit_s, 0.1, 60.0);
   RequireInRange("contest_clearance_m", contest_clearance_m, 0.0, 1.0);
+  RequireInRange("stuck_ball_still_m", stuck_ball_still_m, 0.0, 1.0);
+  RequireInRange("stuck_after_s", stuck_after_s, 0.1, 600.0);
+  RequireInRange("stuck_proximity_m", stuck_proximity_m, 0.0, 5.0);
+  RequireInRange("stuck_penalty_s", stuck_penalty_s, 0.0, 600.0);
 }
 
 RobotParams LoadRobotParams(const std::string& reference, const std::filesystem::path& models_dir) {
@@ -104,12 +108,14 @@ SimulationParams LoadSimulationParams(const std::string& reference,
                           "ball_noise_sigma_m", "robot_noise_sigma_m", "message_latency_s",
                           "message_loss_rate", "close_margin_m", "penalty_area_depth_m",
                           "penalty_area_half_width_m", "touch_tolerance_m",
-                          "ball_holding_limit_s", "contest_clearance_m"});
+                          "ball_holding_limit_s", "contest_clearance_m", "stuck_ball_still_m",
+                          "stuck_after_s", "stuck_proximity_m", "stuck_penalty_s"});
   RequireSources(
       root, {"control_step_s", "ball_noise_sigma_m", "robot_noise_sigma_m", "message_latency_s",
              "message_loss_rate", "close_margin_m", "penalty_area_depth_m",
              "penalty_area_half_width_m", "touch_tolerance_m", "ball_holding_limit_s",
-             "contest_clearance_m"});
+             "contest_clearance_m", "stuck_ball_still_m", "stuck_after_s", "stuck_proximity_m",
+             "stuck_penalty_s"});
   p.field = root.String("field");
   p.kicks = root.String("kicks");
   p.robot = root.String("robot");
@@ -124,6 +130,10 @@ SimulationParams LoadSimulationParams(const std::string& reference,
   p.touch_tolerance_m = root.Number("touch_tolerance_m");
   p.ball_holding_limit_s = root.Number("ball_holding_limit_s");
   p.contest_clearance_m = root.Number("contest_clearance_m");
+  p.stuck_ball_still_m = root.Number("stuck_ball_still_m");
+  p.stuck_after_s = root.Number("stuck_after_s");
+  p.stuck_proximity_m = root.Number("stuck_proximity_m");
+  p.stuck_penalty_s = root.Number("stuck_penalty_s");
   WithFile(p.file.string(), [&] { p.Validate(); });
   return p;
 }

@@ -78,6 +78,13 @@ struct SimulationParams {
   // reach of both teams for longer than ball_holding_limit_s is set down contest_clearance_m
   // clear of every body.
   double contest_clearance_m = 0.0;
+  // The league's local game stuck (match/match.h): a ball that stays within stuck_ball_still_m
+  // of where it lay for stuck_after_s gets the robot closest to it, if its body's edge is within
+  // stuck_proximity_m, penalised for stuck_penalty_s at the touchline.
+  double stuck_ball_still_m = 0.0;
+  double stuck_after_s = 0.0;
+  double stuck_proximity_m = 0.0;
+  double stuck_penalty_s = 0.0;
 
   void Validate() const;
 };

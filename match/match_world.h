@@ -31,6 +31,9 @@ struct RobotState {
   double block_half_span_m = 0.0;
   bool touching = false;
   bool backing_up = false;
+  // Penalised by the referee (local game stuck) until then: it stands at the touchline and its
+  // team's policy does not decide for it.
+  double penalized_until_s = -1.0;
   std::vector<TeamMessage> inbox;
 };
 

@@ -9,7 +9,13 @@ bool MoveAllowed(const MatchWorld& world, const MoveRules& rules, std::size_t ro
   if (std::abs(pose.p_F.x()) > rules.x_max_m || std::abs(pose.p_F.y()) > rules.y_max_m) {
     return false;
   }
-  if (rules.regions[robot] && !rules.regions[robot]->Contains(pose.p_F)) return false;
+  if (const std::optional<FieldBox>& region = rules.regions[robot];
+      region && !region->Contains(pose.p_F)) {
+    // Outside its region (back from a penalty at the touchline) a robot may only walk back in.
+    const Vec2& from = world.robots[robot].pose.p_F;
+    const double from_m = (from - region->Clamp(from)).norm();
+    if (from_m == 0.0 || (pose.p_F - region->Clamp(pose.p_F)).norm() >= from_m) return false;
+  }
   const bool holding = world.ball.holder == static_cast<int>(robot);
   const Vec2 held_ball = pose.ToField(Vec2(rules.contact_m, 0.0));
   for (std::size_t j = 0; j < world.robots.size(); ++j) {

@@ -3,7 +3,8 @@
 // Robots move one after the other against where the others stand now. A move into another body
 // slides along it (the part towards the other robot is removed); a move that still overlaps a
 // body (or pushes a held ball into one), leaves the carpet or leaves an opponent's region is
-// cancelled: the robot only turns, or stays as it was if turning is what collides. No two bodies
+// cancelled: the robot only turns, or stays as it was if turning is what collides. An opponent
+// outside its region (placed at the touchline by a penalty) may only move closer to it. No two bodies
 // ever overlap, so the order matters only when two robots meet.
 #pragma once
 

@@ -15,7 +15,7 @@ inline constexpr EnumNames<TrialOutcome, kTrialOutcomeCount> kOutcomeNames{{{
     {TrialOutcome::kTimeout, "timeout"},
 }}};
 
-inline constexpr EnumNames<EventKind, 12> kEventNames{{{
+inline constexpr EnumNames<EventKind, 13> kEventNames{{{
     {EventKind::kGrab, "grab"},
     {EventKind::kGrabFailed, "grab_failed"},
     {EventKind::kSteal, "steal"},
@@ -28,6 +28,7 @@ inline constexpr EnumNames<EventKind, 12> kEventNames{{{
     {EventKind::kKickEnd, "kick_end"},
     {EventKind::kRelease, "release"},
     {EventKind::kBallMoved, "ball_moved"},
+    {EventKind::kPenalized, "penalized"},
 }}};
 
 inline constexpr EnumNames<Side, 2> kSideNames{

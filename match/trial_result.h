@@ -40,6 +40,7 @@ enum class EventKind : std::uint8_t {
   kKickEnd,
   kRelease,    // a holder let the ball go without kicking it
   kBallMoved,  // the referee set down a ball both teams fought over too long (robot 0, unused)
+  kPenalized,  // the referee called local game stuck on this robot (detail: "local_game_stuck")
 };
 std::string_view EventKindName(EventKind kind);
 
@@ -85,6 +86,8 @@ struct TrialCounters {
   // How often the referee set down a ball robots of both teams had fought over for longer than
   // the ball-holding rule allows (match/match.h).
   int contests_resolved = 0;
+  // How often the referee called local game stuck and penalised a robot (match/match.h).
+  int stuck_penalties = 0;
 };
 
 // Every robot and the ball at one time (attackers first, then opponents).

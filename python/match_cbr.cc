@@ -106,6 +106,7 @@ py::dict Passing(const py::object& config, const py::object& team, const py::obj
   };
   out["shots_on_target"] = counter(&TrialCounters::shots_on_target);
   out["contests_resolved"] = counter(&TrialCounters::contests_resolved);
+  out["stuck_penalties"] = counter(&TrialCounters::stuck_penalties);
   out["shots_saved"] = counter(&TrialCounters::shots_saved);
   out["grabs_failed"] = counter(&TrialCounters::grabs_failed);
   // Kicks whose physics trial did not end ok (physics=True only; models/outcome.h).
@@ -152,7 +153,7 @@ void AddMatchAndCbr(py::module_& m) {
         "arrays, one entry per trial in play order: team (code into team_names), scenario, "
         "trial, outcome (code into outcome_names), to_goal, time_s (simulated seconds), "
         "attacker_kicks, opponent_touches, shots_on_target, shots_saved, contests_resolved, "
-        "grabs_failed, and the kicks whose physics trial missed, did not settle, fell or was "
+        "stuck_penalties (the referee's local game stuck calls), grabs_failed, and the kicks whose physics trial missed, did not settle, fell or was "
         "blocked (kicks_missed, kicks_not_settled, kicks_fell, kicks_blocked; 0 without physics). base 'fixed' or "
         "'floating' (with physics=True) replaces the physics file's. The same seed gives the "
         "same trials as the command. Ctrl-C stops it; progress(label, done, total).");

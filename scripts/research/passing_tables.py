@@ -65,8 +65,8 @@ def outs_by_attackers(folder, team):
 def outcomes(folder, card):
     print("| cfg | scn | team | goal | close | block | out (attackers last) | p. area | to goal "
           "| by the attackers | timeout / cap | opp. touches | time (s) | shots on target, saved "
-          "| opp. kicks >= 0.3 m, towards own goal | contests ended |")
-    print("| --- " * 16 + "|")
+          "| opp. kicks >= 0.3 m, towards own goal | contests ended | local game stuck |")
+    print("| --- " * 17 + "|")
     for team in TEAMS:
         run = json.loads((folder / f"passing_{team}.json").read_text())
         outs = outs_by_attackers(folder, team)
@@ -82,7 +82,7 @@ def outcomes(folder, card):
                   f"{100 * c['to_goal_by_attackers']['share']:.1f} | {pct('timeout')} | {touches} | "
                   f"{s['time_s']['mean']:.1f} | {c['shots_on_target']}, {c['shots_saved']} | "
                   f"{c['opponent_kicks_moved']}, {c['opponent_kicks_towards_own_goal']} | "
-                  f"{c['contests_resolved_per_trial']:.2f} |")
+                  f"{c['contests_resolved_per_trial']:.2f} | {c['stuck_penalties']} |")
 
 
 def backups(card):

@@ -178,8 +178,8 @@ TEST(PassingShardTest, AMalformedTrialIsRefusedWithItsPlace) {
   j["outcome"] = 6;
   EXPECT_EQ(error(j.dump()), "s/shard.json: results[4].result.outcome: must be 0 .. 5");
   j = good;
-  j["events"][0][1] = 12;
-  EXPECT_EQ(error(j.dump()), "s/shard.json: results[4].result.events[0][1]: must be 0 .. 11");
+  j["events"][0][1] = 13;
+  EXPECT_EQ(error(j.dump()), "s/shard.json: results[4].result.events[0][1]: must be 0 .. 12");
   j = good;
   j["events"][0].erase(6);
   EXPECT_EQ(error(j.dump()), "s/shard.json: results[4].result.events[0]: must be "

@@ -96,6 +96,20 @@ TEST(MatchParamsTest, ContestClearanceIsCheckedAndNeedsASource) {
   EXPECT_THAT(unsourced_error, HasSubstr("contest_clearance_x"));
 }
 
+TEST(MatchParamsTest, LocalGameStuckFiguresAreChecked) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"\"stuck_after_s\": 10.0", "\"stuck_after_s\": 0"},
+      {"\"stuck_penalty_s\": 45.0", "\"stuck_penalty_s\": -45"},
+      {"\"stuck_proximity_m\": 0.5", "\"stuck_proximity_m\": 50"},
+      {"\"stuck_ball_still_m\": 0.1", "\"stuck_ball_still_m\": -0.1"}};
+  for (const auto& [from, to] : cases) {
+    const auto bad = testing::WriteTempFile("sim.json", Replace(Shipped("simulation.json"), from, to));
+    const std::string error = ErrorOf([&] { LoadSimulationParams(bad.string(), "."); });
+    const std::string field = std::string(from).substr(1, std::string(from).find('"', 1) - 1);
+    EXPECT_THAT(error, HasSubstr(bad.string() + ": " + field)) << to;
+  }
+}
+
 TEST(MatchParamsTest, ReactiveRuleFiguresAreChecked) {
   const auto file = testing::WriteTempFile(
       "reactive.json",

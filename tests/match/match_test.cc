@@ -249,6 +249,119 @@ TEST_F(MatchTest, FreeSpotIsClearOfEveryBody) {
   }
 }
 
+// Two opponents stand side by side between the attacker and the ball: the attacker, walking
+// straight at the ball, is wedged in the notch between their bodies and the ball never moves.
+// Only the league's local game stuck ends it.
+Scenario Wedge() {
+  return Scenario{"wedge",
+                  Vec2(0.55, 0.0),
+                  {Pose2{Vec2(-0.5, 0.0), 0.0}, Pose2{Vec2(-2.0, -1.0), 0.0}},
+                  {Pose2{Vec2(0.3, 0.2), kPi}, Pose2{Vec2(0.3, -0.2), kPi}}};
+}
+
+// Records when the team decided for each robot.
+class DecisionClock final : public TeamPolicy {
+ public:
+  RobotCommand Decide(const Perception& p) override {
+    times_s[static_cast<std::size_t>(p.self)].push_back(p.time_s);
+    return {};
+  }
+  std::vector<double> times_s[2];
+};
+
+TEST_F(MatchTest, LocalGameStuckPenalisesTheRobotClosestToAStillBallAtTheTouchline) {
+  config_.opponents.push_back({"G", OpponentRole::kDefender, {-2.0, 1.9, -1.5, 1.5}});
+  config_.time_limit_s = sim_.stuck_after_s + 3.0;
+  setup_.trace_period_s = sim_.control_step_s;
+  GetAndKick attackers(CommandKind::kRelease);
+  Stand opponents;
+  const MatchTrialResult r = RunTrial(setup_, Wedge(), attackers, opponents, 5);
+  ASSERT_EQ(r.counters.stuck_penalties, 1);
+  const MatchEvent* penalty = nullptr;
+  bool grabbed_after = false, touched_before = false;
+  for (const MatchEvent& e : r.events) {
+    if (e.kind == EventKind::kPenalized) penalty = &e;
+    touched_before = touched_before || (!penalty && e.kind == EventKind::kTouch);
+    grabbed_after = grabbed_after || (penalty && e.kind == EventKind::kGrab && e.robot == 0);
+  }
+  ASSERT_NE(penalty, nullptr);
+  EXPECT_FALSE(touched_before);  // wedged: the attacker never reached the ball
+  // The ball lay still from the start: the call comes after stuck_after_s, to the step.
+  EXPECT_NEAR(penalty->time_s, sim_.stuck_after_s, sim_.control_step_s + 1e-9);
+  // The closest robots are the two opponents (edge 0.2 m; the attacker's 0.26 m): the first.
+  EXPECT_EQ(penalty->side, Side::kOpponents);
+  EXPECT_EQ(penalty->robot, 0);
+  EXPECT_EQ(penalty->detail, "local_game_stuck");
+  EXPECT_TRUE(grabbed_after);  // the way to the ball is open
+  // At the touchline on its side (y > 0), by the front line of its own penalty area (+x).
+  const TraceFrame* after = nullptr;
+  for (const TraceFrame& f : r.trace) {
+    if (!after && f.time_s > penalty->time_s - 1e-9) after = &f;
+  }
+  ASSERT_NE(after, nullptr);
+  const Pose2& placed = after->robots[2];
+  EXPECT_NEAR(placed.p_F.x(), field_.HalfLength() - sim_.penalty_area_depth_m, 1e-9);
+  EXPECT_NEAR(placed.p_F.y(), field_.CarpetHalfWidth() - robot_.body_radius_m, 1e-9);
+  EXPECT_NEAR(placed.theta_rad, -0.5 * kPi, 1e-12);  // facing the field
+}
+
+TEST_F(MatchTest, APenalisedRobotGetsNoDecisionsUntilItsPenaltyEnds) {
+  sim_.stuck_penalty_s = 4.0;
+  config_.time_limit_s = sim_.stuck_after_s + 6.0;
+  Stand attackers;
+  DecisionClock opponents;
+  // The defender stands 0.1 m from the ball's edge; nobody else is near.
+  const Scenario near{"near",
+                      Vec2(0.0, 0.0),
+                      {Pose2{Vec2(-1.5, 0.0), 0.0}, Pose2{Vec2(-1.5, -1.0), 0.0}},
+                      {Pose2{Vec2(0.25, 0.0), kPi}}};
+  const MatchTrialResult r = RunTrial(setup_, near, attackers, opponents, 5);
+  ASSERT_EQ(r.counters.stuck_penalties, 1);
+  const std::vector<double>& t = opponents.times_s[0];
+  double longest_gap_s = 0.0, gap_from_s = 0.0;
+  for (std::size_t i = 1; i < t.size(); ++i) {
+    if (t[i] - t[i - 1] > longest_gap_s) {
+      longest_gap_s = t[i] - t[i - 1];
+      gap_from_s = t[i - 1];
+    }
+  }
+  EXPECT_NEAR(gap_from_s, sim_.stuck_after_s, 2.0 * sim_.control_step_s);
+  EXPECT_NEAR(longest_gap_s, sim_.stuck_penalty_s, 2.0 * sim_.control_step_s);
+}
+
+TEST_F(MatchTest, AnOpponentBackFromAPenaltyWalksBackIntoItsRegion) {
+  sim_.stuck_penalty_s = 2.0;
+  config_.time_limit_s = sim_.stuck_after_s + sim_.stuck_penalty_s + 7.0;
+  setup_.trace_period_s = sim_.control_step_s;
+  config_.clear_kick = "straight";
+  Stand attackers;
+  OpponentTeam opponents(config_, field_, kicks_, robot_, sim_);
+  // The ball lies just outside the defender's region: it waits at the boundary, facing it.
+  const FieldBox& region = config_.opponents[0].region;
+  const Scenario outside{"outside",
+                         Vec2(region.x_max_m + 0.3, 0.0),
+                         {Pose2{Vec2(-1.5, 0.0), 0.0}, Pose2{Vec2(-1.5, -1.0), 0.0}},
+                         {Pose2{Vec2(region.x_max_m, 0.0), 0.0}}};
+  const MatchTrialResult r = RunTrial(setup_, outside, attackers, opponents, 5);
+  ASSERT_EQ(r.counters.stuck_penalties, 1);
+  bool left = false;
+  for (const TraceFrame& f : r.trace) left = left || !region.Contains(f.robots[2].p_F);
+  EXPECT_TRUE(left);  // the penalty placed it outside its region
+  EXPECT_TRUE(region.Contains(r.trace.back().robots[2].p_F));
+}
+
+TEST_F(MatchTest, NoLocalGameStuckWithNobodyNearTheBall) {
+  config_.time_limit_s = 2.0 * sim_.stuck_after_s;
+  Stand attackers, opponents;
+  // Every body's edge more than stuck_proximity_m from the ball.
+  const double far_m = robot_.body_radius_m + sim_.stuck_proximity_m + 0.05;
+  const Scenario alone{"alone",
+                       Vec2(0.0, 0.0),
+                       {Pose2{Vec2(-far_m, 0.0), 0.0}, Pose2{Vec2(-1.5, -1.0), 0.0}},
+                       {Pose2{Vec2(far_m, 0.0), kPi}}};
+  EXPECT_EQ(RunTrial(setup_, alone, attackers, opponents, 5).counters.stuck_penalties, 0);
+}
+
 // A holder that releases the ball leaves it at rest where it held it.
 TEST_F(MatchTest, AReleasedBallLiesAtRestInFrontOfTheRobot) {
   GetAndKick attackers(CommandKind::kRelease);
