@@ -12,6 +12,17 @@ std::size_t At(int i) {
   return static_cast<std::size_t>(i);
 }
 
+// The kicks and passes every robot of the case makes.
+int KicksIn(const Case& c) {
+  int kicks = 0;
+  for (const CaseTeammate& t : c.teammates) {
+    for (const CaseAction& a : t.actions) {
+      kicks += a.type == ActionType::kKick || a.type == ActionType::kPass;
+    }
+  }
+  return kicks;
+}
+
 // Why retrieval gave the team no case: the furthest any case got (cbr/team_counters.h).
 void CountNoCase(const RetrievalResult& result, CbrTeamCounters& counters) {
   bool blocked = false, too_far = false;
@@ -239,7 +250,7 @@ void CbrTeam::Retrieve(Robot& r, const Perception& p) {
   for (int i = 0; i < match.count; ++i) {
     robots[At(i)] = problem.teammates[At(match.problem_index[At(i)])].id - 1;
   }
-  counters_.CountCase(match.count);
+  counters_.CountCase(match.count, KicksIn(cases[At(chosen->case_index)]));
   Send(r, p, CbrMessageKind::kCase, chosen->case_index, PackRobots(robots));
   Adopt(r, p, r.cycle, chosen->case_index, robots, p.p_F_ball);
 }
@@ -306,6 +317,7 @@ void CbrTeam::Adopt(Robot& r, const Perception& p, int cycle, int case_index,
   r.arrived = {};
   r.done = {};
   r.sent_arrived = false;
+  r.all_done_s = -1.0;
   Enter(r, r.me >= 0 ? CbrPhase::kAdapt : CbrPhase::kWaitEnd, p.time_s);
 }
 
@@ -406,10 +418,19 @@ RobotCommand CbrTeam::WaitEnd(Robot& r, const Perception& p) {
   const CasePlay& play = *r.play;
   bool all_done = true;
   for (int i = 0; i < play.TeammateCount(); ++i) all_done = all_done && r.done[At(i)];
-  double limit_s = params.wait_end_timeout_s;
-  if (r.me < 0) limit_s += params.adapt_timeout_s + params.execute_timeout_s;
-  if ((all_done && r.coordinator == p.self) || p.time_s - r.phase_since_s > limit_s) {
-    if (all_done && r.coordinator == p.self) Send(r, p, CbrMessageKind::kEnd);
+  if (all_done && r.all_done_s < 0.0) r.all_done_s = p.time_s;
+  double limit_s = params.wait_end_timeout_s + params.execute_timeout_s;
+  if (r.me < 0) limit_s += params.adapt_timeout_s;
+  const bool ended = all_done && r.coordinator == p.self;
+  const bool end_lost = all_done && p.time_s - r.all_done_s > params.wait_end_timeout_s;
+  const bool safety_net = p.time_s - r.phase_since_s > limit_s;
+  if (ended || end_lost || safety_net) {
+    if (ended) {
+      Send(r, p, CbrMessageKind::kEnd);
+      counters_.CountCompleted(KicksIn(*play.c));
+    } else if (safety_net && !all_done && r.me >= 0) {
+      ++counters_.wait_end_timeouts;
+    }
     r.play.reset();
     Enter(r, CbrPhase::kIdle, p.time_s);
     r.idle_until_s = p.time_s;

@@ -12,7 +12,10 @@
 //      and EXECUTE their actions (cbr/case_actions.h) once the robot that gets the ball is at its
 //      position (dependent positioning) or once all are (independent); robots not in the case, and
 //      those that finished, keep close to the ball without going after it (WAIT END). Each robot
-//      reports DONE; when the coordinator has heard all, it sends END and a new cycle begins.
+//      reports DONE; when the coordinator has heard all, it sends END and a new cycle begins:
+//      "the execution of the case continues until all robots finish their sequences of actions"
+//      (sec. 4.2), so a robot that finished waits for its teammates, whose own actions, aborts
+//      and execute timeouts end theirs.
 //   4. ABORT: a robot of the case that finds it no longer applicable (ball out of the case's
 //      scope while adapting or going for it, ball lost, path blocked) or whose state lasted past
 //      its timeout tells the team; everyone goes back to step 1.
@@ -20,7 +23,9 @@
 // of older cycles are ignored, a robot that missed the case plays the default behaviour until a
 // newer cycle reaches it, and a receiver whose pass message was lost sees the pass happen. A
 // robot out of the case waits at most the adapt, execute and wait-end timeouts together; one that
-// finished, the wait-end timeout. At the start every teammate counts as present (the team starts
+// finished, the execute and wait-end timeouts (a teammate still executing has its own execute
+// timeout; the safety net is counted, wait_end_timeouts), and once it knows all done, the
+// wait-end timeout for the coordinator's END. At the start every teammate counts as present (the team starts
 // together), until presence_timeout_s passes without a message from it.
 // Decisions where the paper is silent: a robot holding the ball when it has no action for it
 // plays the default behaviour; any robot that has held the ball for release_after_s kicks it
@@ -100,6 +105,7 @@ class CbrTeam final : public TeamPolicy {
     std::array<bool, kMaxTeammates> arrived{};
     std::array<bool, kMaxTeammates> done{};
     bool sent_arrived = false;
+    double all_done_s = -1.0;  // when this robot first knew every robot of the case done
     bool was_holding = false;
     double holding_since_s = 0.0;
     bool executing_started = false;

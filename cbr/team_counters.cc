@@ -9,9 +9,15 @@ std::string_view CbrPhaseName(CbrPhase phase) {
   return kNames[static_cast<int>(phase)];
 }
 
-void CbrTeamCounters::CountCase(int teammates) {
+void CbrTeamCounters::CountCase(int teammates, int kicks) {
   ++retrieved;
   ++(teammates >= 2 ? cooperative : individual);
+  multi_kick += kicks >= 2;
+}
+
+void CbrTeamCounters::CountCompleted(int kicks) {
+  ++completed;
+  multi_kick_completed += kicks >= 2;
 }
 
 void CbrTeamCounters::CountAbort(int cycle, AbortReason reason) {
@@ -33,7 +39,12 @@ std::vector<TeamPolicy::Counter> CbrTeamCounters::List() const {
                                          static_cast<double>(no_case_candidates_refused)},
                                         {"no_case_path_blocked", static_cast<double>(no_case_path_blocked)},
                                         {"no_case_too_far", static_cast<double>(no_case_too_far)},
-                                        {"no_case_out_of_scope", static_cast<double>(no_case_out_of_scope)}};
+                                        {"no_case_out_of_scope", static_cast<double>(no_case_out_of_scope)},
+                                        {"cases_completed", static_cast<double>(completed)},
+                                        {"cases_multi_kick", static_cast<double>(multi_kick)},
+                                        {"cases_multi_kick_completed",
+                                         static_cast<double>(multi_kick_completed)},
+                                        {"wait_end_timeouts", static_cast<double>(wait_end_timeouts)}};
   for (int i = 0; i < kAbortReasonCount; ++i) {
     c.push_back({"aborts_" + std::string(AbortReasonName(static_cast<AbortReason>(i))),
                  static_cast<double>(aborts[static_cast<std::size_t>(i)])});

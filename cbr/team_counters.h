@@ -34,11 +34,19 @@ struct CbrTeamCounters {
   int no_case_path_blocked = 0;
   int no_case_too_far = 0;
   int no_case_out_of_scope = 0;
+  // Cases whose robots make two kicks or more between them (a pass and the kick after it), and
+  // those the coordinator saw every robot finish (END); likewise all cases.
+  int multi_kick = 0;
+  int multi_kick_completed = 0;
+  int completed = 0;
+  // Robots of a case that stopped waiting for a teammate still executing (the safety net).
+  int wait_end_timeouts = 0;
   std::array<int, kAbortReasonCount> aborts{};  // cycles aborted, by the first reason
   int last_aborted_cycle = -1;
   std::array<double, kCbrPhaseCount> phase_time_s{};  // summed over the robots
 
-  void CountCase(int teammates);
+  void CountCase(int teammates, int kicks);
+  void CountCompleted(int kicks);
   // Once per cycle: two robots may find the case inapplicable in the same step.
   void CountAbort(int cycle, AbortReason reason);
   // "cycles", "cases_retrieved", ..., "aborts_ball_lost", ..., "robot_time_adapt_s", ...

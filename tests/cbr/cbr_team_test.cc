@@ -390,6 +390,65 @@ TEST_F(CbrTeamTest, AnIndividualCaseRunsThroughEveryState) {
             0.0);
 }
 
+// Sec. 4.2: "The execution of the case continues until all robots finish their sequences of
+// actions". Robot 0 gets the ball and kicks it; robot 1 walks far away meanwhile: robot 0 waits
+// for it past the wait-end timeout, no new cycle supersedes the case, and the coordinator ends
+// it once robot 1 is there.
+TEST_F(CbrTeamTest, ARobotThatFinishedWaitsForItsTeammateToFinish) {
+  const KickModel& kicks = base_.rules.kicks;
+  const auto forward = static_cast<std::size_t>(*kicks.Find("forward"));
+  poses_[0] = Pose2(Vec2(0.7, 0.45), -kicks.kicks[forward].direction_rad);
+  Case c;
+  c.name = "kick_while_the_other_walks";
+  c.source = c.name;
+  c.p_F_ball = Vec2(1.3, 0.2);
+  c.ball_scope = {0.6, 0.5};
+  CaseAction get, kick, walk;
+  get.type = ActionType::kGetBall;
+  kick.type = ActionType::kKick;
+  kick.kick = "forward";
+  kick.at_goal = true;
+  walk.type = ActionType::kGoTo;
+  walk.target_F = Vec2(-1.0, -1.0);
+  c.teammates = {{1, Vec2(1.0, 0.2), {get, kick}}, {2, poses_[1].p_F, {walk}}};
+  const CaseBase one({c}, base_.kick_mirrors);
+  MakeTeam();
+  setup_.cases = &one;
+  team_.emplace(setup_, fallback_, 2);
+  Run(4);
+  ASSERT_EQ(Counter("cases_cooperative"), 1.0);
+  const RobotCommand step = last_[0];  // robot 0 walks to its adapted position: put it there
+  poses_[0].p_F += Vec2(std::cos(poses_[0].theta_rad) * step.v_R_mps.x() -
+                            std::sin(poses_[0].theta_rad) * step.v_R_mps.y(),
+                        std::sin(poses_[0].theta_rad) * step.v_R_mps.x() +
+                            std::cos(poses_[0].theta_rad) * step.v_R_mps.y()) *
+                   kDt;
+  Run(1);
+  holding_[0] = true;
+  Run(1);
+  ASSERT_EQ(last_[0].kind, CommandKind::kKick);
+  busy_[0] = true;
+  Run(5);
+  holding_[0] = false;
+  busy_[0] = false;
+  ball_ = Vec2(2.2, 0.1);
+  Run(1);
+  ASSERT_EQ(team_->PhaseOf(0), CbrPhase::kWaitEnd);
+  EXPECT_EQ(team_->PhaseOf(1), CbrPhase::kExecute);
+  const int waited = static_cast<int>(std::ceil(2.0 * team_params_.wait_end_timeout_s / kDt));
+  Run(waited);
+  EXPECT_EQ(team_->PhaseOf(0), CbrPhase::kWaitEnd);  // still waiting: the case is not over
+  EXPECT_EQ(team_->PhaseOf(1), CbrPhase::kExecute);
+  EXPECT_EQ(SendersOf(CbrMessageKind::kCoordinator).size(), 1u);  // no new cycle began
+  EXPECT_EQ(Counter("cases_completed"), 0.0);
+  poses_[1].p_F = *walk.target_F;  // robot 1 is there: its sequence ends
+  Run(10);
+  EXPECT_EQ(SendersOf(CbrMessageKind::kEnd).size(), 1u);
+  EXPECT_EQ(Counter("cases_completed"), 1.0);
+  EXPECT_EQ(Counter("cases_multi_kick"), 0.0);  // one kick between them
+  EXPECT_EQ(Counter("wait_end_timeouts"), 0.0);
+}
+
 TEST(TeamMessagesTest, CorrespondencePacksAndUnpacks) {
   const CaseRobots robots{1, 0, -1, 3};
   EXPECT_EQ(UnpackRobots(PackRobots(robots)), robots);
