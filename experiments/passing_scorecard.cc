@@ -241,6 +241,7 @@ PassingScorecard BuildPassingScorecard(const PaperTables& paper, const std::stri
   card.has_goalie = setup.config.HasGoalie();
   card.goalie = card.has_goalie ? std::string(GoalieModelName(setup.config.goalie.model)) : "none";
   card.world_check = BuildWorldCheck(paper, card.tables, card.config);
+  card.cbr_play = BuildCbrPlay(cbr);
   AddWorldRows(cbr, card.world);
   AddWorldRows(reactive, card.world);
   return card;

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "experiments/cbr_play.h"
 #include "experiments/paper_tables.h"
 #include "experiments/passing_causes.h"
 #include "experiments/passing_report.h"
@@ -76,6 +77,7 @@ struct PassingScorecard {
   std::vector<ScorecardWorldRow> world;  // per team: its scenarios, then all of them pooled
   std::string goalie;        // the goalie model that played (GoalieModelName), or "none"
   WorldCheck world_check;    // the paper's reactive rows beside ours (experiments/world_check.h)
+  std::vector<CbrPlayRow> cbr_play;  // how the CBR team played (experiments/cbr_play.h)
 };
 
 // `cbr` and `reactive`: the two teams' runs of the same setup and seed (summaries filled).

@@ -294,7 +294,8 @@ Json PassingScorecardJson(const PassingScorecard& card) {
           {"tables", tables},
           {"claims", claims},
           {"world", WorldJson(card)},
-          {"world_check", WorldCheckJson(card.world_check)}};
+          {"world_check", WorldCheckJson(card.world_check)},
+          {"cbr_play", CbrPlayJson(card.cbr_play)}};
 }
 
 std::string PassingScorecardText(const PassingScorecard& card) {
@@ -320,7 +321,7 @@ std::string PassingScorecardText(const PassingScorecard& card) {
   }
   text += "claims (CBR - reactive, paired):\n";
   for (const ClaimTally& c : card.claims) text += ClaimLine(c);
-  return text + WorldCheckText(card.world_check) + WorldText(card);
+  return text + CbrPlayText(card.cbr_play) + WorldCheckText(card.world_check) + WorldText(card);
 }
 
 std::string PassingScorecardHtml(const PassingScorecard& card) {
@@ -329,6 +330,17 @@ std::string PassingScorecardHtml(const PassingScorecard& card) {
   html.KeyValues(Header(card));
   WorldCheckHtml(html, card);
   ClaimsHtml(html, card);
+  if (!card.cbr_play.empty()) {
+    html.Heading(2, "How the CBR team played");
+    html.Paragraph(
+        "From the team's own counters: the robots' time in the default behaviour (idle and "
+        "waiting for a case; the paper calls it not significant, sec. 5.4), the cases whose "
+        "robots kick twice or more between them that were played until every robot finished "
+        "(sec. 4.2; " + Percent(card.confidence) + " Wilson interval), the wait-end safety net "
+        "(a robot that stopped waiting for a teammate still executing), aborts by reason and why "
+        "a retrieval found no case, per trial.");
+    html.Table(CbrPlayColumns(), CbrPlayRows(card.cbr_play));
+  }
   WorldHtml(html, card);
   for (const ScorecardTable& t : card.tables) TableHtml(html, t);
   return html.Finish();

@@ -96,6 +96,22 @@ def backups(card):
                 f"{c['paper']:g} / {c['ours']:.2f}" for c in r["cells"]) + " |")
 
 
+def cbr_play(cards):
+    print("| cfg | scn | default play (robot time) | two-kick cases played to the end | all cases "
+          "played to the end | wait-end safety net | no case per trial |")
+    print("| --- " * 7 + "|")
+    for card in cards:
+        for r in card.get("cbr_play", []):
+            lo, hi = r["multi_kick_completed_share_ci"]
+            print(f"| {card['config'].upper()} | {r['scenario']} | "
+                  f"{100 * r['default_time_share']:.1f} % | {r['cases_multi_kick_completed']} of "
+                  f"{r['cases_multi_kick']}, {100 * r['multi_kick_completed_share']:.1f} % "
+                  f"[{100 * lo:.1f}, {100 * hi:.1f}] | {r['cases_completed']} of "
+                  f"{r['cases_retrieved']} | {r['wait_end_timeouts']} | "
+                  f"{r['no_case'] / r['trials']:.2f} |")
+    print()
+
+
 def ablations(folder):
     run = json.loads((folder / "ablations.json").read_text())
     dg = any(v["scenarios"][0]["block"] > 0 for v in run["variants"])
@@ -132,6 +148,7 @@ def main(folders):
         world_check(card)
     claims(cards)
     print()
+    cbr_play(cards)
     for folder, card in zip(folders, cards):
         outcomes(folder, card)
         print()
