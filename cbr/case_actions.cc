@@ -162,8 +162,12 @@ ActionStep StepActions(const CasePlay& play, int me, ActionProgress& s, const Pe
           const bool near = Near(p.p_F_ball, p.teammates[static_cast<std::size_t>(passer)].p_F,
                                  ctx.team->pass_seen_m);
           if (near) s.passer_had_ball = true;
+          // A receiver that adopted the case late never saw the passer with the ball: the ball
+          // gone from where the case found it (and not at the passer) shows the first pass too.
+          const bool moved = s.receives_done == 0 &&
+                             !Near(p.p_F_ball, play.p_F_ball, ctx.team->pass_seen_m);
           const bool heard = s.passes_heard > s.receives_done;
-          if (!heard && !(s.passer_had_ball && !near)) {
+          if (!heard && !((s.passer_had_ball || moved) && !near)) {
             step.command = TurnTowards(p.pose, face_ball, dt);
             return step;
           }

@@ -18,7 +18,8 @@
 //            s, longer than the 2.7 s the holding rule leaves. The case is given up when the
 //            ball is lost or the opponent stands on its path (path_blocked).
 //   receive: face the ball until the pass is made (the passer's message, or, should the message
-//            be lost, the ball seen pass_seen_m away from the passer after it had it), then get
+//            be lost, the ball seen pass_seen_m away from the passer after it had it, or, for the
+//            first pass, away from both the passer and where the case found it), then get
 //            the ball; done when holding it.
 //   go_to, dribble: walk (with the ball for dribble) to the adapted target; done within
 //            arrive_tolerance_m. A dribble also ends early enough to aim the kick or pass that

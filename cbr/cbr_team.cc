@@ -436,6 +436,11 @@ RobotCommand CbrTeam::WaitEnd(Robot& r, const Perception& p) {
     r.idle_until_s = p.time_s;
     return Default(p);
   }
+  // Its DONE again every belief period while it waits: one lost message must not keep the case
+  // going until the safety net.
+  if (r.me >= 0 && p.time_s - r.last_sent_s >= params.belief_period_s - 1e-9 && r.outbox.empty()) {
+    Send(r, p, CbrMessageKind::kDone);
+  }
   if (p.holding_ball) return Default(p);
   return KeepClose(p, params.keep_close_m, setup_.skills.control_step_s);
 }

@@ -75,6 +75,7 @@
 #include "common/shard.h"
 #include "common/strict_json.h"
 #include "common/worker_threads.h"
+#include "experiments/cbr_play.h"
 #include "experiments/experiment_params.h"
 #include "experiments/match_trial_shard.h"
 #include "experiments/paper_tables.h"

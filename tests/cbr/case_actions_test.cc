@@ -108,6 +108,22 @@ TEST_F(CaseActionsTest, TheReceiverWaitsForThePassHeardOrSeen) {
   EXPECT_EQ(StepActions(play_, 1, unheard, p, ctx_).command.kind, CommandKind::kGetBall);
 }
 
+// A receiver that adopted the case only after the pass left (its messages lost) never saw the
+// passer with the ball: the ball gone from both the passer and where the case found it starts
+// its receive; still at the case's ball, it waits.
+TEST_F(CaseActionsTest, AReceiverThatCameLateSeesThePassFromWhereTheBallWent) {
+  Perception p;
+  p.time_s = 1.0;
+  p.self = 1;
+  p.pose = Pose2(Vec2(0.0, 1.0), -0.5 * kPi);
+  p.teammates = {Pose2(Vec2(-0.6, 0.0), 0.0), p.pose};  // the passer walked off after its kick
+  p.p_F_ball = Vec2(0.05, 0.0);  // still at the case's ball
+  ActionProgress late;
+  EXPECT_EQ(StepActions(play_, 1, late, p, ctx_).command.kind, CommandKind::kWalk);  // waits
+  p.p_F_ball = Vec2(0.0, 0.5);  // on its way to the receiver
+  EXPECT_EQ(StepActions(play_, 1, late, p, ctx_).command.kind, CommandKind::kGetBall);
+}
+
 // A dribble ends once the holding time left is what turning the ball to the next kick's aim
 // takes (at dribble_turn_radps) plus a control step, so the kick is aimed, not forced.
 TEST_F(CaseActionsTest, ADribbleEndsInTimeToAimTheKickAfterIt) {
