@@ -103,6 +103,43 @@ class CbrTeamTest : public ::testing::Test {
     return senders;
   }
 
+  // The team plays a case base of the one case `c`.
+  void PlayOnly(const Case& c) {
+    one_.emplace(std::vector<Case>{c}, base_.kick_mirrors);
+    MakeTeam();
+    setup_.cases = &*one_;
+    team_.emplace(setup_, fallback_, 2);
+  }
+
+  // Puts robot `robot` where its last walk command takes it (a step's command reaches its
+  // target in one step).
+  void MoveAlongLastWalk(int robot) {
+    Pose2& pose = poses_[static_cast<std::size_t>(robot)];
+    const RobotCommand& walk = last_[static_cast<std::size_t>(robot)];
+    pose.p_F += Vec2(std::cos(pose.theta_rad) * walk.v_R_mps.x() -
+                         std::sin(pose.theta_rad) * walk.v_R_mps.y(),
+                     std::sin(pose.theta_rad) * walk.v_R_mps.x() +
+                         std::cos(pose.theta_rad) * walk.v_R_mps.y()) *
+                kDt;
+  }
+
+  // Robot 0, at its adapted position, grabs the ball and kicks it at the goal (facing it within
+  // the aim tolerance); the ball ends at `after`.
+  void GrabAndKick(const Vec2& after) {
+    Run(1);
+    EXPECT_EQ(team_->PhaseOf(0), CbrPhase::kExecute);
+    EXPECT_EQ(last_[0].kind, CommandKind::kGetBall);
+    holding_[0] = true;
+    Run(1);
+    EXPECT_EQ(last_[0].kind, CommandKind::kKick);  // facing the goal within the aim tolerance
+    busy_[0] = true;
+    Run(5);
+    holding_[0] = false;
+    busy_[0] = false;
+    ball_ = after;
+    Run(1);
+  }
+
   double Counter(const std::string& name) const {
     for (const TeamPolicy::Counter& c : team_->Counters()) {
       if (c.name == name) return c.value;
@@ -116,6 +153,7 @@ class CbrTeamTest : public ::testing::Test {
   RetrievalParams retrieval_;
   CbrTeamSetup setup_;
   StandStill fallback_;
+  std::optional<CaseBase> one_;
   std::optional<CbrTeam> team_;
   std::vector<Pose2> poses_;
   Vec2 ball_{1.3, 0.2};
@@ -352,34 +390,14 @@ TEST_F(CbrTeamTest, AnIndividualCaseRunsThroughEveryState) {
   kick.kick = "forward";
   kick.at_goal = true;
   c.teammates = {{1, Vec2(1.0, 0.2), {get, kick}}};
-  const CaseBase one({c}, base_.kick_mirrors);
-  MakeTeam();
-  setup_.cases = &one;
-  team_.emplace(setup_, fallback_, 2);
+  PlayOnly(c);
   Run(4);
   ASSERT_EQ(Counter("cases_individual"), 1.0);
   ASSERT_EQ(team_->PhaseOf(0), CbrPhase::kAdapt);
   EXPECT_EQ(team_->PhaseOf(1), CbrPhase::kWaitEnd);  // not in the case
   EXPECT_EQ(last_[0].kind, CommandKind::kWalk);       // walking to its adapted position
-  // Put it where it walks to (a step's command reaches its target in one step).
-  const RobotCommand walk = last_[0];
-  poses_[0].p_F += Vec2(std::cos(poses_[0].theta_rad) * walk.v_R_mps.x() -
-                            std::sin(poses_[0].theta_rad) * walk.v_R_mps.y(),
-                        std::sin(poses_[0].theta_rad) * walk.v_R_mps.x() +
-                            std::cos(poses_[0].theta_rad) * walk.v_R_mps.y()) *
-                   kDt;
-  Run(1);
-  EXPECT_EQ(team_->PhaseOf(0), CbrPhase::kExecute);
-  EXPECT_EQ(last_[0].kind, CommandKind::kGetBall);
-  holding_[0] = true;
-  Run(1);
-  EXPECT_EQ(last_[0].kind, CommandKind::kKick);  // facing the goal within the aim tolerance
-  busy_[0] = true;
-  Run(5);
-  holding_[0] = false;
-  busy_[0] = false;
-  ball_ = Vec2(2.2, 0.1);
-  Run(1);
+  MoveAlongLastWalk(0);
+  GrabAndKick(Vec2(2.2, 0.1));
   EXPECT_EQ(team_->PhaseOf(0), CbrPhase::kIdle);  // done, and the coordinator ended the cycle
   EXPECT_EQ(SendersOf(CbrMessageKind::kDone), std::vector<int>{0});
   Run(10);
@@ -411,28 +429,11 @@ TEST_F(CbrTeamTest, ARobotThatFinishedWaitsForItsTeammateToFinish) {
   walk.type = ActionType::kGoTo;
   walk.target_F = Vec2(-1.0, -1.0);
   c.teammates = {{1, Vec2(1.0, 0.2), {get, kick}}, {2, poses_[1].p_F, {walk}}};
-  const CaseBase one({c}, base_.kick_mirrors);
-  MakeTeam();
-  setup_.cases = &one;
-  team_.emplace(setup_, fallback_, 2);
+  PlayOnly(c);
   Run(4);
   ASSERT_EQ(Counter("cases_cooperative"), 1.0);
-  const RobotCommand step = last_[0];  // robot 0 walks to its adapted position: put it there
-  poses_[0].p_F += Vec2(std::cos(poses_[0].theta_rad) * step.v_R_mps.x() -
-                            std::sin(poses_[0].theta_rad) * step.v_R_mps.y(),
-                        std::sin(poses_[0].theta_rad) * step.v_R_mps.x() +
-                            std::cos(poses_[0].theta_rad) * step.v_R_mps.y()) *
-                   kDt;
-  Run(1);
-  holding_[0] = true;
-  Run(1);
-  ASSERT_EQ(last_[0].kind, CommandKind::kKick);
-  busy_[0] = true;
-  Run(5);
-  holding_[0] = false;
-  busy_[0] = false;
-  ball_ = Vec2(2.2, 0.1);
-  Run(1);
+  MoveAlongLastWalk(0);
+  GrabAndKick(Vec2(2.2, 0.1));
   ASSERT_EQ(team_->PhaseOf(0), CbrPhase::kWaitEnd);
   EXPECT_EQ(team_->PhaseOf(1), CbrPhase::kExecute);
   const int waited = static_cast<int>(std::ceil(2.0 * team_params_.wait_end_timeout_s / kDt));
