@@ -43,8 +43,9 @@ double Time(const ShardValue& value, const TrialShape& shape) {
   return t;
 }
 
-Vec2 Point(const ShardValue& x, const ShardValue& y) {
-  return {x.Finite(), y.Finite()};
+Vec2 Point(const ShardValue& x, const ShardValue& y, const TrialShape& shape) {
+  return {x.InRange(-shape.max_abs_x_m, shape.max_abs_x_m),
+          y.InRange(-shape.max_abs_y_m, shape.max_abs_y_m)};
 }
 
 nlohmann::json IntsJson(const std::vector<int>& values) {
@@ -131,7 +132,7 @@ MatchEvent ReadEvent(const ShardValue& v, const TrialShape& shape) {
   const int side = EnumNumber(v.At(2), kLastSide);
   e.side = static_cast<Side>(side);
   e.robot = RobotIndex(v.At(3), SideSize(shape, side));
-  e.p_F_ball = Point(v.At(4), v.At(5));
+  e.p_F_ball = Point(v.At(4), v.At(5), shape);
   e.detail = v.At(6).String();
   return e;
 }
@@ -148,7 +149,7 @@ TraceFrame ReadFrame(const ShardValue& v, const TrialShape& shape) {
   if (v.Size() != 4) v.Fail("must be [time_s, ball x, ball y, robots]");
   TraceFrame f;
   f.time_s = Time(v.At(0), shape);
-  f.p_F_ball = Point(v.At(1), v.At(2));
+  f.p_F_ball = Point(v.At(1), v.At(2), shape);
   const ShardValue robots = v.At(3);
   const std::size_t expected = static_cast<std::size_t>(shape.attackers + shape.opponents);
   if (robots.Size() != expected) {
@@ -158,7 +159,7 @@ TraceFrame ReadFrame(const ShardValue& v, const TrialShape& shape) {
   for (std::size_t i = 0; i < robots.Size(); ++i) {
     const ShardValue r = robots.At(i);
     if (r.Size() != 3) r.Fail("must be [x, y, theta]");
-    f.robots.push_back({Point(r.At(0), r.At(1)), r.At(2).Finite()});
+    f.robots.push_back({Point(r.At(0), r.At(1), shape), r.At(2).Finite()});
   }
   return f;
 }

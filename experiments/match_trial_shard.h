@@ -17,7 +17,7 @@
 // Reading checks every value against what a played trial guarantees (TrialShape): a trace frame
 // holds every robot of the scenario, counters are never negative and have one entry per robot of
 // their side, a robot index names a robot of its side, times lie within the time limit, positions
-// are finite. So a tampered or truncated shard is refused with its place instead of reaching the
+// lie within the shape's bounds. So a tampered or truncated shard is refused with its place instead of reaching the
 // reports (which index robots by the trace's first frame).
 #pragma once
 
@@ -29,11 +29,15 @@
 namespace foresight {
 
 // What every trial of one scenario has: its robots of each side (the trace lists the attackers
-// first) and the last time it may reach (the time limit plus one control step).
+// first), the last time it may reach (the time limit plus one control step) and how far from the
+// field's centre a ball or robot may be (|x| and |y| at most these: robots stay on the carpet,
+// and the referee ends a trial within a control step of the ball leaving the field).
 struct TrialShape {
   int attackers = 0;
   int opponents = 0;
   double max_time_s = 0.0;
+  double max_abs_x_m = 0.0;
+  double max_abs_y_m = 0.0;
 };
 
 nlohmann::json TrialShardJson(const MatchTrialResult& trial);

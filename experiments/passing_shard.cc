@@ -22,10 +22,16 @@ TrialPlace PlaceOf(const PassingSetup& setup, int item) {
 }
 
 // What every trial of the scenario numbered `scenario` (1-based) has.
+// A bound for a damaged file, not a figure of the world: a ball leaves the field by at most one
+// control step's roll before the referee ends the trial, far less than a metre past the carpet.
+constexpr double kBeyondCarpetM = 1.0;
+
 TrialShape ShapeOf(const PassingSetup& setup, int scenario) {
   const Scenario& s = setup.config.scenarios.at(static_cast<std::size_t>(scenario - 1));
   return {static_cast<int>(s.attackers.size()), static_cast<int>(s.opponents.size()),
-          setup.config.time_limit_s + setup.sim.control_step_s};
+          setup.config.time_limit_s + setup.sim.control_step_s,
+          setup.field.CarpetHalfLength() + kBeyondCarpetM,
+          setup.field.CarpetHalfWidth() + kBeyondCarpetM};
 }
 
 }  // namespace

@@ -33,7 +33,8 @@ PassingSetup LoadSetup(const std::string& team, int trials, std::vector<int> sce
 TrialShape ShapeOf(const PassingSetup& setup) {
   const Scenario& s = setup.config.scenarios.front();
   return {static_cast<int>(s.attackers.size()), static_cast<int>(s.opponents.size()),
-          setup.config.time_limit_s + setup.sim.control_step_s};
+          setup.config.time_limit_s + setup.sim.control_step_s,
+          setup.field.CarpetHalfLength(), setup.field.CarpetHalfWidth()};
 }
 
 std::uint64_t Bits(double value) {
@@ -140,7 +141,7 @@ TEST(PassingShardTest, ATrialReadBackIsTheSameTrialBitForBit) {
   odd.events.push_back({0.1, EventKind::kKick, Side::kOpponents, 1, {-0.0, 2.5}, "a \"b\"\n"});
   odd.trace.push_back({0.2, {1.0, 2.0}, {{{0.1, 0.2}, -3.1}, {}, {}, {{-0.0, 5e-324}, 0.0}}});
   const nlohmann::json text = nlohmann::json::parse(TrialShardJson(odd).dump());
-  MatchTrialResult back = ReadShardTrial(ShardValue(text, "f", "t"), {2, 2, 60.0});
+  MatchTrialResult back = ReadShardTrial(ShardValue(text, "f", "t"), {2, 2, 60.0, 4.0, 3.1});
   EXPECT_TRUE(std::isnan(back.attacker_counters[0].value));
   odd.attacker_counters[0].value = back.attacker_counters[0].value = 0.0;
   ExpectSameTrial(back, odd);
@@ -149,7 +150,7 @@ TEST(PassingShardTest, ATrialReadBackIsTheSameTrialBitForBit) {
 // What reading `j` as the shard trial at `place` says: its error, or "(no error)".
 std::string ShardTrialError(const nlohmann::json& j, const std::string& place) {
   try {
-    ReadShardTrial(ShardValue(j, "s/shard.json", place), {2, 2, 60.5});
+    ReadShardTrial(ShardValue(j, "s/shard.json", place), {2, 2, 60.5, 4.0, 3.1});
   } catch (const InputError& e) {
     return std::string(e.what());
   }
@@ -191,6 +192,15 @@ TEST(PassingShardTest, AMalformedTrialIsRefusedWithItsPlace) {
   j["counters"]["time_s"] = "soon";
   EXPECT_EQ(error(j.dump()),
             "s/shard.json: results[4].result.counters.time_s: must be a number, got \"soon\"");
+  // A trace coordinate of 1e308 made `foresight merge` fail on "JSON cannot hold inf" (exit 3).
+  j = good;
+  j["trace"][1][1] = 1e308;
+  EXPECT_EQ(error(j.dump()),
+            "s/shard.json: results[4].result.trace[1][1]: must be in [-4, 4], got 1e+308");
+  j = good;
+  j["events"][0][5] = -3.2;
+  EXPECT_EQ(error(j.dump()),
+            "s/shard.json: results[4].result.events[0][5]: must be in [-3.1, 3.1], got -3.2");
 }
 
 TEST(PassingShardTest, ATrialUnlikeAnyPlayedTrialIsRefusedWithItsPlace) {
@@ -229,7 +239,7 @@ TEST(PassingShardTest, ATrialUnlikeAnyPlayedTrialIsRefusedWithItsPlace) {
       {[](nlohmann::json& j) { j["events"][0][3] = 2; },
        "r.events[0][3]: must be a robot of its side, 0 .. 1, got 2"},
       {[](nlohmann::json& j) { j["events"][0][4] = "inf"; },
-       "r.events[0][4]: must be a finite number, got \"inf\""},
+       "r.events[0][4]: must be in [-4, 4], got \"inf\""},
       {[](nlohmann::json& j) { j["trace"][1][0] = -1.0; },
        "r.trace[1][0]: must be a time from 0 to the trial's limit 60.5 s"},
       {[](nlohmann::json& j) { j["trace"][1][3][2][2] = "-inf"; },
