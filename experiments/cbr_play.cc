@@ -10,27 +10,25 @@ namespace foresight {
 
 namespace {
 
+const MeanStat* Find(const ScenarioSummary& s, const std::string& name) {
+  for (const auto& [counter, stat] : s.team_counters) {
+    if (counter == name) return &stat;
+  }
+  return nullptr;
+}
+
 // A counter's total over the scenario's trials (the summary keeps its mean per trial).
 int Total(const ScenarioSummary& s, const std::string& name) {
-  for (const auto& [counter, stat] : s.team_counters) {
-    if (counter == name) return static_cast<int>(std::lround(stat.mean * stat.n));
-  }
-  return 0;
+  const MeanStat* m = Find(s, name);
+  return m ? static_cast<int>(std::lround(m->mean * m->n)) : 0;
 }
 
 double Mean(const ScenarioSummary& s, const std::string& name) {
-  for (const auto& [counter, stat] : s.team_counters) {
-    if (counter == name) return stat.mean;
-  }
-  return 0.0;
+  const MeanStat* m = Find(s, name);
+  return m ? m->mean : 0.0;
 }
 
-bool HasCbrCounters(const ScenarioSummary& s) {
-  for (const auto& [counter, stat] : s.team_counters) {
-    if (counter == "cases_multi_kick") return true;
-  }
-  return false;
-}
+bool HasCbrCounters(const ScenarioSummary& s) { return Find(s, "cases_multi_kick") != nullptr; }
 
 std::string PhaseCounter(CbrPhase phase) {
   return "robot_time_" + std::string(CbrPhaseName(phase)) + "_s";
