@@ -81,6 +81,7 @@ DefendingGoal CbrTeam::DefendingOf(const Perception& p) {
 RobotCommand CbrTeam::Decide(const Perception& p) {
   Robot& r = robots_[At(p.self)];
   defending_ = DefendingOf(p);
+  if (!p.busy) r.in_kick = false;
   Account(r, p);
   Hear(r, p);
   RobotCommand command = Act(r, p);
@@ -93,15 +94,22 @@ RobotCommand CbrTeam::Decide(const Perception& p) {
     command.kind = CommandKind::kKick;
     command.kick_index = ctx.release_kick;
   }
+  // A kick that starts is told at once: a teammate must not retrieve for the ball it launches.
+  const bool kick_starts = p.holding_ball && !p.busy && command.kind == CommandKind::kKick;
+  if (kick_starts) r.in_kick = true;
   if (!r.outbox.empty()) {
     command.message = r.outbox.front();
     r.outbox.pop_front();
     r.last_sent_s = p.time_s;
   } else if (!command.message &&
-             p.time_s - r.last_sent_s >= setup_.skills.team->belief_period_s - 1e-9) {
+             (kick_starts ||
+              p.time_s - r.last_sent_s >= setup_.skills.team->belief_period_s - 1e-9)) {
     command.message = MakeCbrMessage(CbrMessageKind::kBelief, r.cycle, p.p_F_ball,
                                      (p.p_F_ball - p.pose.p_F).norm());
     r.last_sent_s = p.time_s;
+  }
+  if (command.message && IsCbrMessage(*command.message)) {
+    command.message->words[kKickingWord] = r.in_kick ? 1 : 0;
   }
   return command;
 }
@@ -121,12 +129,15 @@ void CbrTeam::Hear(Robot& r, const Perception& p) {
   for (const TeamMessage& m : p.inbox) {
     if (m.sender < 0 || m.sender >= static_cast<int>(r.team.size())) continue;
     r.heard_s[At(m.sender)] = m.sent_time_s;
-    if (IsCbrMessage(m)) r.team[At(m.sender)].ball_distance_m = m.value;
+    if (IsCbrMessage(m)) {
+      r.team[At(m.sender)].ball_distance_m = m.value;
+      r.team[At(m.sender)].kicking = m.words[kKickingWord] != 0;
+    }
   }
   for (std::size_t i = 0; i < r.team.size(); ++i) {
     r.team[i].present = p.time_s - r.heard_s[i] <= params.presence_timeout_s;
   }
-  r.team[At(p.self)] = {true, (p.p_F_ball - p.pose.p_F).norm()};
+  r.team[At(p.self)] = {true, (p.p_F_ball - p.pose.p_F).norm(), r.in_kick};
   for (const TeamMessage& m : p.inbox) {
     if (IsCbrMessage(m)) HearProtocol(r, p, m);
   }
@@ -227,6 +238,9 @@ bool CbrTeam::MayStartCycle(const Robot& r, const Perception& p) const {
   const CbrTeamParams& params = *setup_.skills.team;
   if (r.timed_out) return false;
   if (OpponentHasBall(p, setup_.skills)) return false;
+  for (const TeammateBelief& mate : r.team) {
+    if (mate.present && mate.kicking) return false;  // the ball is about to leave
+  }
   if (!params.ball_race) return true;
   return r.ball_speed_mps < params.race.speed_mps &&
          RunBallRace(PerceivedProblem(r, p), params.race).won;
@@ -346,8 +360,9 @@ RobotCommand CbrTeam::Act(Robot& r, const Perception& p) {
   }
   switch (r.phase) {
     case CbrPhase::kIdle:
-    case CbrPhase::kAwaitCase:
       return Default(p);
+    case CbrPhase::kAwaitCase:
+      return AwaitCase(p);
     case CbrPhase::kAdapt:
       return Adapt(r, p);
     case CbrPhase::kExecute:
@@ -356,6 +371,19 @@ RobotCommand CbrTeam::Act(Robot& r, const Perception& p) {
       return WaitEnd(r, p);
   }
   return Default(p);
+}
+
+RobotCommand CbrTeam::AwaitCase(const Perception& p) {
+  // The coordinator retrieves for the ball where it is: a robot holding it keeps it until the
+  // case comes (at most await_case_timeout_s, within the holding rule) instead of kicking it
+  // away in the default behaviour.
+  RobotCommand command = Default(p);
+  if (p.holding_ball && command.kind == CommandKind::kKick) {
+    RobotCommand hold;  // stand: kStand
+    hold.message = command.message;
+    return hold;
+  }
+  return command;
 }
 
 RobotCommand CbrTeam::Adapt(Robot& r, const Perception& p) {

@@ -108,6 +108,7 @@ class CbrTeam final : public TeamPolicy {
     double all_done_s = -1.0;  // when this robot first knew every robot of the case done
     bool was_holding = false;
     double holding_since_s = 0.0;
+    bool in_kick = false;  // its kick motion runs (from the kick command until it is free)
     bool executing_started = false;
     Vec2 last_ball_F{0.0, 0.0};  // the ball a step ago, for its speed
     double last_ball_time_s = -1.0;
@@ -127,6 +128,7 @@ class CbrTeam final : public TeamPolicy {
              const Vec2& p_F_ball);
   void Abort(Robot& r, const Perception& p, AbortReason reason);
   RobotCommand Act(Robot& r, const Perception& p);
+  RobotCommand AwaitCase(const Perception& p);
   RobotCommand Adapt(Robot& r, const Perception& p);
   RobotCommand Execute(Robot& r, const Perception& p);
   RobotCommand WaitEnd(Robot& r, const Perception& p);

@@ -18,6 +18,9 @@ namespace foresight {
 struct TeammateBelief {
   bool present = false;
   double ball_distance_m = 0.0;
+  // In a kick motion: the ball at its front is about to leave (or has just left), so the
+  // situation a retrieval would see now is not the one the case would be played in.
+  bool kicking = false;
 };
 
 // The lowest present index (the robot itself counts as present), or -1 if none is.

@@ -2,7 +2,9 @@
 // the retrieved case and its correspondence, their state, the end of a case and aborts) on the
 // match's TeamMessage (models/team_policy.h). Every message also carries its sender's beliefs:
 // p_F is where it sees the ball and value its distance to it, so the robot that chooses the
-// coordinator knows who is closest to the ball without a message of its own for that.
+// coordinator knows who is closest to the ball without a message of its own for that, and
+// words[kKickingWord] is 1 while the sender is in a kick motion, so that no cycle starts for a
+// ball that is about to leave.
 //
 // words[0] is the cycle: a cycle is one retrieval and its reuse. The robot that chooses the
 // coordinator numbers it; a robot acts only on messages of its own or a newer cycle, so a late
@@ -24,6 +26,7 @@
 namespace foresight {
 
 inline constexpr int kCbrKindBase = 100;
+inline constexpr int kKickingWord = 3;  // the sender is in a kick motion (1) or not (0)
 
 enum class CbrMessageKind {
   kBelief = kCbrKindBase,  // beliefs only

@@ -20,14 +20,18 @@ namespace {
 
 constexpr double kDt = 0.04;
 
-// The default behaviour: stands still and counts how often it played.
+// The default behaviour: stands still (or, with `kick`, kicks a ball it holds) and counts how
+// often it played.
 class StandStill final : public TeamPolicy {
  public:
-  RobotCommand Decide(const Perception&) override {
+  RobotCommand Decide(const Perception& p) override {
     ++calls;
-    return {};
+    RobotCommand c;
+    if (kick && p.holding_ball) c.kind = CommandKind::kKick;
+    return c;
   }
   int calls = 0;
+  bool kick = false;
 };
 
 struct Sent {
@@ -303,6 +307,48 @@ TEST_F(CbrTeamTest, NoCycleStartsWhileAnOpponentWinsTheRaceOrTheBallRolls) {
   EXPECT_TRUE(SendersOf(CbrMessageKind::kCoordinator).empty());
   Run(3);  // the ball rests
   EXPECT_EQ(SendersOf(CbrMessageKind::kCoordinator), std::vector<int>{0});
+}
+
+TEST_F(CbrTeamTest, NoCycleStartsWhileATeammateKicksTheBallAway) {
+  // Robot 1 holds the ball and kicks it in the default behaviour before any cycle: it tells at
+  // once, so the selector (robot 0) does not retrieve for a ball that is about to leave.
+  team_params_.ball_race = false;
+  poses_[1] = Pose2(ball_ - Vec2(0.16, 0.0), 0.0);
+  holding_[1] = true;
+  fallback_.kick = true;
+  MakeTeam();
+  Run(1, {1});
+  ASSERT_EQ(last_[1].kind, CommandKind::kKick);
+  ASSERT_TRUE(last_[1].message);
+  EXPECT_EQ(last_[1].message->words[kKickingWord], 1);
+  holding_[1] = false;
+  busy_[1] = true;
+  Run(10);  // the kick motion, 0.4 s
+  EXPECT_TRUE(SendersOf(CbrMessageKind::kCoordinator).empty());
+  busy_[1] = false;
+  ball_ += Vec2(1.0, 0.0);
+  Run(10);  // free again: its next report says so, and a cycle starts
+  EXPECT_EQ(SendersOf(CbrMessageKind::kCoordinator), std::vector<int>{0});
+}
+
+TEST_F(CbrTeamTest, ARobotAwaitingTheCaseKeepsTheBallItHolds) {
+  // One retriever (robot 0) retrieves; robot 1 holds the ball and waits for the case, which is
+  // lost: it keeps the ball rather than kick it away in the default behaviour, until the wait
+  // times out.
+  team_params_.ball_race = false;
+  team_params_.retrievers = 1;
+  poses_[1] = Pose2(ball_ - Vec2(0.16, 0.0), 0.0);
+  holding_[1] = true;
+  drop = [](const TeamMessage& m) { return m.kind == static_cast<int>(CbrMessageKind::kCase); };
+  MakeTeam();
+  for (int k = 0; k < 10 && team_->PhaseOf(1) != CbrPhase::kAwaitCase; ++k) Run(1);
+  ASSERT_EQ(team_->PhaseOf(1), CbrPhase::kAwaitCase);
+  fallback_.kick = true;
+  Run(1);
+  EXPECT_EQ(team_->PhaseOf(1), CbrPhase::kAwaitCase);
+  EXPECT_EQ(last_[1].kind, CommandKind::kStand);
+  Run(static_cast<int>(team_params_.await_case_timeout_s / kDt) + 1);
+  EXPECT_EQ(last_[1].kind, CommandKind::kKick);  // no case came: the default behaviour plays
 }
 
 TEST_F(CbrTeamTest, TheRaceWithoutTheRobotsSpeedIsRefused) {
