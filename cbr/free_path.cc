@@ -57,9 +57,9 @@ FuzzyTrajectory MakeTrajectory(const Vec2& start_F, const Vec2& end_F, const Kic
 FuzzyTrajectory MakeKickTrajectory(const Vec2& start_F, const Vec2& target_F,
                                    const KickTrajectory& kick, const RetrievalParams& params) {
   FuzzyTrajectory t = MakeTrajectory(start_F, target_F, kick, params);
-  if (kick.reach_m > t.length_m && t.length_m > 0.0) {
+  if (kick.roll_m > t.length_m && t.length_m > 0.0) {
     t.knee_m = t.length_m;
-    t.length_m = kick.reach_m;
+    t.length_m = kick.roll_m;
     t.end_F = start_F + t.u * t.length_m;
   }
   return t;

@@ -28,9 +28,12 @@
 //          receiver after its receive action;
 //   kick:  at goal: to the centre of the attacked goal (AttackSign(defending) * goal_x_m, 0);
 //          to a target: to the target adapted like a position (target - B^c + B^p); a kick into
-//          the field (not a shot, cbr/case.h IsShot) whose reach (reach_m > 0) lies beyond its
-//          target runs on to that reach past a knee at the target (MakeKickTrajectory): a kick
-//          of fixed strength rolls as far as it rolls, whatever the target (the walk goes on from
+//          the field (not a shot, cbr/case.h IsShot) whose mean roll (roll_m > 0) lies beyond
+//          its target runs on to it past a knee at the target (MakeKickTrajectory): a kick
+//          of fixed strength rolls as far as it rolls, whatever the target; the mean roll is
+//          where the ball is expected to stop, as the paper's trajectory is the ball's expected
+//          path (running it on to the reach at 2 sd put a goalie 3.7 m away on a 2 m kick up
+//          the wing, which then never played where it was written for) (the walk goes on from
 //          the target, where the case plans the ball; the robot aims at the target). Decision:
 //          targets are part of the case's pattern around the ball, so they move with it exactly as
 //          the teammates do (Fig. 5); a fixed field point would turn a pass-to-space into a kick
@@ -79,7 +82,7 @@ double TrajectoryMembership(const FuzzyTrajectory& t, const Vec2& p_F);
 // A trajectory from start to end (cut to reach_m when > 0) with widths of `kick` per `params`.
 FuzzyTrajectory MakeTrajectory(const Vec2& start_F, const Vec2& end_F, const KickTrajectory& kick,
                                const RetrievalParams& params);
-// A kick into the field, aimed at target_F: MakeTrajectory's, and when the kick's reach lies
+// A kick into the field, aimed at target_F: MakeTrajectory's, and when the kick's mean roll lies
 // beyond the target, run on to it with the knee at the target (the widths of the planned part
 // stay those of a trajectory to the target; past it rho stays r_end_m).
 FuzzyTrajectory MakeKickTrajectory(const Vec2& start_F, const Vec2& target_F,

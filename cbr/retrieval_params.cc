@@ -143,8 +143,10 @@ void UseKickModelWidths(const KickModel& model, RetrievalParams* params) {
 void UseKickModelReach(const KickModel& model, RetrievalParams* params) {
   if (!params->reach_sigmas) return;
   for (const KickSpec& spec : model.kicks) {
-    EntryFor(spec.name, params).reach_m =
+    KickTrajectory& entry = EntryFor(spec.name, params);
+    entry.reach_m =
         RollDistanceAtSigmas(spec, model.rolling_deceleration_mps2, *params->reach_sigmas);
+    entry.roll_m = RollDistanceAtSigmas(spec, model.rolling_deceleration_mps2, 0.0);
   }
 }
 

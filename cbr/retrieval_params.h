@@ -55,6 +55,7 @@ struct KickTrajectory {
   double r_max_m = 0.3;  // ... at the end
   double reach_m = 0.0;  // > 0: the trajectory ends after at most this length; 0: at its target
   double sigma_direction_rad = 0.0;  // > 0 with kKickModel: widths from the kick model
+  double roll_m = 0.0;  // > 0: the kick's mean roll, where a kick into the field stops on average
 };
 
 struct RetrievalParams {
@@ -97,8 +98,9 @@ struct RetrievalParams {
 void UseKickModelWidths(const KickModel& model, RetrievalParams* params);
 
 // With params->reach_sigmas: sets every kick's reach_m to the roll of `model`'s kick at
-// reach_sigmas sd of its launch speed (adding entries with the default widths for kicks that have
-// none), so a case's ball path ends where its kicks end. Without: nothing changes.
+// reach_sigmas sd of its launch speed and roll_m to its mean roll (adding entries with the
+// default widths for kicks that have none), so a case's ball path ends where its kicks end.
+// Without: nothing changes.
 void UseKickModelReach(const KickModel& model, RetrievalParams* params);
 
 // Reads `file`; the goal line, the opponents' and the ball's radii come from `field` (the field

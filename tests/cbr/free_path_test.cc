@@ -135,19 +135,19 @@ TEST(FreePathTest, ReachCutsATrajectoryAndTheNextStartsWhereItEnds) {
   again.target_F = Vec2(2.0, 1.0);
   c.teammates.push_back({1, {-0.2, 0.0}, {Act(ActionType::kGetBall), kick, again}});
   RetrievalParams params;
-  params.kicks.push_back({"forward", 0.1, 0.3, 1.5, 0.0});
+  params.kicks.push_back({"forward", 0.1, 0.3, 1.5, 0.0, 1.3});  // reach 1.5 m, mean roll 1.3 m
   const std::vector<Vec2> adapted{Vec2(-0.2, 0.0)};
   const CaseBallPath path = BuildBallPath(p, c, adapted, params);
   ASSERT_EQ(path.count, 2);
   EXPECT_NEAR(path.trajectories[0].length_m, 1.5, 1e-12);
   EXPECT_TRUE(path.trajectories[1].start_F.isApprox(Vec2(1.5, 0.0)));
-  // 1.12 m to the target, within reach: the kick rolls on, its corridor runs to the reach.
-  EXPECT_NEAR(path.trajectories[1].length_m, 1.5, 1e-12);
+  // 1.12 m to the target, within reach: the kick rolls on, its corridor runs to its mean roll.
+  EXPECT_NEAR(path.trajectories[1].length_m, 1.3, 1e-12);
   EXPECT_TRUE(path.trajectories[1].end_F.isApprox(Vec2(1.5, 0.0) +
-                                                  1.5 / std::sqrt(1.25) * Vec2(0.5, 1.0)));
+                                                  1.3 / std::sqrt(1.25) * Vec2(0.5, 1.0)));
 }
 
-TEST(FreePathTest, AKickShortOfItsReachRunsOnAndTheGameplayGoesOnFromItsTarget) {
+TEST(FreePathTest, AKickShortOfItsMeanRollRunsOnToItAndTheGameplayGoesOnFromItsTarget) {
   Problem p;
   p.p_F_ball = Vec2(0.0, 0.0);
   Case c;
@@ -158,12 +158,15 @@ TEST(FreePathTest, AKickShortOfItsReachRunsOnAndTheGameplayGoesOnFromItsTarget) 
   shoot.at_goal = true;
   c.teammates.push_back({1, {-0.2, 0.0}, {Act(ActionType::kGetBall), kick, shoot}});
   RetrievalParams params;
-  params.kicks.push_back({"forward", 0.1, 0.3, 2.5, 0.0});
+  params.kicks.push_back({"forward", 0.1, 0.3, 3.0, 0.0, 2.5});  // reach 3 m, mean roll 2.5 m
   const std::vector<Vec2> adapted{Vec2(-0.2, 0.0)};
   const CaseBallPath path = BuildBallPath(p, c, adapted, params);
   ASSERT_EQ(path.count, 2);
   const FuzzyTrajectory& t = path.trajectories[0];
+  // The corridor ends where the ball stops on average, not at the reach of a launch 2 sd strong:
+  // an opponent 2.8 m out, beyond the mean roll, does not block the kick.
   EXPECT_TRUE(t.end_F.isApprox(Vec2(2.5, 0.0)));
+  EXPECT_TRUE(CheckFreePath(path, std::vector<Vec2>{Vec2(2.8, 0.0)}, params.thr_trajectory).free);
   EXPECT_TRUE(t.aim_F.isApprox(Vec2(1.0, 0.0)));  // the robot aims at the target
   EXPECT_NEAR(t.knee_m, 1.0, 1e-12);
   // An opponent 2 m out, past the target but inside the kick's roll, blocks it; the width there
@@ -190,14 +193,14 @@ TEST(FreePathTest, AShotAtAGoalLineTargetIsNotRunOn) {
   kick.target_F = Vec2(2.7, 0.0);  // on the goal line (goal_x_m 2.7): a shot
   c.teammates.push_back({1, {-0.2, 0.0}, {Act(ActionType::kGetBall), kick}});
   RetrievalParams params;
-  params.kicks.push_back({"forward", 0.1, 0.3, 4.0, 0.0});
+  params.kicks.push_back({"forward", 0.1, 0.3, 4.0, 0.0, 3.0});  // reach 4 m, mean roll 3 m
   const std::vector<Vec2> adapted{Vec2(-0.2, 0.0)};
   const FuzzyTrajectory t = BuildBallPath(p, c, adapted, params).trajectories[0];
   EXPECT_NEAR(t.length_m, 2.7, 1e-12);
   EXPECT_EQ(t.knee_m, 0.0);
-  // The same kick at a target 0.1 m short of the line runs on to its 4 m reach.
+  // The same kick at a target 0.1 m short of the line runs on to its 3 m mean roll.
   c.teammates[0].actions[1].target_F = Vec2(2.6, 0.0);
-  EXPECT_NEAR(BuildBallPath(p, c, adapted, params).trajectories[0].length_m, 4.0, 1e-12);
+  EXPECT_NEAR(BuildBallPath(p, c, adapted, params).trajectories[0].length_m, 3.0, 1e-12);
 }
 
 }  // namespace

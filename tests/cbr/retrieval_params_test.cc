@@ -104,6 +104,22 @@ TEST(RetrievalParamsTest, KickModelWidthsTakeEachKicksDirectionNoise) {
   EXPECT_NO_THROW(p.Validate());
 }
 
+// A kick's trajectory is cut at its reach (the roll of a launch reach_sigmas sd strong) and a kick
+// into the field runs on to its mean roll (cbr/free_path.h): v^2 / (2 a) at 0.5 m/s and 0.25 m/s^2
+// is 0.5 m, at 0.5 + 2 x 0.1 m/s 0.98 m.
+TEST(RetrievalParamsTest, KickModelReachIsTheRollTwoSdStrongAndRollTheMeanOne) {
+  KickModel model;
+  model.rolling_deceleration_mps2 = 0.25;
+  model.kicks.push_back({"forward", 0.5, 0.1, 0.0, 7.0 * kDegToRad});
+  RetrievalParams p;
+  UseKickModelReach(model, &p);
+  EXPECT_EQ(p.TrajectoryFor("forward").reach_m, 0.0);  // no reach_sigmas: the paper's paths
+  p.reach_sigmas = 2.0;
+  UseKickModelReach(model, &p);
+  EXPECT_NEAR(p.TrajectoryFor("forward").reach_m, 0.98, 1e-12);
+  EXPECT_NEAR(p.TrajectoryFor("forward").roll_m, 0.5, 1e-12);
+}
+
 TEST(RetrievalParamsTest, TheDefaultKickNamesNoKick) {
   std::string text = Json("sum", R"(["conditions", "teammates", "band_then_cost"])");
   const std::string from = R"("default_kick": {)";
