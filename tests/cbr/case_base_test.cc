@@ -1,4 +1,4 @@
-// The case base: the shipped cases load into 144, indexed by defending goal; the loader's rules
+// The case base: the shipped cases load into 156, indexed by defending goal; the loader's rules
 // for settings, folders and lists; the overlap check.
 #include "cbr/case_base.h"
 
@@ -20,12 +20,12 @@ std::filesystem::path ShippedCases() {
   return DefaultCaseBasePath(testing::ModelsDir());
 }
 
-TEST(CaseBaseTest, ShippedBaseHas36HandWrittenAnd144Cases) {
+TEST(CaseBaseTest, ShippedBaseHas39HandWrittenAnd156Cases) {
   const LoadedCaseBase loaded = LoadCaseBase(ShippedCases(), testing::ModelsDir());
-  EXPECT_EQ(loaded.cases.HandWrittenCount(), 36u);
-  EXPECT_EQ(loaded.cases.size(), 144u);
-  EXPECT_EQ(loaded.cases.Defending(DefendingGoal::kCyan).size(), 72u);
-  EXPECT_EQ(loaded.cases.Defending(DefendingGoal::kYellow).size(), 72u);
+  EXPECT_EQ(loaded.cases.HandWrittenCount(), 39u);
+  EXPECT_EQ(loaded.cases.size(), 156u);
+  EXPECT_EQ(loaded.cases.Defending(DefendingGoal::kCyan).size(), 78u);
+  EXPECT_EQ(loaded.cases.Defending(DefendingGoal::kYellow).size(), 78u);
   for (const Case& c : loaded.cases.Defending(DefendingGoal::kYellow)) {
     EXPECT_EQ(c.defending, DefendingGoal::kYellow) << c.name;
     EXPECT_FALSE(c.notes.empty()) << c.name;
