@@ -115,7 +115,17 @@ RobotCommand CbrTeam::Decide(const Perception& p) {
 }
 
 void CbrTeam::Account(Robot& r, const Perception& p) {
-  if (r.last_time_s >= 0.0) counters_.phase_time_s[At(static_cast<int>(r.phase))] += p.time_s - r.last_time_s;
+  if (r.last_time_s >= 0.0) {
+    const double dt = p.time_s - r.last_time_s;
+    counters_.phase_time_s[At(static_cast<int>(r.phase))] += dt;
+    if (r.phase == CbrPhase::kIdle) {
+      if (OpponentHasBall(p, setup_.skills)) {
+        counters_.idle_opponent_on_ball_s += dt;
+      } else if (r.ball_speed_mps >= setup_.skills.team->race.speed_mps) {
+        counters_.idle_ball_rolling_s += dt;
+      }
+    }
+  }
   r.last_time_s = p.time_s;
   if (r.last_ball_time_s >= 0.0 && p.time_s > r.last_ball_time_s) {
     r.ball_speed_mps = (p.p_F_ball - r.last_ball_F).norm() / (p.time_s - r.last_ball_time_s);

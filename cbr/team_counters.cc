@@ -44,7 +44,10 @@ std::vector<TeamPolicy::Counter> CbrTeamCounters::List() const {
                                         {"cases_multi_kick", static_cast<double>(multi_kick)},
                                         {"cases_multi_kick_completed",
                                          static_cast<double>(multi_kick_completed)},
-                                        {"wait_end_timeouts", static_cast<double>(wait_end_timeouts)}};
+                                        {"wait_end_timeouts", static_cast<double>(wait_end_timeouts)},
+                                        {"robot_time_idle_ball_rolling_s", idle_ball_rolling_s},
+                                        {"robot_time_idle_opponent_on_ball_s",
+                                         idle_opponent_on_ball_s}};
   for (int i = 0; i < kAbortReasonCount; ++i) {
     c.push_back({"aborts_" + std::string(AbortReasonName(static_cast<AbortReason>(i))),
                  static_cast<double>(aborts[static_cast<std::size_t>(i)])});

@@ -44,6 +44,10 @@ struct CbrTeamCounters {
   std::array<int, kAbortReasonCount> aborts{};  // cycles aborted, by the first reason
   int last_aborted_cycle = -1;
   std::array<double, kCbrPhaseCount> phase_time_s{};  // summed over the robots
+  // Of the idle (default behaviour) time: while the ball rolled faster than the robots walk (no
+  // cycle starts then, cbr/ball_race.h) and while an opponent touched it (ball lost).
+  double idle_ball_rolling_s = 0.0;
+  double idle_opponent_on_ball_s = 0.0;
 
   void CountCase(int teammates, int kicks);
   void CountCompleted(int kicks);

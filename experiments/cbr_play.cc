@@ -42,7 +42,10 @@ CbrPlayRow Row(const ScenarioSummary& s, double confidence) {
   for (int k = 0; k < kCbrPhaseCount; ++k) all_s += Mean(s, PhaseCounter(static_cast<CbrPhase>(k)));
   const double default_s =
       Mean(s, PhaseCounter(CbrPhase::kIdle)) + Mean(s, PhaseCounter(CbrPhase::kAwaitCase));
-  r.default_share = all_s > 0.0 ? default_s / all_s : 0.0;
+  const auto of_all = [&](double s_robot) { return all_s > 0.0 ? s_robot / all_s : 0.0; };
+  r.default_share = of_all(default_s);
+  r.default_rolling_share = of_all(Mean(s, "robot_time_idle_ball_rolling_s"));
+  r.default_opponent_share = of_all(Mean(s, "robot_time_idle_opponent_on_ball_s"));
   r.retrieved = Total(s, "cases_retrieved");
   r.completed = Total(s, "cases_completed");
   r.multi_kick = Total(s, "cases_multi_kick");
@@ -66,6 +69,11 @@ double Share(int count, int of) { return of > 0 ? static_cast<double>(count) / o
 
 std::string PerTrial(int count, int trials) {
   return Format("%.2f", trials > 0 ? static_cast<double>(count) / trials : 0.0);
+}
+
+std::string DefaultPlay(const CbrPlayRow& r) {
+  return Format("%.1f %% (rolling %.1f, opponent %.1f)", 100.0 * r.default_share,
+                100.0 * r.default_rolling_share, 100.0 * r.default_opponent_share);
 }
 
 std::string Completion(const CbrPlayRow& r) {
@@ -103,6 +111,8 @@ nlohmann::ordered_json CbrPlayJson(const std::vector<CbrPlayRow>& rows) {
     list.push_back({{"scenario", r.scenario},
                     {"trials", r.trials},
                     {"default_time_share", r.default_share},
+                    {"default_time_share_ball_rolling", r.default_rolling_share},
+                    {"default_time_share_opponent_on_ball", r.default_opponent_share},
                     {"cases_retrieved", r.retrieved},
                     {"cases_completed", r.completed},
                     {"cases_multi_kick", r.multi_kick},
@@ -121,12 +131,13 @@ nlohmann::ordered_json CbrPlayJson(const std::vector<CbrPlayRow>& rows) {
 std::string CbrPlayText(const std::vector<CbrPlayRow>& rows) {
   if (rows.empty()) return "";
   std::string text =
-      "how the CBR team played (robot time in the default behaviour; cases with two kicks or "
-      "more played to the end; aborts and no case per trial):\n";
+      "how the CBR team played (robot time in the default behaviour, of it while the ball "
+      "rolled and while an opponent had it; cases with two kicks or more played to the end; "
+      "aborts and no case per trial):\n";
   for (const CbrPlayRow& r : rows) {
-    text += Format("  s%d default %.1f %% | multi-kick %s | completed %d of %d | wait-end "
+    text += Format("  s%d default %s | multi-kick %s | completed %d of %d | wait-end "
                    "timeouts %d | aborts %s | no case %s (%s)\n",
-                   r.scenario, 100.0 * r.default_share, Completion(r).c_str(), r.completed,
+                   r.scenario, DefaultPlay(r).c_str(), Completion(r).c_str(), r.completed,
                    r.retrieved, r.wait_end_timeouts, Pairs(r.aborts, r.trials).c_str(),
                    PerTrial(r.no_case, r.trials).c_str(), Pairs(r.no_case_why, r.trials).c_str());
   }
@@ -134,7 +145,7 @@ std::string CbrPlayText(const std::vector<CbrPlayRow>& rows) {
 }
 
 std::vector<std::string> CbrPlayColumns() {
-  return {"scenario", "robot time in the default behaviour",
+  return {"scenario", "robot time in the default behaviour (of it: ball rolling, opponent on it)",
           "cases with two kicks or more played to the end", "all cases played to the end",
           "wait-end safety net", "aborts per trial", "no case per trial (why)"};
 }
@@ -142,7 +153,7 @@ std::vector<std::string> CbrPlayColumns() {
 std::vector<std::vector<std::string>> CbrPlayRows(const std::vector<CbrPlayRow>& rows) {
   std::vector<std::vector<std::string>> out;
   for (const CbrPlayRow& r : rows) {
-    out.push_back({std::to_string(r.scenario), Format("%.1f %%", 100.0 * r.default_share),
+    out.push_back({std::to_string(r.scenario), DefaultPlay(r),
                    Completion(r), Format("%d of %d", r.completed, r.retrieved),
                    std::to_string(r.wait_end_timeouts), Pairs(r.aborts, r.trials),
                    PerTrial(r.no_case, r.trials) + " (" + Pairs(r.no_case_why, r.trials) + ")"});

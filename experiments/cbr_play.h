@@ -1,6 +1,7 @@
 // How the CBR team played the method, scenario by scenario, from its own counters
 // (cbr/team_counters.h), beside the paper's Table 3: the share of the robots' time in the default
-// behaviour (idle and waiting for a case: the paper calls it "not significant", sec. 5.4), how
+// behaviour (idle and waiting for a case: the paper calls it "not significant", sec. 5.4) and
+// how much of it the ball rolled or an opponent had it, how
 // many of the cases whose robots kick twice or more between them were played to the end, how the
 // others ended (aborts by reason), and why a retrieval found no case.
 #pragma once
@@ -20,6 +21,10 @@ struct CbrPlayRow {
   int scenario = 0;
   int trials = 0;
   double default_share = 0.0;  // of all robot time: idle and await_case
+  // Of all robot time, the idle part while the ball rolled faster than the robots walk and while
+  // an opponent touched it (the rest of the default share: no case, races, waiting for a case).
+  double default_rolling_share = 0.0;
+  double default_opponent_share = 0.0;
   int retrieved = 0;
   int completed = 0;
   int multi_kick = 0;

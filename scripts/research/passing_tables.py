@@ -97,14 +97,17 @@ def backups(card):
 
 
 def cbr_play(cards):
-    print("| cfg | scn | default play (robot time) | two-kick cases played to the end | all cases "
+    print("| cfg | scn | default play (robot time; of it ball rolling, opponent on it) | two-kick cases played to the end | all cases "
           "played to the end | wait-end safety net | no case per trial |")
     print("| --- " * 7 + "|")
     for card in cards:
         for r in card.get("cbr_play", []):
             lo, hi = r["multi_kick_completed_share_ci"]
             print(f"| {card['config'].upper()} | {r['scenario']} | "
-                  f"{100 * r['default_time_share']:.1f} % | {r['cases_multi_kick_completed']} of "
+                  f"{100 * r['default_time_share']:.1f} % ("
+                  f"{100 * r.get('default_time_share_ball_rolling', 0):.1f}, "
+                  f"{100 * r.get('default_time_share_opponent_on_ball', 0):.1f}) | "
+                  f"{r['cases_multi_kick_completed']} of "
                   f"{r['cases_multi_kick']}, {100 * r['multi_kick_completed_share']:.1f} % "
                   f"[{100 * lo:.1f}, {100 * hi:.1f}] | {r['cases_completed']} of "
                   f"{r['cases_retrieved']} | {r['wait_end_timeouts']} | "

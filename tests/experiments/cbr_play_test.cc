@@ -28,6 +28,8 @@ ScenarioSummary Summary(int trials) {
                      {"no_case_path_blocked", PerTrial(2.5, trials)},
                      {"aborts_ball_lost", PerTrial(1.25, trials)},
                      {"robot_time_idle_s", PerTrial(6.0, trials)},
+                     {"robot_time_idle_ball_rolling_s", PerTrial(2.0, trials)},
+                     {"robot_time_idle_opponent_on_ball_s", PerTrial(1.0, trials)},
                      {"robot_time_await_case_s", PerTrial(1.0, trials)},
                      {"robot_time_adapt_s", PerTrial(5.0, trials)},
                      {"robot_time_execute_s", PerTrial(6.0, trials)},
@@ -50,6 +52,8 @@ TEST(CbrPlayTest, TotalsSharesAndTheCompletionInterval) {
   EXPECT_EQ(r.multi_kick, 400);
   EXPECT_EQ(r.multi_kick_completed, 100);
   EXPECT_DOUBLE_EQ(r.default_share, 7.0 / 20.0);  // idle + await over all five states
+  EXPECT_DOUBLE_EQ(r.default_rolling_share, 2.0 / 20.0);
+  EXPECT_DOUBLE_EQ(r.default_opponent_share, 1.0 / 20.0);
   const Interval wilson = WilsonInterval(100, 400, 0.95);
   EXPECT_DOUBLE_EQ(r.multi_kick_completed_ci.low, wilson.low);
   EXPECT_DOUBLE_EQ(r.multi_kick_completed_ci.high, wilson.high);
@@ -63,6 +67,8 @@ TEST(CbrPlayTest, TotalsSharesAndTheCompletionInterval) {
   EXPECT_DOUBLE_EQ(json[0]["multi_kick_completed_share"].get<double>(), 0.25);
   EXPECT_EQ(json[0]["no_case_why"]["path_blocked"].get<int>(), 500);
   EXPECT_NE(CbrPlayText(rows).find("multi-kick 100 of 400, 25.0 %"), std::string::npos);
+  EXPECT_NE(CbrPlayText(rows).find("default 35.0 % (rolling 10.0, opponent 5.0)"),
+            std::string::npos);
 }
 
 TEST(CbrPlayTest, ATeamWithoutTheCountersHasNoRows) {
