@@ -13,10 +13,8 @@
 //            Under pressure (an opponent closing in while the robot aims) the reuse layer keeps
 //            its case and aims the short way round; it does not hand the ball to the reactive
 //            dodge (match/reactive_team.h), which walks it 45 degrees off the line away from
-//            the opponent, away from the case's aim, and it does not turn the long way round
-//            the opponent: at the ERS-7's 45 deg/s with the ball a turn the long way takes 4-8
-//            s, longer than the 2.7 s the holding rule leaves. The case is given up when the
-//            ball is lost or the opponent stands on its path (path_blocked).
+//            the opponent, away from the case's aim: the case is the plan. The case is given up
+//            when the ball is lost or the opponent stands on its path (path_blocked).
 //   receive: face the ball until the pass is made (the passer's message, or, should the message
 //            be lost, the ball seen pass_seen_m away from the passer after it had it, or, for the
 //            first pass, away from both the passer and where the case found it), then get
@@ -25,8 +23,8 @@
 //            arrive_tolerance_m. A dribble also ends early enough to aim the kick or pass that
 //            follows it before the holding rule forces the ball away: when the time the robot
 //            may still hold the ball is what turning with the ball to that aim takes (at
-//            dribble_turn_radps) plus one control step. Without that, a dribble longer than the
-//            holding time allows (0.15 m/s for 2.7 s: 0.4 m) ended in an unaimed power kick.
+//            dribble_turn_radps) plus one control step, so that a dribble longer than the holding
+//            time allows ends in an aimed kick rather than the holding rule's unaimed one.
 //   turn:    turn on the spot to the heading or to face the adapted point.
 //   wait:    done at once (the receive that follows it waits for the pass itself).
 // The case is no longer applicable, and the robot aborts, when (checked while it is in charge of

@@ -113,6 +113,16 @@ CaseBase::CaseBase(const std::vector<Case>& hand_written, const KickMirrors& mir
   }
 }
 
+CaseBase CaseBase::WithoutMirrorY() const {
+  CaseBase kept = *this;
+  for (auto* list : {&kept.cyan_, &kept.yellow_}) {
+    std::erase_if(*list, [](const Case& c) {
+      return c.transform == CaseTransform::kMirrorY || c.transform == CaseTransform::kMirrorXY;
+    });
+  }
+  return kept;
+}
+
 std::span<const Case> CaseBase::Defending(DefendingGoal goal) const {
   return goal == DefendingGoal::kCyan ? std::span<const Case>(cyan_)
                                       : std::span<const Case>(yellow_);

@@ -38,6 +38,10 @@ class CaseBase {
   std::size_t HandWrittenCount() const { return hand_written_; }
   // The stored case called `name`, or nullptr.
   const Case* Find(const std::string& name) const;
+  // The base without the symmetric augmentation of the field's y axis (the mirror_y copies and
+  // their x mirrors): each goal keeps one copy of every hand-written case, 34 of the paper's 136
+  // (sec. 5.1.1) for its base. An ablation.
+  CaseBase WithoutMirrorY() const;
 
  private:
   std::vector<Case> cyan_, yellow_;

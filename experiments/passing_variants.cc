@@ -70,6 +70,11 @@ void ReadSimulation(const JsonObject& o, PassingVariant& v) {
   read("robot_noise_sigma_m", 1.0, v.robot_noise_sigma_m);
 }
 
+void ReadCases(const JsonObject& o, PassingVariant& v) {
+  o.RejectUnknownKeys({"mirror_y"});
+  if (o.Has("mirror_y")) v.mirror_y = o.BoolOr("mirror_y", true);
+}
+
 }  // namespace
 
 PassingSetup PassingVariant::Apply(const PassingSetup& base) const {
@@ -86,6 +91,7 @@ PassingSetup PassingVariant::Apply(const PassingSetup& base) const {
   if (message_loss_rate) s.sim.message_loss_rate = *message_loss_rate;
   if (ball_noise_sigma_m) s.sim.ball_noise_sigma_m = *ball_noise_sigma_m;
   if (robot_noise_sigma_m) s.sim.robot_noise_sigma_m = *robot_noise_sigma_m;
+  if (mirror_y && !*mirror_y) s.case_base.cases = s.case_base.cases.WithoutMirrorY();
   s.cbr.Validate();
   s.sim.Validate();
   return s;
@@ -101,7 +107,7 @@ std::vector<PassingVariant> LoadPassingVariants(const std::string& reference,
   std::vector<PassingVariant> variants;
   std::set<std::string> names;
   for (const JsonObject& item : root.ObjectArray("variants")) {
-    item.RejectUnknownKeys({"name", "retrieval", "team", "simulation"});  // and "notes"
+    item.RejectUnknownKeys({"name", "retrieval", "team", "simulation", "cases"});  // and "notes"
     PassingVariant v;
     v.name = item.String("name");
     if (v.name.empty() || !names.insert(v.name).second) {
@@ -111,6 +117,7 @@ std::vector<PassingVariant> LoadPassingVariants(const std::string& reference,
     if (item.Has("retrieval")) ReadRetrieval(item.Object("retrieval"), v);
     if (item.Has("team")) ReadTeam(item.Object("team"), v);
     if (item.Has("simulation")) ReadSimulation(item.Object("simulation"), v);
+    if (item.Has("cases")) ReadCases(item.Object("cases"), v);
     variants.push_back(std::move(v));
   }
   if (variants.empty()) root.Fail("variants", "must list at least one variant");

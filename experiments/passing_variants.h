@@ -11,7 +11,9 @@
 //   team:       positioning ("dependent", "independent"), retrievers (1-4), pass_timing (true:
 //               the timing-aware pass check of cbr/pass_timing.h), ball_race and kick_race
 //               (true/false: cbr/ball_race.h, cbr/kick_race.h);
-//   simulation: message_loss_rate, ball_noise_sigma_m, robot_noise_sigma_m.
+//   simulation: message_loss_rate, ball_noise_sigma_m, robot_noise_sigma_m;
+//   cases:      mirror_y (false: the case base without its y-mirrored copies, CaseBase::
+//               WithoutMirrorY).
 // Names are unique; the first variant is the reference the others are compared with.
 #pragma once
 
@@ -40,6 +42,7 @@ struct PassingVariant {
   std::optional<double> message_loss_rate;
   std::optional<double> ball_noise_sigma_m;
   std::optional<double> robot_noise_sigma_m;
+  std::optional<bool> mirror_y;
 
   // `base` with this variant's changes, checked like the files they replace.
   PassingSetup Apply(const PassingSetup& base) const;

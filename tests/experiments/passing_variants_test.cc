@@ -40,6 +40,17 @@ TEST(PassingVariantsTest, ShippedVariantsChangeWhatTheyName) {
   EXPECT_EQ(Named(variants, "order_cost_first").Apply(base).retrieval.order[0],
             RankCriterion::kBandThenCost);
   EXPECT_EQ(Named(variants, "one_retriever").Apply(base).cbr.retrievers, 1);
+  // Without the y mirrors each goal keeps one copy of every hand-written case, none mirrored in y.
+  const CaseBase& all = base.case_base.cases;
+  const CaseBase lone = Named(variants, "no_mirror_y").Apply(base).case_base.cases;
+  EXPECT_EQ(lone.size(), all.size() / 2);
+  for (DefendingGoal goal : {DefendingGoal::kCyan, DefendingGoal::kYellow}) {
+    EXPECT_EQ(lone.Defending(goal).size(), all.HandWrittenCount());
+    for (const Case& c : lone.Defending(goal)) {
+      EXPECT_TRUE(c.transform == CaseTransform::kOriginal || c.transform == CaseTransform::kMirrorX)
+          << c.name;
+    }
+  }
   EXPECT_EQ(Named(variants, "loss_30").Apply(base).sim.message_loss_rate, 0.3);
   const PassingSetup noisy = Named(variants, "perception_noise").Apply(base);
   EXPECT_EQ(noisy.sim.ball_noise_sigma_m, 0.05);
@@ -69,6 +80,8 @@ TEST(PassingVariantsTest, BadFilesAreRefusedWithFieldAndValue) {
   ExpectRefused(R"({"variants": [{"name": "a", "team": {"retrievers": 7}}]})",
                 "variants[0].team.retrievers: must be 1-4, got 7");
   ExpectRefused(R"({"variants": [{"name": "a", "team": {"speed": 7}}]})", "variants[0].team");
+  ExpectRefused(R"({"variants": [{"name": "a", "cases": {"mirror_x": false}}]})",
+                "variants[0].cases");
   ExpectRefused(R"({"variants": []})", "variants: must list at least one variant");
 }
 
