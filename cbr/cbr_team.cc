@@ -165,7 +165,13 @@ void CbrTeam::HearProtocol(Robot& r, const Perception& p, const TeamMessage& m) 
       r.cycle = cycle;
       r.coordinator = m.words[1];
       r.play.reset();
-      if (r.coordinator == p.self) {
+      if (r.coordinator == p.self && r.in_kick) {
+        // Named while its own kick is in motion (the selector had not heard of it yet): it
+        // retrieves nothing for a ball it is kicking away; the team's wait for the case times out
+        // and the next cycle starts once the kick is over.
+        Enter(r, CbrPhase::kIdle, p.time_s);
+        r.idle_until_s = p.time_s;
+      } else if (r.coordinator == p.self) {
         Retrieve(r, p);
       } else {
         Enter(r, CbrPhase::kAwaitCase, p.time_s);
@@ -176,6 +182,8 @@ void CbrTeam::HearProtocol(Robot& r, const Perception& p, const TeamMessage& m) 
       if (m.words[1] < 0 || m.words[1] >= static_cast<int>(CasesFor(p).size())) return;
       if (cycle > r.cycle) r.coordinator = m.sender;
       Adopt(r, p, cycle, m.words[1], UnpackRobots(m.words[2]), m.p_F);
+      // A robot of the case whose own kick is in motion knows the case is for a ball that leaves.
+      if (r.in_kick && r.me >= 0) Abort(r, p, AbortReason::kBallMoved);
       return;
     case CbrMessageKind::kNoCase:
       r.cycle = cycle;

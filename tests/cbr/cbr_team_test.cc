@@ -331,6 +331,32 @@ TEST_F(CbrTeamTest, NoCycleStartsWhileATeammateKicksTheBallAway) {
   EXPECT_EQ(SendersOf(CbrMessageKind::kCoordinator), std::vector<int>{0});
 }
 
+TEST_F(CbrTeamTest, ACoordinatorNamedDuringItsOwnKickRetrievesNothing) {
+  // The selector (robot 0) has not heard that robot 1 kicks (its kicking reports are lost) and
+  // names it coordinator: robot 1 retrieves nothing for the ball it kicks away; once the kick
+  // is over it retrieves.
+  team_params_.ball_race = false;
+  poses_[1] = Pose2(ball_ - Vec2(0.16, 0.0), 0.0);
+  holding_[1] = true;
+  drop = [](const TeamMessage& m) { return m.sender == 1 && m.words[kKickingWord] == 1; };
+  MakeTeam();
+  Run(1, {1});  // robot 1 reports its distance, not kicking yet
+  fallback_.kick = true;
+  Run(1);  // robot 0 names robot 1; robot 1 starts its kick
+  ASSERT_EQ(SendersOf(CbrMessageKind::kCoordinator), std::vector<int>{0});
+  ASSERT_EQ(last_[1].kind, CommandKind::kKick);
+  holding_[1] = false;
+  busy_[1] = true;
+  fallback_.kick = false;
+  Run(10);
+  EXPECT_TRUE(SendersOf(CbrMessageKind::kCase).empty());
+  EXPECT_TRUE(SendersOf(CbrMessageKind::kNoCase).empty());
+  busy_[1] = false;
+  Run(40);  // the wait for the case times out, robot 1 is free: a new cycle retrieves
+  EXPECT_FALSE(SendersOf(CbrMessageKind::kCase).empty() &&
+               SendersOf(CbrMessageKind::kNoCase).empty());
+}
+
 TEST_F(CbrTeamTest, ARobotAwaitingTheCaseKeepsTheBallItHolds) {
   // One retriever (robot 0) retrieves; robot 1 holds the ball and waits for the case, which is
   // lost: it keeps the ball rather than kick it away in the default behaviour, until the wait
