@@ -334,7 +334,8 @@ std::string PassingScorecardHtml(const PassingScorecard& card) {
     html.Heading(2, "How the CBR team played");
     html.Paragraph(
         "From the team's own counters: the robots' time in the default behaviour (idle and "
-        "waiting for a case; the paper calls it not significant, sec. 5.4), the cases whose "
+        "waiting for a case; the paper calls it not significant, sec. 5.4) and of it the time "
+        "the ball rolled faster than the robots walk and an opponent touched it, the cases whose "
         "robots kick twice or more between them that were played until every robot finished "
         "(sec. 4.2; " + Percent(card.confidence) + " Wilson interval), the wait-end safety net "
         "(a robot that stopped waiting for a teammate still executing), aborts by reason and why "
