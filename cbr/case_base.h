@@ -39,8 +39,8 @@ class CaseBase {
   // The stored case called `name`, or nullptr.
   const Case* Find(const std::string& name) const;
   // The base without the symmetric augmentation of the field's y axis (the mirror_y copies and
-  // their x mirrors): each goal keeps one copy of every hand-written case, 34 of the paper's 136
-  // (sec. 5.1.1) for its base. An ablation.
+  // their x mirrors): each goal keeps one copy of every hand-written case (the paper's 34 cases
+  // were stored as 136, sec. 5.1.1). An ablation.
   CaseBase WithoutMirrorY() const;
 
  private:

@@ -30,11 +30,11 @@
 //          to a target: to the target adapted like a position (target - B^c + B^p); a kick into
 //          the field (not a shot, cbr/case.h IsShot) whose mean roll (roll_m > 0) lies beyond
 //          its target runs on to it past a knee at the target (MakeKickTrajectory): a kick
-//          of fixed strength rolls as far as it rolls, whatever the target; the mean roll is
+//          of fixed strength rolls as far as it rolls, whatever the target. The mean roll is
 //          where the ball is expected to stop, as the paper's trajectory is the ball's expected
-//          path (running it on to the reach at 2 sd put a goalie 3.7 m away on a 2 m kick up
-//          the wing, which then never played where it was written for) (the walk goes on from
-//          the target, where the case plans the ball; the robot aims at the target). Decision:
+//          path; run on to the reach at 2 sd, the corridor put a goalie 3.7 m away on a 2 m kick
+//          up the wing, which then never played where it was written for. The walk goes on from
+//          the target, where the case plans the ball; the robot aims at the target. Decision:
 //          targets are part of the case's pattern around the ball, so they move with it exactly as
 //          the teammates do (Fig. 5); a fixed field point would turn a pass-to-space into a kick
 //          to somewhere unrelated when the ball is elsewhere in its scope;
