@@ -27,7 +27,7 @@ TEST(CoverageTest, TheShippedCaseBaseRetrievesForMostAttacks) {
   const AttackCoverage cyan = MeasureAttackCoverage(base, DefendingGoal::kCyan, params, 2000, 13);
   ASSERT_EQ(cyan.regions.size(), AttackRegions().size());
   EXPECT_EQ(cyan.regions[0].name, "back");
-  // Measured: in scope 0.989, retrieved 0.899, cooperative 0.452.
+  // Measured: in scope 0.989, retrieved 0.901, cooperative 0.460.
   EXPECT_GE(cyan.in_scope, 0.98);
   EXPECT_GE(cyan.retrieved, 0.89);
   EXPECT_GE(cyan.cooperative, 0.45);
@@ -36,7 +36,7 @@ TEST(CoverageTest, TheShippedCaseBaseRetrievesForMostAttacks) {
     EXPECT_EQ(r.samples, 2000);
     EXPECT_LE(r.retrieved, r.in_scope);
     EXPECT_LE(r.cooperative, r.retrieved);
-    EXPECT_GE(r.retrieved, 0.81 * r.samples);  // the weakest region, front, retrieves 0.819
+    EXPECT_GE(r.retrieved, 0.81 * r.samples);  // the weakest region, front, retrieves 0.823
     EXPECT_LE(r.retrieved + r.too_far + r.blocked, r.in_scope);
     std::printf("%-10s in scope %.3f retrieved %.3f pass %.3f too far %.3f blocked %.3f\n",
                 r.name.c_str(), 1.0 * r.in_scope / r.samples, 1.0 * r.retrieved / r.samples,
