@@ -1,6 +1,7 @@
 #include "cbr/retrieval_params.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "common/checks.h"
 #include "common/enum_names.h"
@@ -30,11 +31,17 @@ constexpr EnumNames<TrajectoryWidths, 2> kWidthNames{{{
     {TrajectoryWidths::kKickModel, "kick_model"},
 }}};
 
-void ValidateKick(const std::string& at, const KickTrajectory& k) {
+// A corridor wider than the field (`width_m`) or a kick longer than its diagonal (`diagonal_m`)
+// says nothing a field-wide one does not: such values are typing errors, and their arithmetic
+// overflows (1e308 widths made the corridor's membership, and `cbr retrieve --json`, non-finite).
+void ValidateKick(const std::string& at, const KickTrajectory& k, double width_m,
+                  double diagonal_m) {
   if (k.kick.empty()) throw InputError(at + "kick: must not be empty");
   RequirePositive(at + "r_min_m", k.r_min_m);
+  RequireInRange(at + "r_min_m", k.r_min_m, 0.0, width_m);
   RequirePositive(at + "r_max_m", k.r_max_m);
-  RequireNonNegative(at + "reach_m", k.reach_m);
+  RequireInRange(at + "r_max_m", k.r_max_m, 0.0, width_m);
+  RequireInRange(at + "reach_m", k.reach_m, 0.0, diagonal_m);
   RequireInRange(at + "sigma_direction_deg", k.sigma_direction_rad * kRadToDeg, 0.0, 45.0);
 }
 
@@ -88,7 +95,12 @@ const KickTrajectory& RetrievalParams::TrajectoryFor(std::string_view kick) cons
 
 void RetrievalParams::Validate() const {
   RequireInRange("thr_ball", thr_ball, 1e-9, 1.0);
+  RequirePositive("goal_x_m", goal_x_m);
+  RequirePositive("half_width_m", half_width_m);
+  const double width_m = 2.0 * half_width_m;
+  const double diagonal_m = 2.0 * std::hypot(goal_x_m, half_width_m);
   RequirePositive("thr_cost_m", thr_cost_m);
+  RequireInRange("thr_cost_m", thr_cost_m, 0.0, diagonal_m);  // no walk is longer on the field
   RequireInRange("thr_trajectory", thr_trajectory, 1e-9, 1.0);
   RequireInRange("thr_opponent", thr_opponent, 1e-9, 1.0);
   RequireInRange("bands.H", band_lower[0], 0.0, 1.0);
@@ -102,16 +114,14 @@ void RetrievalParams::Validate() const {
       }
     }
   }
-  RequirePositive("goal_x_m", goal_x_m);
-  RequirePositive("half_width_m", half_width_m);
   RequireInRange("width_sigmas", width_sigmas, 0.0, 5.0);
   if (reach_sigmas) RequireInRange("reach_sigmas", *reach_sigmas, -5.0, 5.0);
   RequireNonNegative("opponent_radius_m", opponent_radius_m);
   RequireNonNegative("ball_radius_m", ball_radius_m);
-  ValidateKick("default_kick.", default_kick);
+  ValidateKick("default_kick.", default_kick, width_m, diagonal_m);
   for (std::size_t i = 0; i < kicks.size(); ++i) {
     const std::string at = "kicks[" + std::to_string(i) + "].";
-    ValidateKick(at, kicks[i]);
+    ValidateKick(at, kicks[i], width_m, diagonal_m);
     for (std::size_t j = 0; j < i; ++j) {
       if (kicks[j].kick == kicks[i].kick) {
         throw InputError(at + "kick: \"" + kicks[i].kick + "\" appears twice");

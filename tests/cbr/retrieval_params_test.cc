@@ -9,6 +9,7 @@
 #include "common/error.h"
 #include "common/geometry.h"
 #include "models/kick_model.h"
+#include "tests/support/model_test_util.h"
 #include "tests/support/temp_files.h"
 
 namespace foresight {
@@ -87,6 +88,28 @@ TEST(RetrievalParamsTest, BadValuesNameFileAndField) {
   p = RetrievalParams{};
   p.default_kick.r_min_m = 0.0;
   EXPECT_THROW(p.Validate(), InputError);
+}
+
+// A corridor wider than the field, a kick longer than its diagonal or a walk longer than it is a
+// typing error whose arithmetic overflows: refused with the file and field (1e308 was accepted).
+TEST(RetrievalParamsTest, WidthsReachAndCostBeyondTheFieldAreRefused) {
+  const auto huge = testing::BrokenShipped("cbr/retrieval.json", "retrieval_huge",
+                                           "\"r_max_m\": 0.3", "\"r_max_m\": 1e308");
+  EXPECT_THAT(testing::InputErrorMessage([&] { LoadRetrievalParams(huge, FourLegged()); }),
+              HasSubstr("retrieval_huge.json: default_kick.r_max_m: must be in [0, 3.6], got "));
+  RetrievalParams p;
+  p.default_kick.r_min_m = 3.7;  // the four-legged field is 3.6 m wide
+  EXPECT_THROW(p.Validate(), InputError);
+  p = RetrievalParams{};
+  p.thr_cost_m = 6.6;  // its diagonal is 6.48 m
+  EXPECT_THROW(p.Validate(), InputError);
+  p = RetrievalParams{};
+  p.default_kick.reach_m = 6.6;
+  EXPECT_THROW(p.Validate(), InputError);
+  p = RetrievalParams{};
+  p.default_kick.r_max_m = 3.6;
+  p.thr_cost_m = 6.4;
+  EXPECT_NO_THROW(p.Validate());
 }
 
 TEST(RetrievalParamsTest, KickModelWidthsTakeEachKicksDirectionNoise) {
