@@ -8,6 +8,7 @@
 
 #include "common/checks.h"
 #include "common/error.h"
+#include "common/one_line.h"
 #include "models/model_paths.h"
 #include "models/placement.h"
 
@@ -48,6 +49,23 @@ void RequirePlayablePlacement(const Scenario& s, const FieldSpec& field, const R
   }
 }
 
+// A scenario's name is part of its output files' names (passing_example_<name>.svg): at most
+// kMaxScenarioNameBytes letters, digits, '_', '-' and '.'.
+constexpr std::size_t kMaxScenarioNameBytes = 64;
+void RequireFileNamePart(const JsonObject& root, const std::string& name) {
+  const bool usable =
+      !name.empty() && name.size() <= kMaxScenarioNameBytes &&
+      std::all_of(name.begin(), name.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+               c == '_' || c == '-' || c == '.';
+      });
+  if (!usable) {
+    root.Fail("name", "must be 1-" + std::to_string(kMaxScenarioNameBytes) +
+                          " letters, digits, '_', '-' or '.' (it names the output files), got '" +
+                          PrintableName(name) + "'");
+  }
+}
+
 Vec2 ReadPoint(const JsonObject& o) {
   o.RejectUnknownKeys({"x_m", "y_m"});
   return Vec2(o.Number("x_m"), o.Number("y_m"));
@@ -60,6 +78,7 @@ Scenario LoadScenario(const std::filesystem::path& file, int opponent_count,
   root.RejectUnknownKeys({"name", "ball", "attackers", "opponents"});
   Scenario s;
   s.name = root.String("name");
+  RequireFileNamePart(root, s.name);
   s.p_F_ball = ReadPoint(root.Object("ball"));
   for (const JsonObject& o : root.ObjectArray("attackers")) s.attackers.push_back(ReadPose(o));
   for (const JsonObject& o : root.ObjectArray("opponents")) s.opponents.push_back(ReadPose(o));
@@ -242,6 +261,14 @@ MatchConfig LoadMatchConfig(const std::string& reference, const std::filesystem:
         ResolveModelFile(name, DataFolder::kMatchScenarios, c.file.parent_path(), models_dir);
     c.scenarios.push_back(
         LoadScenario(file, static_cast<int>(c.opponents.size()), field, robot));
+    for (std::size_t i = 0; i + 1 < c.scenarios.size(); ++i) {
+      if (c.scenarios[i].name == c.scenarios.back().name) {
+        root.Fail("scenarios", "two scenarios are named '" + c.scenarios.back().name +
+                                   "' (their output files would be the same): " +
+                                   file.string() + " and the " + std::to_string(i + 1) +
+                                   ". of the list");
+      }
+    }
   }
   WithFile(c.file.string(), [&] { c.Validate(field, sim, robot); });
   return c;

@@ -167,6 +167,22 @@ TEST_F(ConfigTest, TheGoalieModelIsThePapersByDefaultRunswiftsOnRequestAndNothin
   EXPECT_THAT(error, HasSubstr("keeper9"));
 }
 
+// A scenario's name goes into its output files' names: a slash, a control character or an empty
+// name is refused with the file and field (they made a sub-folder, an escape sequence or
+// "passing_example_.svg"), and so are two scenarios of one name.
+TEST_F(ConfigTest, AScenarioNameThatCannotNameAFileIsAnError) {
+  for (const std::string name : {"a/b", "x\\u001b[31m", ""}) {
+    SCOPED_TRACE(name);
+    const std::string error =
+        ScenarioError("\"name\": \"dg_1\"", "\"name\": \"" + name + "\"");
+    EXPECT_THAT(error, HasSubstr("tampered.json: name: must be 1-64 letters, digits, '_', '-' or "
+                                 "'.' (it names the output files), got '"));
+    EXPECT_EQ(error.find('\x1b'), std::string::npos);
+  }
+  const std::string twice = Load(Replace(Shipped("dg.json"), "\"dg_4\"", "\"dg_1\""));
+  EXPECT_THAT(twice, HasSubstr("config.json: scenarios: two scenarios are named 'dg_1'"));
+}
+
 TEST_F(ConfigTest, UnknownScenarioNamesTheMissingFile) {
   const std::string error = Load(Replace(Shipped("dg.json"), "\"dg_4\"", "\"dg_9\""));
   EXPECT_THAT(error, HasSubstr("dg_9.json"));
