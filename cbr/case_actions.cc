@@ -34,20 +34,31 @@ double AimHeading(const FuzzyTrajectory* trajectory, const KickSpec& kick, const
   return HeadingTowards(p.p_F_ball, aim_at) - kick.direction_rad;
 }
 
+// Where the held ball will leave from once the robot faces `heading`: the ball sits at the
+// holder's front and turns with it, at its present distance from the robot's centre.
+Vec2 LaunchPoint(const Perception& p, double heading) {
+  return p.pose.p_F + (p.p_F_ball - p.pose.p_F).norm() * UnitVector(heading);
+}
+
 // A kick or pass: aim along `trajectory` with kick `kick_index`, then kick.
 ActionStep AimAndKick(const FuzzyTrajectory* trajectory, int kick_index, ActionProgress& s,
                       const Perception& p, const ActionContext& ctx) {
   ActionStep step;
   const KickSpec& kick = ctx.kicks->kicks[static_cast<std::size_t>(kick_index)];
+  const double heading = AimHeading(trajectory, kick, p, ctx);
   if (trajectory) {
-    // The free-path test (sec. 3.3.1) on the trajectory from where the ball is now.
+    // The free-path test (sec. 3.3.1) on the trajectory the ball will take: from where it leaves
+    // once the robot has turned to aim, not from where the turn has it now (a receiver holds the
+    // pass at its side until it has turned, and the corridor from there swept past opponents
+    // the kick's own corridor misses).
+    const Vec2 launch = LaunchPoint(p, heading);
     CaseBallPath now;
     now.count = 1;
     const KickTrajectory& widths = ctx.retrieval->TrajectoryFor(kick.name);
     now.trajectories[0] =
         trajectory->knee_m > 0.0
-            ? MakeKickTrajectory(p.p_F_ball, trajectory->aim_F, widths, *ctx.retrieval)
-            : MakeTrajectory(p.p_F_ball, trajectory->aim_F, widths, *ctx.retrieval);
+            ? MakeKickTrajectory(launch, trajectory->aim_F, widths, *ctx.retrieval)
+            : MakeTrajectory(launch, trajectory->aim_F, widths, *ctx.retrieval);
     for (const Pose2& o : p.opponents) {  // one at a time: no copy of the positions per step
       if (!CheckFreePath(now, std::span<const Vec2>(&o.p_F, 1), ctx.retrieval->thr_trajectory)
                .free) {
@@ -56,7 +67,6 @@ ActionStep AimAndKick(const FuzzyTrajectory* trajectory, int kick_index, ActionP
       }
     }
   }
-  const double heading = AimHeading(trajectory, kick, p, ctx);
   const double error = WrapAngle(heading - p.pose.theta_rad);
   if (std::abs(error) <= ctx.aim_tolerance_rad ||
       p.time_s - s.holding_since_s >= ctx.release_after_s) {

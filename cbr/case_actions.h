@@ -32,7 +32,8 @@
 // the ball first goes for it, the ball left the case's ball scope around B^p (ball_moved: sim_B
 // <= thr_b, sec. 3.1; the team checks the same while adapting); an
 // opponent stands on the trajectory it is about to kick (path_blocked: the free-path test of
-// sec. 3.3.1 on that trajectory, from where the ball is now).
+// sec. 3.3.1 on that trajectory, from where the ball will leave: the held ball sits at the
+// robot's front and turns with it, so from the robot's centre along the heading it aims at).
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,6 @@
 #include "cbr/cbr_team.h"
 
+#include <algorithm>
 #include <limits>
 
 #include "common/error.h"
@@ -202,9 +203,10 @@ void CbrTeam::HearProtocol(Robot& r, const Perception& p, const TeamMessage& m) 
       return;
     case CbrMessageKind::kEnd:
     case CbrMessageKind::kAbort:
-      if (*CbrKind(m) == CbrMessageKind::kAbort &&
-          m.words[1] == static_cast<int>(AbortReason::kTimeout) && r.play && cycle == r.cycle) {
-        r.timed_out = r.play;  // the case of this cycle, not an older one this robot still has
+      if (*CbrKind(m) == CbrMessageKind::kAbort && r.play && cycle == r.cycle) {
+        // The case of this cycle, not an older one this robot still has.
+        if (m.words[1] == static_cast<int>(AbortReason::kTimeout)) r.timed_out = r.play;
+        if (m.words[1] == static_cast<int>(AbortReason::kPathBlocked)) r.blocked.push_back(*r.play);
       }
       r.cycle = cycle;
       r.play.reset();
@@ -268,7 +270,7 @@ void CbrTeam::Retrieve(Robot& r, const Perception& p) {
   const Problem problem = PerceivedProblem(r, p);
   const std::span<const Case> cases = CasesFor(p);
   foresight::Retrieve(cases, problem, *setup_.skills.retrieval, &scratch_);
-  const std::optional<Choice> chosen = ChooseCase(cases, problem);
+  const std::optional<Choice> chosen = ChooseCase(cases, problem, r.blocked);
   if (!chosen) {
     ++counters_.no_case;
     CountNoCase(scratch_, counters_);
@@ -288,7 +290,8 @@ void CbrTeam::Retrieve(Robot& r, const Perception& p) {
 }
 
 std::optional<CbrTeam::Choice> CbrTeam::ChooseCase(std::span<const Case> cases,
-                                                   const Problem& problem) {
+                                                   const Problem& problem,
+                                                   std::span<const CasePlay> skip) {
   const CbrTeamParams& team = *setup_.skills.team;
   const RetrievalParams& retrieval = *setup_.skills.retrieval;
   BallRace race;
@@ -300,6 +303,11 @@ std::optional<CbrTeam::Choice> CbrTeam::ChooseCase(std::span<const Case> cases,
     }
   }
   for (int index : scratch_.ranking) {
+    if (std::any_of(skip.begin(), skip.end(),
+                    [&](const CasePlay& play) { return play.case_index == index; })) {
+      ++counters_.blocked_skipped;
+      continue;
+    }
     const CaseEvaluation& e = *scratch_.Find(index);
     const Case& c = cases[At(index)];
     Choice choice{index, e.correspondence};
@@ -356,6 +364,7 @@ void CbrTeam::Adopt(Robot& r, const Perception& p, int cycle, int case_index,
 void CbrTeam::Abort(Robot& r, const Perception& p, AbortReason reason) {
   counters_.CountAbort(r.cycle, reason);
   if (reason == AbortReason::kTimeout && r.play) r.timed_out = r.play;
+  if (reason == AbortReason::kPathBlocked && r.play) r.blocked.push_back(*r.play);
   Send(r, p, CbrMessageKind::kAbort, static_cast<int>(reason));
   r.play.reset();
   Enter(r, CbrPhase::kIdle, p.time_s);
@@ -368,6 +377,8 @@ RobotCommand CbrTeam::Act(Robot& r, const Perception& p) {
   if (r.timed_out && (p.holding_ball || BallLeftScope(*r.timed_out, p, setup_.skills))) {
     r.timed_out.reset();
   }
+  std::erase_if(r.blocked,
+                [&](const CasePlay& play) { return BallLeftScope(play, p, setup_.skills); });
   if (r.phase == CbrPhase::kIdle && p.time_s >= r.idle_until_s &&
       Selector(r.team) == p.self && MayStartCycle(r, p)) {
     StartCycle(r, p);

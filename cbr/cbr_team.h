@@ -59,6 +59,14 @@
 // could not reach its adapted position (the defender standing on it at its region's edge) was
 // retrieved and timed out every 10 s until the DG trial's 600 s safety cap (DG, seed 1: 3 of 2000
 // trials after the cases' holding revision).
+// After an abort for a blocked path the coordinator passes over that case while the ball stays
+// in its ball scope around the ball it was retrieved for (each such case, e.g. a case and its
+// mirror image) (counted, blocked_skipped): the same
+// ball and opponents would retrieve it again and block it again at the kick (the retrieval's
+// corridor starts at the ball, the kick's at where the turned robot will launch it). Other
+// cases and the default behaviour play meanwhile. Without it (DG, seed 1) 664 of scenario 1's
+// 1387 "path blocked" aborts came within 0.12 s of their case, mostly the same case retrieved
+// again each time; with it 134 of 831.
 #pragma once
 
 #include <array>
@@ -120,6 +128,7 @@ class CbrTeam final : public TeamPolicy {
     double last_ball_time_s = -1.0;
     double ball_speed_mps = 0.0;
     std::optional<CasePlay> timed_out;  // the case last given up for a timeout (see above)
+    std::vector<CasePlay> blocked;      // cases given up for a blocked path (see above)
     std::deque<TeamMessage> outbox;
   };
 
@@ -152,7 +161,9 @@ class CbrTeam final : public TeamPolicy {
     int case_index = -1;
     Correspondence correspondence;
   };
-  std::optional<Choice> ChooseCase(std::span<const Case> cases, const Problem& problem);
+  // `skip`: the cases the team gave up for a blocked path and passes over (see above).
+  std::optional<Choice> ChooseCase(std::span<const Case> cases, const Problem& problem,
+                                   std::span<const CasePlay> skip);
 
   CbrTeamSetup setup_;
   TeamPolicy* default_;

@@ -34,6 +34,7 @@ std::vector<TeamPolicy::Counter> CbrTeamCounters::List() const {
                                         {"timing_rejected", static_cast<double>(timing_rejected)},
                                         {"race_lost", static_cast<double>(race_lost)},
                                         {"race_skipped", static_cast<double>(race_skipped)},
+                                        {"blocked_skipped", static_cast<double>(blocked_skipped)},
                                         {"kick_race_lost", static_cast<double>(kick_race_lost)},
                                         {"no_case_candidates_refused",
                                          static_cast<double>(no_case_candidates_refused)},

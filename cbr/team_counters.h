@@ -28,6 +28,7 @@ struct CbrTeamCounters {
   int race_lost = 0;        // retrievals refused: an opponent reaches the ball first
   int race_skipped = 0;     // candidates whose getter could not be the team's fastest robot
   int kick_race_lost = 0;   // candidates whose getter would not play the ball away in time
+  int blocked_skipped = 0;  // candidates passed over: given up for a blocked path, same ball
   // Why "no case", by the furthest any case got through Algorithm 1: a candidate the team turned
   // down (race or pass timing), a path blocked, robots too far, no ball in a scope.
   int no_case_candidates_refused = 0;

@@ -90,6 +90,42 @@ TEST_F(CaseActionsTest, AnOpponentOnThePassLineAbortsThePass) {
   EXPECT_FALSE(StepActions(play_, 0, progress, p, ctx_).abort);
 }
 
+// The free-path test at the kick is on the corridor the ball will take: from where it leaves once
+// the robot has turned to aim (the held ball turns with it at its front), not from where the turn
+// has it now. A robot facing +y holds the ball at its left; an opponent beside that ball's line
+// to the target, clear of the line from the launch point, does not abort the kick.
+TEST_F(CaseActionsTest, TheKickChecksThePathFromWhereTheBallWillLeave) {
+  CaseAction get, kick;
+  get.type = ActionType::kGetBall;
+  kick.type = ActionType::kKick;
+  kick.kick = "forward";
+  kick.target_F = Vec2(2.0, 0.0);
+  Case c;
+  c.name = c.source = "kick_on";
+  c.p_F_ball = Vec2(0.0, 0.0);
+  c.ball_scope = {0.5, 0.5};
+  c.teammates = {{1, Vec2(-0.3, 0.0), {get, kick}}};
+  const CasePlay play = MakeCasePlay(c, 0, 1, Vec2(0.0, 0.0), {0, -1, -1, -1}, retrieval_);
+  Perception p;
+  p.time_s = 1.0;
+  p.self = 0;
+  p.pose = Pose2(Vec2(0.0, 0.0), 0.5 * kPi);
+  p.holding_ball = true;
+  p.p_F_ball = Vec2(0.0, 0.16);  // at its front, to the left of the line the kick will take
+  p.teammates = {p.pose};
+  p.opponents = {Pose2(Vec2(0.5, 0.24), 0.0)};
+  ActionProgress progress;
+  progress.action = 1;
+  progress.holding_since_s = 1.0;
+  progress.was_holding = true;
+  const ActionStep turn = StepActions(play, 0, progress, p, ctx_);
+  EXPECT_FALSE(turn.abort);
+  EXPECT_EQ(turn.command.kind, CommandKind::kWalk);  // turning to aim
+  // On the kick's own line the same opponent blocks it.
+  p.opponents = {Pose2(Vec2(0.5, 0.0), 0.0)};
+  EXPECT_EQ(StepActions(play, 0, progress, p, ctx_).abort, AbortReason::kPathBlocked);
+}
+
 TEST_F(CaseActionsTest, TheReceiverWaitsForThePassHeardOrSeen) {
   Perception p;
   p.time_s = 1.0;

@@ -404,6 +404,47 @@ TEST_F(CbrTeamTest, TheKickRacePassesOverACaseAnOpponentBreaksBeforeItsFirstKick
   EXPECT_EQ(SendersOf(CbrMessageKind::kNoCase), std::vector<int>{0});
 }
 
+// Robot 0 holds the ball facing +y; its case kicks it up the field. The retrieval's corridor
+// starts at the ball and passes the opponent; the kick's starts where the ball will leave once
+// the robot has turned, and meets it: "path blocked". The same ball would retrieve the same case
+// again and block it again; the coordinator passes over it until the ball has left its scope.
+TEST_F(CbrTeamTest, ACaseGivenUpForABlockedPathIsNotRetrievedAgainForTheSameBall) {
+  ball_ = Vec2(0.0, 0.16);
+  poses_[0] = Pose2(Vec2(0.0, 0.0), 0.5 * kPi);
+  poses_[1] = Pose2(Vec2(-1.5, -1.0), 0.0);
+  holding_[0] = true;
+  opponents_ = {Vec2(0.45, -0.08)};
+  CaseAction get, kick;
+  get.type = ActionType::kGetBall;
+  kick.type = ActionType::kKick;
+  kick.kick = "forward";
+  kick.target_F = Vec2(2.0, 0.16);
+  Case c;
+  c.name = c.source = "kick_up";
+  c.p_F_ball = ball_;
+  c.ball_scope = {0.5, 0.5};
+  c.teammates = {{1, Vec2(0.0, 0.0), {get, kick}}};
+  PlayOnly(c);
+  Run(20);
+  // The case and its mirror image (kicking 0.32 m further right) are each tried once...
+  const double tried = Counter("cases_retrieved");
+  ASSERT_GE(tried, 1.0);
+  ASSERT_LE(tried, 2.0);
+  EXPECT_EQ(Counter("aborts_path_blocked"), tried);
+  Run(50);
+  EXPECT_EQ(Counter("cases_retrieved"), tried);  // ...and not retrieved and blocked again:
+  EXPECT_GT(Counter("blocked_skipped"), 0.0);
+  EXPECT_FALSE(SendersOf(CbrMessageKind::kNoCase).empty());  // the default behaviour plays
+  // Once the ball has left the case's scope around where it was retrieved, the case is back.
+  holding_[0] = false;
+  ball_ = Vec2(0.0, 1.0);
+  Run(3);
+  ball_ = Vec2(0.0, 0.16);
+  holding_[0] = true;
+  Run(20);
+  EXPECT_GT(Counter("cases_retrieved"), tried);
+}
+
 TEST_F(CbrTeamTest, TheKickRaceWithoutTheRobotsTimesIsRefused) {
   team_params_.kick_race = true;
   team_params_.hold = HoldParams{};
