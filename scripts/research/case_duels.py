@@ -126,7 +126,7 @@ def first_cases(folder):
 
 def run(out, config_name, cases, trials, seed):
     config = json.loads((MODELS / "match" / f"{config_name}.json").read_text())
-    folder = out / config_name
+    folder = (out / config_name).resolve()
     folder.mkdir(parents=True, exist_ok=True)
     names = []
     for case in cases:
