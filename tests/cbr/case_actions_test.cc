@@ -9,6 +9,7 @@
 
 #include "cbr/case_base.h"
 #include "cbr/team_params.h"
+#include "tests/cbr/cbr_test_cases.h"
 #include "tests/support/temp_files.h"
 
 namespace foresight {
@@ -95,16 +96,8 @@ TEST_F(CaseActionsTest, AnOpponentOnThePassLineAbortsThePass) {
 // has it now. A robot facing +y holds the ball at its left; an opponent beside that ball's line
 // to the target, clear of the line from the launch point, does not abort the kick.
 TEST_F(CaseActionsTest, TheKickChecksThePathFromWhereTheBallWillLeave) {
-  CaseAction get, kick;
-  get.type = ActionType::kGetBall;
-  kick.type = ActionType::kKick;
-  kick.kick = "forward";
-  kick.target_F = Vec2(2.0, 0.0);
-  Case c;
-  c.name = c.source = "kick_on";
-  c.p_F_ball = Vec2(0.0, 0.0);
-  c.ball_scope = {0.5, 0.5};
-  c.teammates = {{1, Vec2(-0.3, 0.0), {get, kick}}};
+  const Case c = testing::GetAndKickCase("kick_on", Vec2(0.0, 0.0), Vec2(-0.3, 0.0), "forward",
+                                         Vec2(2.0, 0.0));
   const CasePlay play = MakeCasePlay(c, 0, 1, Vec2(0.0, 0.0), {0, -1, -1, -1}, retrieval_);
   Perception p;
   p.time_s = 1.0;

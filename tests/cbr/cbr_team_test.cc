@@ -13,6 +13,7 @@
 #include "cbr/team_params.h"
 #include "common/error.h"
 #include "models/model_paths.h"
+#include "tests/cbr/cbr_test_cases.h"
 #include "tests/support/temp_files.h"
 
 namespace foresight {
@@ -414,17 +415,7 @@ TEST_F(CbrTeamTest, ACaseGivenUpForABlockedPathIsNotRetrievedAgainForTheSameBall
   poses_[1] = Pose2(Vec2(-1.5, -1.0), 0.0);
   holding_[0] = true;
   opponents_ = {Vec2(0.45, -0.08)};
-  CaseAction get, kick;
-  get.type = ActionType::kGetBall;
-  kick.type = ActionType::kKick;
-  kick.kick = "forward";
-  kick.target_F = Vec2(2.0, 0.16);
-  Case c;
-  c.name = c.source = "kick_up";
-  c.p_F_ball = ball_;
-  c.ball_scope = {0.5, 0.5};
-  c.teammates = {{1, Vec2(0.0, 0.0), {get, kick}}};
-  PlayOnly(c);
+  PlayOnly(testing::GetAndKickCase("kick_up", ball_, Vec2(0.0, 0.0), "forward", Vec2(2.0, 0.16)));
   Run(20);
   // The case and its mirror image (kicking 0.32 m further right) are each tried once...
   const double tried = Counter("cases_retrieved");
