@@ -23,6 +23,11 @@ namespace py = pybind11;
 namespace foresight::python {
 
 std::filesystem::path ModelsDir(const std::optional<std::filesystem::path>& models) {
+  // '' is refused as every other argument's (FlagText): an empty folder name read the data from
+  // the working directory and failed later with a file that name does not explain.
+  if (models && models->empty()) {
+    throw InputError("models: empty value (pass None for the default)");
+  }
   return models ? *models : DefaultModelsDir();
 }
 

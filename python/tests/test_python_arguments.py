@@ -26,6 +26,9 @@ PROBLEM = MODELS / "cbr" / "problems" / "open_pass.json"
     (lambda: foresight.calibrate("nao", from_csv=""), "from_csv"),
     (lambda: foresight.calibrate("nao", physics=""), "physics"),
     (lambda: foresight.fidelity(samples=""), "samples"),
+    (lambda: foresight.fidelity(models=""), "models"),
+    (lambda: foresight.simulate(str(SITUATION), "forward", models=""), "models"),
+    (lambda: foresight.models_dir(models=""), "models"),
 ])
 def test_an_empty_argument_is_refused_not_taken_for_none(call, argument):
     with pytest.raises(foresight.InputError,
