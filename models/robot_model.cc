@@ -18,6 +18,7 @@
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <fstream>
+#include <new>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -181,11 +182,16 @@ std::vector<Eigen::Vector3d> ReadMeshVertices(const std::filesystem::path& path,
   try {
     scene =
         importer.ReadFile(path.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+  } catch (const std::bad_alloc&) {
+    throw;  // the machine's or the job's memory limit, not a bad file
   } catch (const std::exception& e) {
     Fail(file, element + ": cannot read mesh: " + e.what());
   }
   if (scene == nullptr || scene->mRootNode == nullptr) {
     std::string problem = importer.GetErrorString();
+    // Assimp catches its own exceptions and keeps only their text: running out of memory inside
+    // it reads "std::bad_alloc", which is the limit's, not the file's.
+    if (problem.find("bad_alloc") != std::string::npos) throw std::bad_alloc();
     std::replace(problem.begin(), problem.end(), '\n', ' ');
     Fail(file, element + ": cannot read mesh: " + problem);
   }

@@ -75,6 +75,24 @@ if limited calibrate calibrate --robot nao --kick forward --trials "$threads" --
   cmp -s calibrate-free.json calibrate-limited.json || fail "calibrate: another model under the limit"
 fi
 
+# Too little memory to read the robot's meshes is the limit's fault, not the mesh file's: at every
+# limit from far too little to just enough, a run ends with the out-of-memory line or succeeds,
+# never "cannot read mesh: std::bad_alloc" (which it said at 30 MB).
+for mesh_kb in 20000 24000 28000 30000 32000 36000 40000 44000; do
+  code=0
+  ( ulimit -v "$mesh_kb"; exec "$foresight" simulate --situation "$situation" --kick forward \
+    --trials 2 --base fixed --json ) >/dev/null 2>"mesh-$mesh_kb.err" || code=$?
+  if grep -q "cannot read mesh" "mesh-$mesh_kb.err"; then
+    fail "mesh under ulimit -v $mesh_kb: $(head -c 300 "mesh-$mesh_kb.err")"
+  elif [ "$code" -ne 0 ] && ! grep -q "out of memory" "mesh-$mesh_kb.err"; then
+    case "$code" in
+      2) fail "mesh under ulimit -v $mesh_kb: exit 2 without the out-of-memory line: $(head -c 300 "mesh-$mesh_kb.err")" ;;
+      127) ;;  # the loader could not map the program's libraries: it never ran
+      *) fail "mesh under ulimit -v $mesh_kb: exit $code: $(head -c 300 "mesh-$mesh_kb.err")" ;;
+    esac
+  fi
+done
+
 if [ -n "$module_dir" ]; then
   code=0
   PYTHONPATH=$module_dir "$python" - "$situation" "$threads" <<'PYTHON' || code=$?
