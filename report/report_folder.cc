@@ -106,6 +106,12 @@ std::optional<Marker> RequireOwn(const fs::path& dir, std::string_view flag) {
   std::error_code ec;
   const fs::file_status status = fs::symlink_status(dir, ec);
   if (!fs::exists(status)) return std::nullopt;
+  if (fs::is_symlink(status)) {
+    // The report replaces the folder whole (a rename), which would put a folder where the link
+    // is; the folder it names is the one to give.
+    Refuse(flag, dir, "is a symbolic link (to " + fs::read_symlink(dir, ec).string() +
+                          "): a report folder is replaced whole, give the folder itself");
+  }
   if (!fs::is_directory(status)) Refuse(flag, dir, "exists and is not a folder");
   if (fs::is_empty(dir, ec)) return std::nullopt;
   if (std::optional<Marker> marker = ReadMarker(dir)) return marker;

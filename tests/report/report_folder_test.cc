@@ -67,6 +67,19 @@ TEST(ReportFolderTest, AFolderOfTheUsersIsRefusedAndLeftAlone) {
               ::testing::HasSubstr("a report folder of its own"));
 }
 
+// A report folder given as a symbolic link is refused, saying so and naming the folder to give
+// (it said "exists and is not a folder" of a link to a folder), and the link is left alone.
+TEST(ReportFolderTest, AReportFolderGivenAsALinkIsRefusedNamingTheFolder) {
+  const fs::path parent = FreshDir("linked");
+  fs::create_directory(parent / "real");
+  fs::create_directory_symlink("real", parent / "link");
+  const std::string error = ErrorOf([&] { CheckReportFolder(parent / "link", "--out"); });
+  EXPECT_THAT(error, ::testing::StartsWith("--out: " + (parent / "link").string()));
+  EXPECT_THAT(error, ::testing::HasSubstr("is a symbolic link (to real): a report folder is "
+                                          "replaced whole, give the folder itself"));
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(parent / "link")));
+}
+
 TEST(ReportFolderTest, AFailedWriteKeepsTheOldReportAndLeavesNoTemporary) {
   const fs::path parent = FreshDir("failed");
   const fs::path dir = parent / "report";
