@@ -64,10 +64,13 @@ KickStart DrawKickStart(const PhysicsScene& scene, const KickRequest& request) {
   const KickMotion& motion = robot.motions[request.motion_index];
   const StanceClearance clearance(robot, motion, scene.field->ball.radius_m);
   KickStart start;
-  start.draw = DrawTrial(robot.spec.variation, scene.params.carpet, request.stream,
-                         [&](const Vec2& error_m) {
-                           return clearance.DepthInsideM(motion.p_R_ball + error_m) <= 0.0;
-                         });
+  // A ball spot no placement clears is the motion file's fault: the message names it.
+  WithFile(robot.spec.kick_motion_files.at(static_cast<std::size_t>(request.motion_index)).second.string(), [&] {
+    start.draw = DrawTrial(robot.spec.variation, scene.params.carpet, request.stream,
+                           [&](const Vec2& error_m) {
+                             return clearance.DepthInsideM(motion.p_R_ball + error_m) <= 0.0;
+                           });
+  });
   const TrialDraw& d = start.draw;
   // The robot stands so the ball lies at the motion's nominal spot, give or take its placement.
   start.intended_heading_rad = request.state.robot.theta_rad + request.rotation_rad;

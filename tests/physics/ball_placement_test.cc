@@ -5,6 +5,7 @@
 #include "physics/ball_placement.h"
 
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -120,6 +121,27 @@ TEST(BallPlacement, UnfilteredDrawsPutTheBallInsideTheNaoFoot) {
     deepest = std::max(deepest, DepthAtStart(scene, request, start));
   }
   EXPECT_GT(deepest, 0.01);
+}
+
+// A motion whose ball spot lies inside the robot, so that no placement clears it, is the
+// motion file's fault: the error names that file (it named none).
+TEST(BallPlacement, ABallSpotNoPlacementClearsNamesTheMotionFile) {
+  const auto data = testing::LoadPhysicsFixture("spl", false, "nao");
+  Robot robot = *data->robot;
+  const int forward = *robot.FindMotion("forward");
+  robot.motions[forward].p_R_ball = Vec2(0.0, 0.0);  // under the robot's root
+  PhysicsScene scene = testing::SceneOf(*data);
+  scene.robot = &robot;
+  KickRequest request;
+  request.motion_index = forward;
+  const std::string file = robot.spec.kick_motion_files[forward].second.string();
+  try {
+    DrawKickStart(scene, request);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_THAT(std::string(e.what()),
+                ::testing::StartsWith(file + ": trial placement: the ball lay inside the robot"));
+  }
 }
 
 TEST(BallPlacement, StanceClearanceSeesTheFootAndFreeSpace) {
