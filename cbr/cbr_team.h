@@ -59,14 +59,13 @@
 // could not reach its adapted position (the defender standing on it at its region's edge) was
 // retrieved and timed out every 10 s until the DG trial's 600 s safety cap (DG, seed 1: 3 of 2000
 // trials after the cases' holding revision).
-// After an abort for a blocked path the coordinator passes over that case while the ball stays
-// in its ball scope around the ball it was retrieved for (each such case, e.g. a case and its
-// mirror image) (counted, blocked_skipped): the same
-// ball and opponents would retrieve it again and block it again at the kick (the retrieval's
-// corridor starts at the ball, the kick's at where the turned robot will launch it). Other
-// cases and the default behaviour play meanwhile. Without it (DG, seed 1) 664 of scenario 1's
-// 1387 "path blocked" aborts came within 0.12 s of their case, mostly the same case retrieved
-// again each time; with it 134 of 831.
+// After an abort for a blocked path the coordinator passes over that case (every case so given
+// up, e.g. a case and then its mirror image; counted, blocked_skipped) while the ball stays in
+// its ball scope around the ball it was retrieved for: the same ball and opponents would
+// retrieve it again and block it again at the kick (the retrieval's corridor starts at the ball,
+// the kick's at where the turned robot will launch it). Other cases and the default behaviour
+// play meanwhile. Without it, about half of the "path blocked" aborts came a step or two after
+// their case, the same case retrieved again each time (docs/EXPERIMENTS.md, section E).
 #pragma once
 
 #include <array>

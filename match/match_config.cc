@@ -261,12 +261,13 @@ MatchConfig LoadMatchConfig(const std::string& reference, const std::filesystem:
         ResolveModelFile(name, DataFolder::kMatchScenarios, c.file.parent_path(), models_dir);
     c.scenarios.push_back(
         LoadScenario(file, static_cast<int>(c.opponents.size()), field, robot));
-    for (std::size_t i = 0; i + 1 < c.scenarios.size(); ++i) {
-      if (c.scenarios[i].name == c.scenarios.back().name) {
-        root.Fail("scenarios", "two scenarios are named '" + c.scenarios.back().name +
-                                   "' (their output files would be the same): " +
-                                   file.string() + " and the " + std::to_string(i + 1) +
-                                   ". of the list");
+    const std::size_t last = c.scenarios.size() - 1;
+    for (std::size_t i = 0; i < last; ++i) {
+      if (c.scenarios[i].name == c.scenarios[last].name) {
+        root.Fail("scenarios", "scenarios[" + std::to_string(i) + "] and scenarios[" +
+                                   std::to_string(last) + "] are both named '" +
+                                   c.scenarios[last].name +
+                                   "' (their output files would be the same)");
       }
     }
   }

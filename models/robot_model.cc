@@ -18,9 +18,9 @@
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <fstream>
-#include <new>
 #include <map>
 #include <mutex>
+#include <new>
 #include <sstream>
 
 #include "common/checks.h"

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "common/error.h"
 #include "common/random.h"
@@ -65,7 +66,9 @@ KickStart DrawKickStart(const PhysicsScene& scene, const KickRequest& request) {
   const StanceClearance clearance(robot, motion, scene.field->ball.radius_m);
   KickStart start;
   // A ball spot no placement clears is the motion file's fault: the message names it.
-  WithFile(robot.spec.kick_motion_files.at(static_cast<std::size_t>(request.motion_index)).second.string(), [&] {
+  const std::filesystem::path& motion_file =
+      robot.spec.kick_motion_files.at(static_cast<std::size_t>(request.motion_index)).second;
+  WithFile(motion_file.string(), [&] {
     start.draw = DrawTrial(robot.spec.variation, scene.params.carpet, request.stream,
                            [&](const Vec2& error_m) {
                              return clearance.DepthInsideM(motion.p_R_ball + error_m) <= 0.0;

@@ -3,7 +3,7 @@
 case's problem (its ball, its robots, its opponents), as a passing scenario, the same random
 numbers for both teams. It answers "does the team play better than its default where this case
 applies?" for every case, on situations the shipped scenarios do not hold. A research aid for
-writing cases (issue 44). usage: case_duels.py OUT_DIR [TRIALS] [SEED] [CASE ...]
+writing cases. usage: case_duels.py OUT_DIR [TRIALS] [SEED] [CASE ...]
 
 The scenario of a case (assumptions, no source: the cases give no second attacker and leave out
 opponents far from the ball):

@@ -3,7 +3,7 @@
 kicked in ("default" outside a case), how often an attacker touched the ball next, how often an
 opponent did, and how often the trial ended first (and how). It shows which kicks keep the ball
 for the team and which give it to the opponents, from a passing run's events CSV. A research aid
-for the CBR team (issue 44). usage: next_touch.py RUN_DIR [ROWS]     (default 30 rows per team)"""
+for the CBR team. usage: next_touch.py RUN_DIR [ROWS]     (default 30 rows per team)"""
 import collections
 import csv
 import re

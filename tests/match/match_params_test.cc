@@ -180,7 +180,8 @@ TEST_F(ConfigTest, AScenarioNameThatCannotNameAFileIsAnError) {
     EXPECT_EQ(error.find('\x1b'), std::string::npos);
   }
   const std::string twice = Load(Replace(Shipped("dg.json"), "\"dg_4\"", "\"dg_1\""));
-  EXPECT_THAT(twice, HasSubstr("config.json: scenarios: two scenarios are named 'dg_1'"));
+  EXPECT_THAT(twice, HasSubstr("config.json: scenarios: scenarios[0] and scenarios[3] are both "
+                               "named 'dg_1'"));
 }
 
 TEST_F(ConfigTest, UnknownScenarioNamesTheMissingFile) {
