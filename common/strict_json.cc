@@ -161,11 +161,29 @@ std::string KeyBefore(std::string_view text, std::size_t at) {
   return ", field \"" + std::string(text.substr(open + 1, close - open - 1)) + "\"";
 }
 
+// nlohmann quotes everything its lexer read of the failing token ("last read: '...'"), which
+// for a file that is no JSON (an image, a log) is its first bytes, up to the whole file: the
+// message keeps the last kMaxQuotedBytes of it, where the error is (line and column say where).
+constexpr std::size_t kMaxQuotedBytes = 40;
+
+std::string CutLastRead(std::string what) {
+  const std::string marker = "; last read: '";
+  const auto open = what.find(marker);
+  if (open == std::string::npos) return what;
+  const auto start = open + marker.size();
+  const auto close = what.rfind('\'');
+  if (close == std::string::npos || close < start || close - start <= kMaxQuotedBytes) return what;
+  auto from = close - kMaxQuotedBytes;
+  // Not inside a UTF-8 sequence: skip its continuation bytes.
+  while (from < close && (static_cast<unsigned char>(what[from]) & 0xC0) == 0x80) ++from;
+  return what.substr(0, start) + "..." + what.substr(from);
+}
+
 // "syntax error while parsing value - invalid literal; last read: 'x'" without the prefix.
 std::string ParseProblem(const Json::parse_error& e) {
   std::string what = e.what();
   auto colon = what.find(": ", what.find("parse error"));
-  return colon == std::string::npos ? what : what.substr(colon + 2);
+  return CutLastRead(colon == std::string::npos ? what : what.substr(colon + 2));
 }
 
 // nlohmann's other exceptions, e.g. out_of_range.406 "number overflow parsing '1e999'", located

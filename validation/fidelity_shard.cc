@@ -67,11 +67,13 @@ ActionEvaluation ReadEvaluation(const ShardValue& v, const EvaluationParams& par
   if (e.samples > 0 &&
       e.too_risky != Trimmed(e.Count(Category::kOut), e.Count(Category::kOwnGoal),
                              MaxOuts(params, e.samples))) {
-    v["too_risky"].Fail("must follow from p_out and the own goals");
+    v["too_risky"].Fail(std::string("must follow from p_out and the own goals, ") +
+                        (e.too_risky ? "false, got true" : "true, got false"));
   }
   e.trimmed_utility = v["trimmed_utility"].Double();
-  if (e.trimmed_utility != (e.too_risky ? 0.0 : e.utility)) {
-    v["trimmed_utility"].Fail("must be the utility, or 0 when too risky");
+  if (const double trimmed = e.too_risky ? 0.0 : e.utility; e.trimmed_utility != trimmed) {
+    v["trimmed_utility"].Fail("must be the utility, or 0 when too risky, " +
+                              FormatNumber(trimmed) + ", got " + FormatNumber(e.trimmed_utility));
   }
   return e;
 }

@@ -66,6 +66,17 @@ TEST(StrictJsonTest, SyntaxErrorsAndOverflowsKeepTheirPlace) {
               HasSubstr("t.json: invalid JSON at line 1, column "));
 }
 
+// A file that is no JSON is not quoted whole: nlohmann's "last read" keeps its last 40 bytes.
+TEST(StrictJsonTest, ASyntaxErrorQuotesOnlyTheBytesBeforeIt) {
+  const std::string text = "\"" + std::string(5000, 'a') + "bcdefghij\x01\"";
+  const std::string message = InputErrorMessage([&] { ParseStrictJson(text, "n.json"); });
+  EXPECT_THAT(message, HasSubstr("n.json: invalid JSON at line 1, column 5011: "));
+  EXPECT_THAT(message, HasSubstr("; last read: '..." + std::string(23, 'a') + "bcdefghij"));
+  EXPECT_LT(message.size(), 300u) << message;
+  EXPECT_THAT(InputErrorMessage([] { ParseStrictJson("{\"a\": xyz}", "s.json"); }),
+              HasSubstr("last read: '\"a\": x'"));
+}
+
 // Documents of n repetitions of one shape; every key has the same length, so the text of 2n is
 // twice that of n (up to the frame).
 std::string Key(int i) {

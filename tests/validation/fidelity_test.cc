@@ -350,7 +350,7 @@ TEST(FidelityViewsTest, PagesComeFromTheRecordedTrialsAndShardsGiveTheSameBytes)
   }
   // A value that does not follow from the others is refused with the value found beside the one
   // it must be.
-  for (const char* field : {"utility", "p"}) {
+  for (const char* field : {"utility", "trimmed_utility", "p"}) {
     std::vector<ShardPart> tampered = parts;
     nlohmann::json& e = tampered[0].results[0]["candidates"][0]["coarse"];
     nlohmann::json& value = std::string(field) == "p" ? e["p"][0] : e[field];
@@ -362,6 +362,16 @@ TEST(FidelityViewsTest, PagesComeFromTheRecordedTrialsAndShardsGiveTheSameBytes)
       EXPECT_THAT(error.what(), HasSubstr(", got " + FormatNumber(value.get<double>())))
           << error.what();
     }
+  }
+  std::vector<ShardPart> flipped = parts;
+  nlohmann::json& risky = flipped[0].results[0]["candidates"][0]["coarse"]["too_risky"];
+  risky = !risky.get<bool>();
+  try {
+    MergeFidelityShards(set, settings, flipped);
+    ADD_FAILURE() << "a flipped too_risky was merged";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr(risky.get<bool>() ? "false, got true" : "true, got false"))
+        << error.what();
   }
   const auto pages = FidelityViewPages(whole, settings, testing::ModelsDir());
   ASSERT_EQ(pages.size(), shown.size());
