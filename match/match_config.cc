@@ -257,8 +257,12 @@ MatchConfig LoadMatchConfig(const std::string& reference, const std::filesystem:
   const auto names = root.StringArray("scenarios");
   if (names.empty()) root.Fail("scenarios", "must list at least one scenario");
   for (const std::string& name : names) {
-    const std::filesystem::path file =
-        ResolveModelFile(name, DataFolder::kMatchScenarios, c.file.parent_path(), models_dir);
+    const std::string key = "scenarios[" + std::to_string(c.scenarios.size()) + "]";
+    std::filesystem::path file;
+    WithFile(c.file.string(), [&] {
+      file = NamedFile(key, ResolveModelFile(name, DataFolder::kMatchScenarios,
+                                             c.file.parent_path(), models_dir));
+    });
     c.scenarios.push_back(
         LoadScenario(file, static_cast<int>(c.opponents.size()), field, robot));
     const std::size_t last = c.scenarios.size() - 1;

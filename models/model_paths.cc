@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "common/enum_names.h"
+#include "common/error.h"
 
 namespace foresight {
 namespace {
@@ -79,6 +80,15 @@ std::filesystem::path DataFolderPath(const std::filesystem::path& models_dir, Da
 std::filesystem::path DataFile(const std::filesystem::path& models_dir, DataFolder folder,
                                const std::string& name) {
   return DataFolderPath(models_dir, folder) / (name + ".json");
+}
+
+std::filesystem::path NamedFile(std::string_view key, const std::filesystem::path& file) {
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(file, ec)) return file;
+  const bool exists = std::filesystem::exists(file, ec);
+  throw InputError(std::string(key) + ": refers to " + file.string() +
+                   (exists ? ", which is not a regular file (a device or a pipe?)"
+                           : ", which does not exist"));
 }
 
 std::filesystem::path ResolveModelFile(const std::string& reference, DataFolder folder,

@@ -53,4 +53,10 @@ std::filesystem::path ResolveModelFile(const std::string& reference, DataFolder 
                                        const std::filesystem::path& referring_dir,
                                        const std::filesystem::path& models_dir);
 
+// `file`, named by the field `key` of a data file; an InputError against that field when it is no
+// regular file ("kicks: refers to F, which does not exist", or "..., which is not a regular
+// file" for a device or a pipe), for the caller to prefix with the naming file as it prefixes
+// its other errors.
+std::filesystem::path NamedFile(std::string_view key, const std::filesystem::path& file);
+
 }  // namespace foresight

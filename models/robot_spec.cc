@@ -194,6 +194,7 @@ RobotSpec LoadRobotSpec(const std::filesystem::path& file) {
   const std::string urdf = root.String("urdf");
   if (urdf.empty()) root.Fail("urdf", "must name the robot's URDF file");
   spec.urdf_file = Resolve(dir, urdf);
+  WithFile(where, [&] { NamedFile("urdf", spec.urdf_file); });
   spec.base_height_m = root.Number("base_height_m");
   WithFile(where, [&] {
     RequirePositive("base_height_m", spec.base_height_m);
@@ -220,6 +221,9 @@ RobotSpec LoadRobotSpec(const std::filesystem::path& file) {
     const std::string motion = kick.String("motion");
     if (motion.empty()) kick.Fail("motion", "must name the kick's motion file");
     spec.kick_motion_files.emplace_back(name, Resolve(dir, motion));
+    WithFile(where, [&] {
+      NamedFile(kick.PathOf("motion"), spec.kick_motion_files.back().second);
+    });
     if (kick.Has("launch_max_mps") && !kick.Has("launch_min_mps")) {
       kick.Fail("launch_max_mps", "needs launch_min_mps");
     }

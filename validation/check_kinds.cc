@@ -41,7 +41,8 @@ struct UniformWorld {
 UniformWorld LoadUniformWorld(const std::string& field, const CheckSpec& spec,
                               const std::filesystem::path& models) {
   UniformWorld w;
-  w.field = LoadFieldSpec(ResolveModelFile(field, DataFolder::kFields, spec.dir, models));
+  w.field = LoadFieldSpec(
+      NamedFile("field", ResolveModelFile(field, DataFolder::kFields, spec.dir, models)));
   w.params = LoadPhysicsParams(DataFile(models, DataFolder::kPhysics, w.field.name));
   w.params.carpet.deceleration_sigma_rel = 0.0;
   w.params.carpet.patch_sigma_rel = 0.0;
@@ -173,7 +174,8 @@ PhysicsCalibrationSettings CalibrationSettingsOf(const std::string& robot, const
                                                  const std::filesystem::path& models, int threads) {
   PhysicsCalibrationSettings settings;
   settings.robot = robot;
-  settings.kicks_file = ResolveModelFile(kicks, DataFolder::kKicks, spec.dir, models);
+  settings.kicks_file =
+      NamedFile("kicks", ResolveModelFile(kicks, DataFolder::kKicks, spec.dir, models));
   settings.trials = trials;
   settings.threads = threads;
   settings.base = spec.base;
@@ -317,7 +319,8 @@ void Prepare(const CalibrationBandCheck& c, const CheckSpec& spec,
 void Prepare(const FidelityFloorCheck& c, const CheckSpec& spec,
              const std::filesystem::path& models) {
   SituationOverrides overrides;
-  overrides.kicks_file = ResolveModelFile(c.kicks, DataFolder::kKicks, spec.dir, models);
+  overrides.kicks_file =
+      NamedFile("kicks", ResolveModelFile(c.kicks, DataFolder::kKicks, spec.dir, models));
   LoadFidelitySet(SituationsOf(c, spec, models), models, overrides);
 }
 

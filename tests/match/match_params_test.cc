@@ -184,9 +184,10 @@ TEST_F(ConfigTest, AScenarioNameThatCannotNameAFileIsAnError) {
                                "named 'dg_1'"));
 }
 
-TEST_F(ConfigTest, UnknownScenarioNamesTheMissingFile) {
+TEST_F(ConfigTest, UnknownScenarioNamesTheMissingFileAndTheFieldThatNamesIt) {
   const std::string error = Load(Replace(Shipped("dg.json"), "\"dg_4\"", "\"dg_9\""));
-  EXPECT_THAT(error, HasSubstr("dg_9.json"));
+  EXPECT_THAT(error, HasSubstr("config.json: scenarios[3]: refers to "));
+  EXPECT_THAT(error, HasSubstr("dg_9.json, which does not exist"));
 }
 
 TEST_F(ConfigTest, AScenarioAMatchCannotStartFromIsAnErrorNamingFileFieldAndValue) {

@@ -197,7 +197,9 @@ TEST(RobotSpecTest, AUrdfThatIsNotARegularFileIsRefused) {
   for (const std::string& urdf : {std::string("/dev/zero"), fifo.string()}) {
     const std::filesystem::path models = TesterModels(
         "urdf_device", {"robot.json", "\"urdf\": \"tester.urdf\"", "\"urdf\": \"" + urdf + "\""});
-    EXPECT_EQ(RobotError(models), urdf + ": is not a regular file (a device or a pipe?)");
+    EXPECT_EQ(RobotError(models),
+              (models / "robots" / "tester" / "robot.json").string() + ": urdf: refers to " + urdf +
+                  ", which is not a regular file (a device or a pipe?)");
   }
 }
 
@@ -458,12 +460,23 @@ TEST(RobotSpecTest, NotesAreNotAJointOfTheStandingPose) {
   EXPECT_EQ(LoadRobotSpec(SpecFile(models)).standing_pose_rad.size(), 2u);
 }
 
-TEST(RobotSpecTest, MissingMotionFileIsNamed) {
+// A file robot.json names that does not exist is reported against robot.json's field.
+TEST(RobotSpecTest, MissingMotionFileIsNamedWithTheFieldThatNamesIt) {
   const std::filesystem::path models =
       TesterModels("missing_motion", {"robot.json", "motions/side.json", "motions/no_such.json"});
-  EXPECT_EQ(
-      RobotError(models),
-      (models / "robots" / "tester" / "motions" / "no_such.json").string() + ": cannot open file");
+  const std::filesystem::path robot = models / "robots" / "tester";
+  EXPECT_THAT(RobotError(models),
+              ::testing::MatchesRegex(".*robot\\.json: kicks\\[[0-9]\\]\\.motion: refers to .*"
+                                      "motions/no_such\\.json, which does not exist"));
+  EXPECT_THAT(RobotError(models), ::testing::StartsWith((robot / "robot.json").string()));
+}
+
+TEST(RobotSpecTest, MissingUrdfIsNamedWithTheFieldThatNamesIt) {
+  const std::filesystem::path models =
+      TesterModels("missing_urdf", {"robot.json", "\"tester.urdf\"", "\"gone.urdf\""});
+  const std::filesystem::path robot = models / "robots" / "tester";
+  EXPECT_EQ(RobotError(models), (robot / "robot.json").string() + ": urdf: refers to " +
+                                    (robot / "gone.urdf").string() + ", which does not exist");
 }
 
 // The shipped robots: each loads with its body and kick motions that fit its joints (the NAO's

@@ -205,6 +205,21 @@ TEST(PhysicsChecksTest, EveryCheckIsPreparedBeforeAnyRuns) {
   }
 }
 
+// A kick model or field a check names that does not exist is reported against the check's field.
+TEST(PhysicsChecksTest, AMissingFileIsReportedAgainstTheFieldThatNamesIt) {
+  const std::string bad_kicks =
+      R"({"name": "bad_kicks", "kind": "kick_direction", "robot": "nao", "kick": "forward", "kicks": "no_such_kicks", "trials": 2, "max_error_deg": 5})";
+  const auto file = Spec("missing_kicks.json", bad_kicks);
+  std::string message = "no error";
+  try {
+    RunChecks(LoadCheckSuite(file), testing::ModelsDir(), 1, [](const CheckResult&) {});
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_THAT(message, HasSubstr(file.string() + ": checks[0] (check 'bad_kicks'): kicks: refers to "));
+  EXPECT_THAT(message, HasSubstr("no_such_kicks.json, which does not exist"));
+}
+
 // A file a spec names is found beside the spec, wherever the command runs.
 TEST(PhysicsChecksTest, SpecPathsAreRelativeToTheSpecsFolder) {
   const std::filesystem::path dir = testing::FreshTempDir("spec_paths");
