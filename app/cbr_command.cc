@@ -1,5 +1,6 @@
 #include "app/cbr_command.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
@@ -9,6 +10,7 @@
 #include "app/cli_values.h"
 #include "cbr/case_base.h"
 #include "cbr/case_holding.h"
+#include "cbr/case_opponents.h"
 #include "cbr/case_reach.h"
 #include "cbr/own_situation.h"
 #include "cbr/problem.h"
@@ -107,6 +109,34 @@ int RunRetrieve(const CbrOptions& o, const fs::path& models) {
 // wrong, short enough to read (a case base of thousands of copies gives one page, not gigabytes).
 constexpr std::size_t kMaxListedOverlaps = 20;
 
+// A case whose opponents none of the case base's configurations can field at once describes a
+// situation that never arises (cbr/case_opponents.h). Appends its findings to `s`; the count.
+int CheckFielding(const LoadedCaseBase& base, const fs::path& models, std::string& s) {
+  if (base.configurations.empty()) {
+    s += "opponent regions: not checked (the case base names no configurations)\n";
+    return 0;
+  }
+  std::vector<std::vector<FieldBox>> regions;
+  std::string names;
+  for (const std::string& config : base.configurations) {
+    regions.push_back(DefaultOpponentRegions(config, models));
+    names += (names.empty() ? "" : ", ") + OneLine(config);
+  }
+  int unfielded = 0;
+  for (const Case& c : HandWritten(base.cases)) {
+    const bool fielded = std::any_of(regions.begin(), regions.end(), [&](const auto& r) {
+      return FieldsCaseOpponents(c, r);
+    });
+    if (fielded) continue;
+    ++unfielded;
+    s += "error: case " + OneLine(c.name) + ": no configuration (" + names +
+         ") has its opponents each in a home region of its own: a situation that never arises\n";
+  }
+  s += Format("cases whose opponents no configuration fields (%s): %d of %zu\n", names.c_str(),
+              unfielded, base.cases.HandWrittenCount());
+  return unfielded;
+}
+
 int RunCheck(const CbrOptions& o, const fs::path& models) {
   const fs::path path = CaseBasePath(o, models);
   const LoadedCaseBase base = LoadCaseBase(path, models);
@@ -182,7 +212,8 @@ int RunCheck(const CbrOptions& o, const fs::path& models) {
   }
   s += Format("cases holding the ball beyond the holding limit (%.2f s): %d of %zu\n",
               hold.hold_limit_s, overheld, cases.HandWrittenCount());
-  const bool ok = blocked == 0 && unplayable == 0 && overheld == 0;
+  const int unfielded = CheckFielding(base, models, s);
+  const bool ok = blocked == 0 && unplayable == 0 && overheld == 0 && unfielded == 0;
   s += ok ? "case base OK\n" : "case base FAILED\n";
   Print(s);
   return ok ? 0 : 1;

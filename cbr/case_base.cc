@@ -152,12 +152,18 @@ LoadedCaseBase LoadCaseBase(const std::filesystem::path& path,
   const std::filesystem::path dir = settings.parent_path();
   const JsonDocument doc = JsonDocument::Load(settings);
   const JsonObject root = doc.Root();
-  root.RejectUnknownKeys({"field", "kicks", "kick_mirrors", "cases"});
+  root.RejectUnknownKeys({"field", "kicks", "kick_mirrors", "configurations", "cases"});
 
   LoadedCaseBase loaded;
   loaded.rules.field = LoadFieldSpec(Resolve(root, "field", DataFolder::kFields, dir, models_dir));
   loaded.rules.kicks = LoadKickModel(Resolve(root, "kicks", DataFolder::kKicks, dir, models_dir));
   loaded.kick_mirrors = ReadKickMirrors(root, loaded.rules.kicks);
+  if (root.Has("configurations")) {
+    loaded.configurations = root.StringArray("configurations");
+    for (const std::string& name : loaded.configurations) {
+      if (name.empty()) root.Fail("configurations", "names must not be empty");
+    }
+  }
 
   std::vector<std::filesystem::path> files;
   if (root.Has("cases")) {

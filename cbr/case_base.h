@@ -9,6 +9,8 @@
 //   {"notes": "...",                                   optional
 //    "field": "four_legged", "kicks": "aibo_ers7",     bare names in MODELS_DIR or *.json paths
 //    "kick_mirrors": {"head_kick_left": "head_kick_right"},   left/right pairs, both kicks known
+//    "configurations": ["dg", "2d"],                   optional: the opponent configurations
+//                                                      (models/match) the cases are written for
 //    "cases": ["a.json", ...]}                         required for a file, optional for a folder
 // Every hand-written case yields four stored cases: itself and its mirror_y, mirror_x and
 // mirror_xy copies ("<name>/mirror_y", ...). Hand-written names must be unique.
@@ -52,6 +54,7 @@ struct LoadedCaseBase {
   CaseBase cases;
   CaseRules rules;  // the field and kick model the cases were checked against
   KickMirrors kick_mirrors;
+  std::vector<std::string> configurations;  // "configurations", as written (cbr check uses them)
 };
 
 // Every kick a case of `base` plays must be a kick of `kicks` (the model of the robots that play

@@ -62,6 +62,19 @@ HoldParams DefaultHoldParams(const std::filesystem::path& models_dir) {
   return HoldParamsFor(LoadRobotParams(sim.robot, models_dir), sim);
 }
 
+std::vector<FieldBox> DefaultOpponentRegions(const std::string& config,
+                                             const std::filesystem::path& models_dir) {
+  const SimulationParams sim =
+      LoadSimulationParams(LoadPassingParams("passing", models_dir).simulation, models_dir);
+  const FieldSpec field =
+      LoadFieldSpec(ResolveModelFile(sim.field, DataFolder::kFields, ".", models_dir));
+  const MatchConfig c =
+      LoadMatchConfig(config, models_dir, field, sim, LoadRobotParams(sim.robot, models_dir));
+  std::vector<FieldBox> regions;
+  for (const auto& opponent : c.opponents) regions.push_back(opponent.region);
+  return regions;
+}
+
 void PassingParams::Validate() const {
   RequireInRange("confidence", confidence, 0.5, 0.999);
   RequireInRange("example_trial", example_trial, 0, 1000000);

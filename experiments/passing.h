@@ -53,6 +53,10 @@ HoldParams HoldParamsFor(const RobotParams& robot, const SimulationParams& sim);
 // The same for the passing experiment's default simulation ("passing"): the robot and rules the
 // shipped cases are played under, which `foresight cbr check` judges them by.
 HoldParams DefaultHoldParams(const std::filesystem::path& models_dir);
+// The home regions of the opponents of match configuration `config` ("dg", "2d" or a file) under
+// the passing experiment's default simulation, in the configuration's order.
+std::vector<FieldBox> DefaultOpponentRegions(const std::string& config,
+                                             const std::filesystem::path& models_dir);
 
 // Every input of one run, loaded and checked.
 struct PassingSetup {

@@ -37,6 +37,7 @@
 #include "cbr/case_base.h"
 #include "cbr/case_file.h"
 #include "cbr/case_holding.h"
+#include "cbr/case_opponents.h"
 #include "cbr/case_play.h"
 #include "cbr/case_reach.h"
 #include "cbr/cbr_team.h"

@@ -53,7 +53,7 @@ class CbrCommandTest : public ForesightRun {
 };
 
 const std::vector<Example> kExamples{{"open_pass", "front_pass"},
-                                     {"blocked_pass", "front_pass_dg"},
+                                     {"blocked_pass", "front_2d"},
                                      {"defended_pass", "front_pass_dg"},
                                      {"nothing_retrieved", ""}};
 
@@ -167,6 +167,8 @@ TEST_F(CbrCommandTest, CheckOnTheShippedBaseCountsAndPasses) {
   EXPECT_THAT(r.out, HasSubstr("cases asking more than their kicks carry (aibo_ers7, reach at 2 "
                                "sd): 0 of 39\n"));
   EXPECT_THAT(r.out, HasSubstr("cases holding the ball beyond the holding limit (2.70 s): 0 of 39\n"));
+  EXPECT_THAT(r.out,
+              HasSubstr("cases whose opponents no configuration fields (dg, 2d): 0 of 39\n"));
   EXPECT_THAT(r.out, HasSubstr("case base OK\n"));
   EXPECT_EQ(r.exit_code, 0);
 }
@@ -216,6 +218,29 @@ TEST_F(CbrCommandTest, CheckFailsOnACaseBlockedByItsOwnOpponent) {
                                "(2.45, 0.00) is on its ball path"));
   EXPECT_THAT(r.out, HasSubstr("cases blocked by their own opponents: 1 of 1\n"));
   EXPECT_EQ(r.exit_code, 1);
+}
+
+// Two opponents beyond the 2D midfield defender's region (x <= 1.3 m) and no goalie among them:
+// no configuration can field them at once, so the case describes a situation that never arises.
+TEST_F(CbrCommandTest, CheckFailsOnACaseWhoseOpponentsNoConfigurationFields) {
+  nlohmann::json c = nlohmann::json::parse(ReadFile(ShippedCase("midfront_pass_2d")));
+  c["name"] = "two_defenders_ahead";
+  c["opponents"][0]["x_m"] = 1.6;
+  Write("unfielded.json", c.dump());
+  nlohmann::json base = nlohmann::json::parse(ReadFile(SmallBase({})));
+  base["cases"] = {(work() / "unfielded.json").string()};
+  base["configurations"] = {"dg", "2d"};
+  Write("unfielded_base.json", base.dump());
+  const RunResult r = Cbr({"check", "--case-base", (work() / "unfielded_base.json").string()});
+  EXPECT_THAT(r.out, HasSubstr("error: case two_defenders_ahead: no configuration (dg, 2d) has its "
+                               "opponents each in a home region of its own"));
+  EXPECT_THAT(r.out,
+              HasSubstr("cases whose opponents no configuration fields (dg, 2d): 1 of 1\n"));
+  EXPECT_EQ(r.exit_code, 1);
+  base.erase("configurations");
+  Write("unfielded_base.json", base.dump());
+  EXPECT_THAT(Cbr({"check", "--case-base", (work() / "unfielded_base.json").string()}).out,
+              HasSubstr("opponent regions: not checked (the case base names no configurations)"));
 }
 
 // A case whose robot dribbles 0.67 m round a defender and then turns to shoot holds the ball 8.3
