@@ -25,6 +25,30 @@ bool Near(const Vec2& a, const Vec2& b, double tolerance_m) {
   return (a - b).norm() <= tolerance_m;
 }
 
+// Whether the actions before `action` leave the robot where the case adapted it (waits and
+// turns on the spot move no robot).
+bool StillAtAdaptedSpot(const std::vector<CaseAction>& actions, std::size_t action) {
+  for (std::size_t i = 0; i < action; ++i) {
+    if (actions[i].type != ActionType::kWait && actions[i].type != ActionType::kTurn) return false;
+  }
+  return true;
+}
+
+// A receiver awaiting its pass. Under dependent positioning it executes before it has reached
+// its adapted position (sec. 4.2), and the pass goes to that position (sec. 3.3.1: the ball
+// path is computed from the case's positions; Fig. 13a: "robot B moves towards the front to
+// receive the ball"): until the pass is made it walks on to it, facing the ball, unless an
+// earlier action of its own took it elsewhere; there it turns to face the ball.
+RobotCommand AwaitPass(const CasePlay& play, int me, const std::vector<CaseAction>& actions,
+                       std::size_t action, const Perception& p, double tolerance_m, double dt_s) {
+  const double face_ball = HeadingTowards(p.pose.p_F, p.p_F_ball);
+  const Vec2& spot = play.adapted_F[static_cast<std::size_t>(me)];
+  if (StillAtAdaptedSpot(actions, action) && !Near(p.pose.p_F, spot, tolerance_m)) {
+    return WalkTowards(p.pose, spot, face_ball, dt_s);
+  }
+  return TurnTowards(p.pose, face_ball, dt_s);
+}
+
 // The heading a kick or pass is aimed at (the trajectory's end, or the goal), for the robot
 // holding the ball at p_F_ball.
 double AimHeading(const FuzzyTrajectory* trajectory, const KickSpec& kick, const Perception& p,
@@ -178,7 +202,7 @@ ActionStep StepActions(const CasePlay& play, int me, ActionProgress& s, const Pe
                              !Near(p.p_F_ball, play.p_F_ball, ctx.team->pass_seen_m);
           const bool heard = s.passes_heard > s.receives_done;
           if (!heard && !((s.passer_had_ball || moved) && !near)) {
-            step.command = TurnTowards(p.pose, face_ball, dt);
+            step.command = AwaitPass(play, me, actions, s.action, p, tol, dt);
             return step;
           }
         }

@@ -15,10 +15,12 @@
 //            dodge (match/reactive_team.h), which walks it 45 degrees off the line away from
 //            the opponent, away from the case's aim: the case is the plan. The case is given up
 //            when the ball is lost or the opponent stands on its path (path_blocked).
-//   receive: face the ball until the pass is made (the passer's message, or, should the message
-//            be lost, the ball seen pass_seen_m away from the passer after it had it, or, for the
-//            first pass, away from both the passer and where the case found it), then get
-//            the ball; done when holding it.
+//   receive: until the pass is made, walk on to the adapted position facing the ball (under
+//            dependent positioning the robot may not be there yet), unless an earlier action of
+//            its own moved it, and there face the ball; the pass is made: the passer's message,
+//            or, should the message be lost, the ball seen pass_seen_m away from the passer
+//            after it had it, or, for the first pass, away from both the passer and where the
+//            case found it. Then get the ball; done when holding it.
 //   go_to, dribble: walk (with the ball for dribble) to the adapted target; done within
 //            arrive_tolerance_m. A dribble also ends early enough to aim the kick or pass that
 //            follows it before the holding rule forces the ball away: when the time the robot

@@ -137,6 +137,39 @@ TEST_F(CaseActionsTest, TheReceiverWaitsForThePassHeardOrSeen) {
   EXPECT_EQ(StepActions(play_, 1, unheard, p, ctx_).command.kind, CommandKind::kGetBall);
 }
 
+// Under dependent positioning a receiver executes before it reaches its adapted position; until
+// the pass it walks on to that position (where the pass goes), facing the ball, and there only
+// turns. After an action of its own that moved it (a go_to), it waits where it is.
+TEST_F(CaseActionsTest, TheReceiverWalksOnToItsSpotUntilThePass) {
+  Perception p;
+  p.time_s = 1.0;
+  p.self = 1;
+  p.pose = Pose2(Vec2(0.4, 0.3), -0.5 * kPi);  // 0.81 m short of its spot (0, 1)
+  p.p_F_ball = Vec2(0.0, 0.0);
+  p.teammates = {Pose2(Vec2(-0.16, 0.0), 0.0), p.pose};
+  ActionProgress progress;
+  const RobotCommand walk = StepActions(play_, 1, progress, p, ctx_).command;
+  ASSERT_EQ(walk.kind, CommandKind::kWalk);
+  const Vec2 v_F = p.pose.ToField(walk.v_R_mps) - p.pose.p_F;  // the velocity turned into F
+  EXPECT_GT(v_F.dot((Vec2(0.0, 1.0) - p.pose.p_F).normalized()), 0.9 * v_F.norm());
+  EXPECT_GT(v_F.norm(), 0.0);
+  p.pose = Pose2(Vec2(0.0, 1.0), -0.4 * kPi);  // at its spot: it turns to the ball, no step
+  const RobotCommand turn = StepActions(play_, 1, progress, p, ctx_).command;
+  EXPECT_EQ(turn.v_R_mps.norm(), 0.0);
+  EXPECT_LT(turn.turn_radps, 0.0);
+
+  Case moved = c_;
+  CaseAction go_to;
+  go_to.type = ActionType::kGoTo;
+  go_to.target_F = Vec2(0.4, 0.3);
+  moved.teammates[1].actions.insert(moved.teammates[1].actions.begin(), go_to);
+  const CasePlay play = MakeCasePlay(moved, 0, 1, Vec2(0.0, 0.0), {0, 1, -1, -1}, retrieval_);
+  p.pose = Pose2(Vec2(0.4, 0.3), -0.5 * kPi);
+  ActionProgress after_go_to;
+  after_go_to.action = 1;
+  EXPECT_EQ(StepActions(play, 1, after_go_to, p, ctx_).command.v_R_mps.norm(), 0.0);
+}
+
 // A receiver that adopted the case only after the pass left (its messages lost) never saw the
 // passer with the ball: the ball gone from both the passer and where the case found it starts
 // its receive; still at the case's ball, it waits.
