@@ -7,6 +7,8 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <memory>
+#include <utility>
 
 #include "common/random.h"
 #include "models/kick_model.h"
@@ -63,32 +65,64 @@ BENCHMARK(BM_NaoKickTrial)->Unit(benchmark::kMillisecond)->Threads(1)->Threads(2
 void BM_NaoKickTrialRecorded(benchmark::State& state) { NaoKickTrials(state, 100.0); }
 BENCHMARK(BM_NaoKickTrialRecorded)->Unit(benchmark::kMillisecond)->Threads(1)->UseRealTime();
 
-// The same kick by a NAO standing on its own feet (floating base): the weight shift is settled
-// once when the scene is made (not timed), each trial restores it, kicks, stands through the
-// rest of the motion and its settle time, and the ball rolls to rest.
-void BM_NaoKickTrialFloating(benchmark::State& state) {
-  static const auto data = [] {
-    auto d = testing::LoadPhysicsFixture("spl", false, "nao");
-    d->params.robot.base = RobotBase::kFloating;
-    return d;
-  }();
-  static const KickModel kicks = LoadKickModel(testing::ModelsDir() / "kicks" / "nao.json");
-  const DrawnState drawn{Pose2{Vec2(-1.0, 0.0), 0.0}, Vec2(-0.8, 0.0)};
-  static const PhysicsSimulator simulator(testing::SceneOf(*data, {}, drawn.p_F_ball), kicks);
+// A robot's kick trials from midfield on `base`, made once per benchmark (its floating weight
+// shift is settled when the scene is made, not timed).
+struct KickBench {
+  std::unique_ptr<testing::PhysicsFixtureData> data;
+  KickModel kicks;
+  DrawnState drawn{Pose2{Vec2(-1.0, 0.0), 0.0}, Vec2(-0.8, 0.0)};
+  PhysicsSimulator simulator;
+  KickBench(std::unique_ptr<testing::PhysicsFixtureData> d, const char* kicks_file)
+      : data(std::move(d)),
+        kicks(LoadKickModel(testing::ModelsDir() / "kicks" / kicks_file)),
+        simulator(testing::SceneOf(*data, {}, drawn.p_F_ball), kicks) {}
+};
+
+std::unique_ptr<testing::PhysicsFixtureData> OnBase(const char* field, const char* robot,
+                                                    RobotBase base) {
+  auto data = testing::LoadPhysicsFixture(field, false, robot);
+  data->params.robot.base = base;
+  return data;
+}
+
+// Kick 0 (`forward`): each trial restores the settled shift on the floating base, kicks, is
+// watched for a fall until the robot has stood its settle time after its motion (or stands
+// still: physics/fall_watch.h), and the ball rolls to rest.
+void KickTrials(benchmark::State& state, const KickBench& bench) {
   std::uint64_t i = 0;
   for (auto _ : state) {
     ConcreteAction action;
     action.kick_index = 0;
     action.stream = StreamKey(2, i++);
-    benchmark::DoNotOptimize(simulator.Simulate(drawn, action));
+    benchmark::DoNotOptimize(bench.simulator.Simulate(bench.drawn, action));
   }
   state.SetItemsProcessed(state.iterations());
+}
+
+// The NAO kick of BM_NaoKickTrial standing on its own feet.
+void BM_NaoKickTrialFloating(benchmark::State& state) {
+  static const KickBench bench(OnBase("spl", "nao", RobotBase::kFloating), "nao.json");
+  KickTrials(state, bench);
 }
 BENCHMARK(BM_NaoKickTrialFloating)
     ->Unit(benchmark::kMillisecond)
     ->Threads(1)
     ->Threads(2)
     ->UseRealTime();
+
+// The AIBO's `forward` paw kick on the four-legged field, bolted and on its own paws.
+void BM_AiboKickTrial(benchmark::State& state) {
+  static const KickBench bench(OnBase("four_legged", "aibo_ers7", RobotBase::kFixed),
+                               "aibo_ers7.json");
+  KickTrials(state, bench);
+}
+BENCHMARK(BM_AiboKickTrial)->Unit(benchmark::kMillisecond)->Threads(1)->UseRealTime();
+void BM_AiboKickTrialFloating(benchmark::State& state) {
+  static const KickBench bench(OnBase("four_legged", "aibo_ers7", RobotBase::kFloating),
+                               "aibo_ers7.json");
+  KickTrials(state, bench);
+}
+BENCHMARK(BM_AiboKickTrialFloating)->Unit(benchmark::kMillisecond)->Threads(1)->UseRealTime();
 
 }  // namespace
 }  // namespace foresight

@@ -1,5 +1,8 @@
 #include "models/physics_params.h"
 
+#include <span>
+#include <string_view>
+
 #include "common/checks.h"
 #include "common/enum_names.h"
 #include "common/error.h"
@@ -68,6 +71,12 @@ void PhysicsParams::Validate() const {
   RequireInRange("steps.min_launch_roll_m", steps.min_launch_roll_m, 0.0, 0.5);
   RequireInRange("steps.solver_iterations", steps.solver_iterations, 1, 1000);
   RequireInRange("steps.restitution_threshold_mps", steps.restitution_threshold_mps, 0.0, 0.5);
+  RequireInRange("watch.still_time_s", watch.still_time_s, 0.01, 10.0);
+  RequireInRange("watch.still_joint_speed_radps", watch.still_joint_speed_radps, 0.0, 1.0);
+  RequireInRange("watch.still_base_speed_mps", watch.still_base_speed_mps, 0.0, 0.1);
+  RequireInRange("watch.still_base_rate_radps", watch.still_base_rate_radps, 0.0, 1.0);
+  RequireInRange("watch.still_tilt_rad", watch.still_tilt_rad, 0.0, robot.fall_tilt_rad);
+  RequireInRange("watch.still_support_margin_m", watch.still_support_margin_m, 0.0, 0.1);
 }
 
 namespace {
@@ -133,6 +142,29 @@ RobotContactParams ReadRobot(const JsonObject& o) {
   return r;
 }
 
+// The fall watch after the launch: every value with the reason for it; tilts in degrees.
+WatchParams ReadWatch(const JsonObject& o) {
+  static constexpr std::string_view kKeys[] = {
+      "still_time_s",          "still_joint_speed_radps", "still_base_speed_mps",
+      "still_base_rate_radps", "still_tilt_deg",          "still_support_margin_m",
+      "sources"};
+  const std::span<const std::string_view> values(kKeys, std::size(kKeys) - 1);
+  o.RejectUnknownKeys(std::span<const std::string_view>(kKeys));
+  const JsonObject sources = o.Object("sources");
+  sources.RejectUnknownKeys(values);
+  for (std::string_view key : values) {
+    if (sources.String(key).empty()) sources.Fail(key, "must say where the value comes from");
+  }
+  WatchParams w;
+  w.still_time_s = o.Number("still_time_s");
+  w.still_joint_speed_radps = o.Number("still_joint_speed_radps");
+  w.still_base_speed_mps = o.Number("still_base_speed_mps");
+  w.still_base_rate_radps = o.Number("still_base_rate_radps");
+  w.still_tilt_rad = o.Number("still_tilt_deg") * kDegToRad;  // files: degrees
+  w.still_support_margin_m = o.Number("still_support_margin_m");
+  return w;
+}
+
 MotorParams ReadMotors(const JsonObject& o) {
   o.RejectUnknownKeys({"position_gain", "velocity_gain"});
   MotorParams m;
@@ -167,13 +199,14 @@ StepParams ReadSteps(const JsonObject& o) {
 PhysicsParams LoadPhysicsParams(const std::filesystem::path& file) {
   JsonDocument doc = JsonDocument::Load(file);
   JsonObject root = doc.Root();
-  root.RejectUnknownKeys({"carpet", "robot", "motors", "materials", "steps"});
+  root.RejectUnknownKeys({"carpet", "robot", "watch", "motors", "materials", "steps"});
   PhysicsParams params;
   params.carpet = ReadCarpet(root.Object("carpet"));
   params.robot = ReadRobot(root.Object("robot"));
   params.motors = ReadMotors(root.Object("motors"));
   params.materials = ReadMaterials(root.Object("materials"));
   params.steps = ReadSteps(root.Object("steps"));
+  params.watch = ReadWatch(root.Object("watch"));
   WithFile(file.string(), [&] { params.Validate(); });
   return params;
 }

@@ -92,9 +92,27 @@ struct RobotContactParams {
   double fall_tilt_rad = 0.0;  // the torso tilted further from upright than this: it fell
 };
 
+// The watch for a fall after the launch (floating base; physics/fall_watch.h). The ball has gone
+// to the roll phase and its outcome is fixed; the robot is stepped on only to tell whether it
+// falls, until its motion has ended and it has stood the balance's settle time. The watch ends
+// early once the robot stands provably still: its motion over, every joint and its base slower
+// than these speeds, its torso under `still_tilt_rad` and its centre of mass at least
+// `still_support_margin_m` inside the polygon of its loaded contacts with the carpet, all for
+// `still_time_s` without a break. Its motors then hold constant targets: a robot at rest in such
+// a pose stays there.
+struct WatchParams {
+  double still_time_s = 0.0;
+  double still_joint_speed_radps = 0.0;
+  double still_base_speed_mps = 0.0;
+  double still_base_rate_radps = 0.0;
+  double still_tilt_rad = 0.0;
+  double still_support_margin_m = 0.0;
+};
+
 struct PhysicsParams {
   CarpetParams carpet;
   RobotContactParams robot;
+  WatchParams watch;
   MotorParams motors;
   MaterialParams materials;
   StepParams steps;

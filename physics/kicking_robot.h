@@ -72,6 +72,7 @@ class KickingRobot {
   // Current joint positions (model.joints order; welded joints read their standing position).
   std::vector<double> JointPositions() const;
   btMultiBody& body() { return *body_; }
+  const btMultiBody& body() const { return *body_; }
   // The motor of model joint j; null for a welded joint.
   const LineLimitedJointMotor* motor(int j) const { return motors_[j]; }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/fall_watch.h"
 #include "physics/kicking_robot.h"
 
 namespace foresight {
@@ -77,27 +78,20 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
   const double watch_end_s = std::max(steps.max_kick_time_s, stand_end_s);
   for (double t = 0.0; t < watch_end_s;) {
     robot.FollowMotion(motion, t, speed_factor);
-    if (!end.launched) carpet.ApplyRollingResistance(*ball, radius, dt);
+    carpet.ApplyRollingResistance(*ball, radius, dt);
     world.world().stepSimulation(dt, 0, dt);
     t += dt;
     if (recorder != nullptr) {
-      recorder->ObserveKick(t, t * speed_factor, robot, end.launched ? nullptr : ball,
-                            *world.world().getDispatcher());
+      recorder->ObserveKick(t, t * speed_factor, robot, ball, *world.world().getDispatcher());
     }
     if (floating) {
       end.max_tilt_rad = std::max(end.max_tilt_rad, robot.TiltRad());
       if (end.max_tilt_rad > scene.params.robot.fall_tilt_rad) {
         end.fell = true;
-        if (!end.launched) {  // the ball goes on from where the fall left it
-          end.ball = ReadBall(*ball);
-          end.t_s = t;
-        }
+        end.ball = ReadBall(*ball);  // the ball goes on from where the fall left it
+        end.t_s = t;
         break;
       }
-    }
-    if (end.launched) {  // a floating robot standing through the rest of its motion
-      if (t >= stand_end_s) break;
-      continue;
     }
     end.ball = ReadBall(*ball);
     end.t_s = t;
@@ -122,9 +116,14 @@ PhaseEnd RunKickPhase(const PhysicsScene& scene, const Carpet& carpet, const Kic
         RollsFreely(end.ball, radius)) {
       end.launched = true;
       if (!floating || t >= stand_end_s) break;
-      // The roll phase takes the ball from here; the robot stands on without it.
+      // The roll phase takes the ball from here; the robot is only watched for a fall.
       world.world().removeRigidBody(ball);
-      continue;
+      const WatchEnd watch = WatchForFall(world, robot, motion,
+                                          {t, motion_end_s, stand_end_s, speed_factor},
+                                          scene.params, end.max_tilt_rad, recorder);
+      end.fell = watch.fell;
+      end.max_tilt_rad = watch.max_tilt_rad;
+      break;
     }
     if (!end.touched && t > motion_end_s + kMissGraceS && (!floating || t >= stand_end_s)) break;
     if (t >= steps.max_kick_time_s && !floating) break;

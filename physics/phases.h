@@ -5,9 +5,10 @@
 // the motion is over without a touch, or the phase's time limit is reached. A robot on a
 // floating base starts from its kick's settled weight shift (settled_stance.h) and is watched
 // until its motion has ended and it has stood for the balance's settle time after it, within
-// the phase's time limit (the ball, once launched, is handed to the roll phase as it was at the
-// launch): the trial records whether its torso tilted past the fall tilt at any time, and a
-// fall ends the phase at once.
+// the phase's time limit: the trial records whether its torso tilted past the fall tilt at any
+// time, and a fall ends the phase at once. The ball, once launched, is handed to the roll phase
+// as it was at the launch, and the rest of the watch only asks whether the robot falls
+// (fall_watch.h: its own, coarser steps, and an end once the robot stands provably still).
 // Roll phase: a light world without the kicking robot (carpet, goals, obstacle robots, ball),
 // stepped with RollTimeStep, until the ball rests, leaves the carpet (its edge stops it) or the
 // roll's time limit is reached.

@@ -141,6 +141,7 @@
 #include "physics/bullet_convert.h"
 #include "physics/bullet_world.h"
 #include "physics/carpet.h"
+#include "physics/fall_watch.h"
 #include "physics/impact_probe.h"
 #include "physics/joint_motor.h"
 #include "physics/kicker_state.h"

@@ -66,7 +66,15 @@ INSTANTIATE_TEST_SUITE_P(
                    "robot.fall_tilt_deg: must be in [1, 90], got 120"},
         BrokenCase{"\"restitution\": \"assumption: a rubber sole on turf over felt does not bounce\"",
                    "\"restitution\": \"\"",
-                   "robot.sources.restitution: must say where"}));
+                   "robot.sources.restitution: must say where"},
+        BrokenCase{"\"still_time_s\": 0.1", "\"still_time_s\": 0",
+                   "watch.still_time_s: must be in [0.01, 10], got 0"},
+        BrokenCase{"\"still_tilt_deg\": 15.0", "\"still_tilt_deg\": 60",
+                   "watch.still_tilt_rad"},
+        BrokenCase{"\"still_base_speed_mps\": 0.005,", "\"still_base_speed_mps\": 0.005, \"x\": 1,",
+                   "watch.x: unknown field"},
+        BrokenCase{"\"still_time_s\": \"assumption: 50", "\"still_time_x\": \"assumption: 50",
+                   "watch.sources.still_time_x: unknown field"}));
 
 }  // namespace
 }  // namespace foresight
